@@ -1,0 +1,63 @@
+# Test helpers shared by every tests/ folder.
+#   suite_add_mpi_test(NAME n NP p COMMAND exe args... [LABELS l...])
+#       runs `mpiexec -n p --oversubscribe exe args...` (run-as-root variables set).
+#   suite_add_failure_test(NAME n NP p EXPECT "regex" COMMAND exe args... [LABELS l...])
+#       passes when the command exits non-zero AND the regex matches exactly one line of its output
+#       (one clear message, not one per rank) AND it finishes before the timeout (no hang).
+#   suite_add_python_test(NAME n SCRIPT file.py [ARGS ...] [LABELS ...])
+find_program(MPIEXEC_EXECUTABLE NAMES mpiexec mpirun REQUIRED)
+set(SUITE_MPIEXEC ${MPIEXEC_EXECUTABLE} --oversubscribe)
+set(SUITE_TEST_ENV "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(SUITE_PYTHON ${Python3_EXECUTABLE} CACHE FILEPATH "Python for test drivers")
+set(SUITE_DATA_DIR ${CMAKE_SOURCE_DIR}/../shared/data CACHE PATH "Reference data (Harwell-Boeing, Siconos)")
+
+function(suite_add_mpi_test)
+  cmake_parse_arguments(T "" "NAME;NP;TIMEOUT" "COMMAND;LABELS" ${ARGN})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 300)
+  endif()
+  add_test(NAME ${T_NAME} COMMAND ${SUITE_MPIEXEC} -n ${T_NP} ${T_COMMAND}
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(${T_NAME} PROPERTIES ENVIRONMENT "${SUITE_TEST_ENV}" TIMEOUT ${T_TIMEOUT}
+                       LABELS "${T_LABELS}" PROCESSORS ${T_NP})
+endfunction()
+
+function(suite_add_failure_test)
+  cmake_parse_arguments(T "" "NAME;NP;EXPECT;TIMEOUT" "COMMAND;LABELS" ${ARGN})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 60)
+  endif()
+  add_test(NAME ${T_NAME}
+           COMMAND ${SUITE_PYTHON} ${CMAKE_SOURCE_DIR}/tests/expect_failure.py --expect "${T_EXPECT}"
+                   --timeout ${T_TIMEOUT} -- ${SUITE_MPIEXEC} -n ${T_NP} ${T_COMMAND}
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(${T_NAME} PROPERTIES ENVIRONMENT "${SUITE_TEST_ENV}" TIMEOUT ${T_TIMEOUT}
+                       LABELS "${T_LABELS}" PROCESSORS ${T_NP})
+endfunction()
+
+function(suite_add_python_test)
+  cmake_parse_arguments(T "" "NAME;SCRIPT;TIMEOUT" "ARGS;LABELS" ${ARGN})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 600)
+  endif()
+  add_test(NAME ${T_NAME} COMMAND ${SUITE_PYTHON} ${T_SCRIPT} ${T_ARGS}
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(${T_NAME} PROPERTIES
+                       ENVIRONMENT "${SUITE_TEST_ENV};SUITE_BIN=${CMAKE_BINARY_DIR}/bin;SUITE_SOURCE=${CMAKE_SOURCE_DIR};SUITE_DATA=${SUITE_DATA_DIR};PYTHONPATH=${CMAKE_SOURCE_DIR}"
+                       TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}")
+endfunction()
+
+# One GoogleTest executable per folder tests/unit/<area>/ (custom main with PETSc initialised),
+# every test case registered with ctest (label unit).
+function(suite_add_unit_area area)
+  file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/unit/${area}/*.cpp)
+  if(NOT _srcs)
+    return()
+  endif()
+  add_executable(unit_${area} ${_srcs} ${CMAKE_SOURCE_DIR}/tests/unit/gtest_petsc_main.cpp)
+  target_link_libraries(unit_${area} PRIVATE suite GTest::gtest)
+  target_compile_definitions(unit_${area} PRIVATE SUITE_DATA_DIR="${SUITE_DATA_DIR}")
+  gtest_discover_tests(unit_${area} PROPERTIES LABELS unit ENVIRONMENT "${SUITE_TEST_ENV}"
+                       DISCOVERY_TIMEOUT 60)
+endfunction()

@@ -1,0 +1,146 @@
+// Run context: PETSc/MPI lifetime, shared options, unused-option check, collective stop requests.
+#include "core/run_context.hpp"
+
+#include "core/error_handler.hpp"
+
+#include <cstdio>
+#include <ctime>
+#include <string>
+
+namespace suite {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+namespace {
+extern "C" void onStopSignal(int sig) {
+  g_stop_signal = sig;
+}
+
+std::string isoNowUtc() {
+  std::time_t now = std::time(nullptr);
+  std::tm tm_utc{};
+  gmtime_r(&now, &tm_utc);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm_utc);
+  return buf;
+}
+
+void installStopHandlers() {
+  struct sigaction sa {};
+  sa.sa_handler = onStopSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGUSR1, &sa, nullptr);
+}
+} // namespace
+
+RunContext::RunContext(int* argc, char*** argv, const char* help, const char* program) : program_(program) {
+  // The suite's handler is pushed first so that errors while reading the command line and -options_file
+  // (before PetscInitialize returns) are reported like every other error: once, without a traceback.
+  pushSuiteErrorHandler();
+  init_error_ = PetscInitialize(argc, argv, nullptr, help);
+  if (init_error_) return;
+  petsc_up_ = true;
+  t0_ = MPI_Wtime();
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size_);
+  // Rank 0's clock is the job's start time.
+  start_time_iso_ = isoNowUtc();
+  char buf[32] = {0};
+  std::snprintf(buf, sizeof buf, "%s", start_time_iso_.c_str());
+  MPI_Bcast(buf, sizeof buf, MPI_CHAR, 0, PETSC_COMM_WORLD);
+  start_time_iso_ = buf;
+  init_error_ = readCommonOptions();
+  installStopHandlers();
+}
+
+RunContext::~RunContext() {
+  if (petsc_up_) PetscFinalize();
+}
+
+PetscErrorCode RunContext::readCommonOptions() {
+  PetscFunctionBeginUser;
+  PetscBool has_help = PETSC_FALSE, quiet = PETSC_FALSE, allow = PETSC_FALSE;
+  PetscCall(PetscOptionsHasHelp(nullptr, &has_help));
+  help_ = has_help;
+  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Run control (all programs of the suite)", nullptr);
+  PetscCall(PetscOptionsBool("-quiet", "Print no progress or info lines (errors still go to stderr)", nullptr,
+                             quiet, &quiet, nullptr));
+  PetscCall(PetscOptionsReal("-max_walltime",
+                             "Stop cleanly (final output/checkpoint) after this many seconds; 0 = off",
+                             nullptr, max_walltime_, &max_walltime_, nullptr));
+  PetscCall(PetscOptionsReal("-progress_interval", "Seconds of wall time between progress lines", nullptr,
+                             progress_interval_, &progress_interval_, nullptr));
+  PetscCall(PetscOptionsBool("-allow_unused_options", "Do not treat unknown/unused options as an error",
+                             nullptr, allow, &allow, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(max_walltime_ >= 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+             "-max_walltime %g: must be >= 0 seconds (0 = no limit)", (double)max_walltime_);
+  PetscCheck(progress_interval_ > 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+             "-progress_interval %g: must be > 0 seconds", (double)progress_interval_);
+  quiet_ = quiet;
+  allow_unused_ = allow;
+  PetscFunctionReturn(0);
+}
+
+double RunContext::wallSeconds() const {
+  return MPI_Wtime() - t0_;
+}
+
+PetscErrorCode RunContext::checkUnusedOptions() const {
+  PetscFunctionBeginUser;
+  PetscInt n = 0;
+  char **names = nullptr, **values = nullptr;
+  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
+  std::string list;
+  for (PetscInt i = 0; i < n; ++i) {
+    if (!list.empty()) list += ", ";
+    list += std::string("-") + names[i];
+    if (values[i]) list += std::string(" ") + values[i];
+  }
+  const PetscInt nleft = n; // LeftRestore zeroes n
+  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+  if (nleft > 0 && allow_unused_) {
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "WARNING: options not used by %s: %s\n", program_.c_str(),
+                          list.c_str()));
+  } else {
+    PetscCheck(nleft == 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+               "%s: unknown or unused option(s): %s (misspelled? run with -help for the list, or pass "
+               "-allow_unused_options)",
+               program_.c_str(), list.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunContext::stopRequested(bool* stop) const {
+  PetscFunctionBeginUser;
+  int local = 0;
+  if (g_stop_signal) local = 1;
+  if (max_walltime_ > 0.0 && rank_ == 0 && wallSeconds() >= max_walltime_) local |= 2;
+  int global = 0;
+  PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_BOR, PETSC_COMM_WORLD));
+  *stop = global != 0;
+  if (global & 1)
+    stop_reason_ = "signal";
+  else if (global & 2)
+    stop_reason_ = "max_walltime";
+  else
+    stop_reason_.clear();
+  PetscFunctionReturn(0);
+}
+
+std::string RunContext::optionsText() const {
+  char* all = nullptr;
+  if (PetscOptionsGetAll(nullptr, &all) || !all) return "";
+  std::string s(all);
+  PetscFree(all);
+  return s;
+}
+
+int RunContext::exitCode(PetscErrorCode ierr) const {
+  std::fflush(stdout);
+  std::fflush(stderr);
+  return ierr ? 1 : 0;
+}
+
+} // namespace suite

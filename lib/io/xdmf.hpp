@@ -1,0 +1,50 @@
+// XDMF (v3) sidecar for gridded data in the suite's HDF5 files, so ParaView/VisIt open them.
+// Written by rank 0 under a temporary name and renamed.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace suite {
+
+struct XdmfAttribute {
+  std::string name;           // shown in ParaView
+  std::string dataset;        // HDF5 path inside the file, e.g. /snapshots/000010/rho
+  bool cell_centered = false; // false: node data
+};
+
+struct XdmfStep {
+  double time;
+  std::vector<XdmfAttribute> attributes;
+};
+
+// Structured grid (1D, 2D or 3D) of dims points (z, y, x order, as in the HDF5 datasets), origin and
+// spacing also (z, y, x). The HDF5 file name is written relative to the .xmf location.
+struct XdmfRectGrid {
+  std::vector<unsigned long long> dims;
+  std::vector<double> origin, spacing;
+};
+
+PetscErrorCode writeXdmfRectSeries(MPI_Comm comm, const std::string& xmf_path, const std::string& h5_file,
+                                   const XdmfRectGrid& grid, const std::vector<XdmfStep>& steps);
+
+// Unstructured tetrahedral mesh: /mesh/coordinates (N x 3), /mesh/tets (E x 4, int), steps with node data
+// (vectors allowed: an attribute whose dataset has 3 columns is written as a Vector).
+struct XdmfTetMesh {
+  std::string coords_dataset, tets_dataset;
+  unsigned long long nnodes = 0, nelems = 0;
+};
+struct XdmfNodeField {
+  std::string name, dataset;
+  int ncomp = 1;
+};
+struct XdmfTetStep {
+  double time;
+  std::vector<XdmfNodeField> fields;
+};
+PetscErrorCode writeXdmfTetSeries(MPI_Comm comm, const std::string& xmf_path, const std::string& h5_file,
+                                  const XdmfTetMesh& mesh, const std::vector<XdmfTetStep>& steps);
+
+} // namespace suite

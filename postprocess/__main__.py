@@ -1,0 +1,76 @@
+"""Command line of the postprocess package.
+
+    python -m postprocess info FILE            root attributes and datasets (with units)
+    python -m postprocess plot FILE [--outdir]  the default figures of the program that wrote FILE
+    python -m postprocess <figure> ...          figures registered by the app modules (*_plots.py)
+
+Each app module ``postprocess/<app>_plots.py`` defines ``register(subparsers)`` (adds its figure commands)
+and may define ``PROGRAM = "<program>"`` with ``default_plot(path, outdir) -> list[str]`` for ``plot``.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import pkgutil
+import sys
+from pathlib import Path
+
+from .reader import open_run
+
+
+def app_modules():
+    pkg_dir = Path(__file__).parent
+    for info in sorted(pkgutil.iter_modules([str(pkg_dir)]), key=lambda i: i.name):
+        if info.name.endswith("_plots"):
+            yield importlib.import_module(f"{__package__}.{info.name}")
+
+
+def cmd_info(args):
+    run = open_run(args.file)
+    print(f"{args.file}")
+    for k, v in sorted(run.attrs.items()):
+        text = str(v)
+        print(f"  @{k} = {text if len(text) < 200 else text[:197] + '...'}")
+    for name, (shape, dtype, units) in sorted(run.datasets.items()):
+        print(f"  {name}  {dtype}{list(shape)}" + (f"  [{units}]" if units else ""))
+    return 0
+
+
+def cmd_plot(args):
+    run = open_run(args.file)
+    Path(args.outdir).mkdir(parents=True, exist_ok=True)
+    for mod in app_modules():
+        if getattr(mod, "PROGRAM", None) == run.program and hasattr(mod, "default_plot"):
+            for png in mod.default_plot(args.file, args.outdir):
+                print(f"wrote {png}")
+            return 0
+    print(f"error: no plots registered for program '{run.program}' ({args.file})", file=sys.stderr)
+    return 2
+
+
+def build_parser():
+    ap = argparse.ArgumentParser(prog="python -m postprocess", description=__doc__.split("\n")[0])
+    sub = ap.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("info", help="root attributes and datasets of a suite output file")
+    p.add_argument("file")
+    p.set_defaults(func=cmd_info)
+    p = sub.add_parser("plot", help="default figures for the program that wrote the file")
+    p.add_argument("file")
+    p.add_argument("--outdir", default="out")
+    p.set_defaults(func=cmd_plot)
+    for mod in app_modules():
+        mod.register(sub)
+    return ap
+
+
+def main(argv=None):
+    args = build_parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except (OSError, KeyError, ValueError) as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
