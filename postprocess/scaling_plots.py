@@ -1,0 +1,64 @@
+"""Scaling figures: speed-up and parallel efficiency against the ideal line, from scripts/scaling-study's CSV."""
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+
+def read_scaling(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise ValueError(f"{path}: no runs")
+    for r in rows:
+        r["nranks"] = int(r["nranks"])
+        for k in list(r):
+            if k == "wall_seconds" or k.startswith("stage_"):
+                r[k] = float(r[k]) if r[k] not in ("", None) else float("nan")
+    return sorted(rows, key=lambda r: r["nranks"])
+
+
+def speedup(rows, key="wall_seconds"):
+    """(ranks, speed-up, efficiency); weak scaling: speed-up = ideal * t0 / t."""
+    base = rows[0]
+    out = []
+    for r in rows:
+        ideal = r["nranks"] / base["nranks"]
+        s = base[key] / r[key] if r["mode"] == "strong" else ideal * base[key] / r[key]
+        out.append((r["nranks"], s, s / ideal))
+    return out
+
+
+def plot_scaling(csv_path, outdir):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = read_scaling(csv_path)
+    keys = ["wall_seconds"] + [k for k in rows[0] if k.startswith("stage_")]
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    n = [r["nranks"] for r in rows]
+    for k in keys:
+        data = speedup(rows, k)
+        label = "whole run" if k == "wall_seconds" else k[len("stage_"):]
+        a1.plot(n, [d[1] for d in data], "o-", label=label)
+        a2.plot(n, [d[2] for d in data], "o-", label=label)
+    a1.plot(n, [x / n[0] for x in n], "k--", label="ideal")
+    a2.axhline(1.0, color="k", ls="--", label="ideal")
+    a1.set(xlabel="MPI ranks", ylabel="speed-up", xscale="log", yscale="log", title=f"{rows[0]['app']} ({rows[0]['mode']})")
+    a2.set(xlabel="MPI ranks", ylabel="parallel efficiency", xscale="log", ylim=(0, 1.2))
+    a1.legend(fontsize=8)
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / f"scaling_{rows[0]['app']}_{rows[0]['mode']}.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
+def register(sub):
+    p = sub.add_parser("scaling", help="speed-up and efficiency from scripts/scaling-study's scaling.csv")
+    p.add_argument("csv")
+    p.add_argument("--outdir", default="out")
+    p.set_defaults(func=lambda a: [print(f"wrote {x}") for x in plot_scaling(a.csv, a.outdir)] and 0)
