@@ -8,6 +8,7 @@
 //   skeleton_driver -n 64 -steps 10 -restart c.h5 -output r.h5
 //   skeleton_driver -n 64 -inject_nan_step 3 -output s.h5       (stops: non-finite u at step 3)
 //   skeleton_driver -n 64 -inject_abort_in_output -output s.h5   (dies in output: s.h5 untouched)
+//   mpiexec -n 2 skeleton_driver -inject_local_error_rank 1      (rank 1 fails alone: whole job aborts)
 #include "core/field_check.hpp"
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
@@ -29,7 +30,7 @@ static const char help[] = "Skeleton driver: advects a sine wave on a periodic 1
 namespace {
 
 struct DriverOptions {
-  PetscInt n = 64, steps = 10, inject_nan_step = -1, snapshot_every = 0;
+  PetscInt n = 64, steps = 10, inject_nan_step = -1, snapshot_every = 0, inject_local_error_rank = -1;
   PetscReal cfl = 0.5, sleep_per_step = 0.0;
   PetscBool abort_in_output = PETSC_FALSE;
   char output[PETSC_MAX_PATH_LEN] = "skeleton.h5";
@@ -47,6 +48,8 @@ PetscErrorCode readOptions(MPI_Comm comm, DriverOptions* o) {
                             o->snapshot_every, &o->snapshot_every, nullptr));
   PetscCall(PetscOptionsInt("-inject_nan_step", "Test aid: put a NaN into the field at this step", nullptr,
                             o->inject_nan_step, &o->inject_nan_step, nullptr));
+  PetscCall(PetscOptionsInt("-inject_local_error_rank", "Test aid: this rank alone raises an error at step 2",
+                            nullptr, o->inject_local_error_rank, &o->inject_local_error_rank, nullptr));
   PetscCall(PetscOptionsReal("-sleep_per_step", "Test aid: seconds to sleep per step", nullptr,
                              o->sleep_per_step, &o->sleep_per_step, nullptr));
   PetscCall(PetscOptionsBool("-inject_abort_in_output", "Test aid: abort() after the datasets, before commit",
@@ -174,6 +177,9 @@ PetscErrorCode run(suite::RunContext& ctx) {
     }
     PetscCall(step(da, u, ul, o.cfl));
     t += dt;
+    // An error only one rank sees (a local failure): the job must go down at once, not hang.
+    PetscCheck(!(s + 1 == 2 && ctx.rank() == o.inject_local_error_rank), PETSC_COMM_SELF, PETSC_ERR_LIB,
+               "injected local failure on rank %d at step 2", ctx.rank());
     if (s + 1 == o.inject_nan_step && xs <= o.n / 2 && o.n / 2 < xs + xm) {
       PetscCall(VecGetArray(u, &a));
       a[o.n / 2 - xs] = NAN;
