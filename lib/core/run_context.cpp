@@ -2,6 +2,7 @@
 #include "core/run_context.hpp"
 
 #include "core/error_handler.hpp"
+#include "core/sanitizer_defaults.hpp"
 
 #include <cstdio>
 #include <ctime>
@@ -37,6 +38,7 @@ void installStopHandlers() {
 RunContext::RunContext(int* argc, char*** argv, const char* help, const char* program) : program_(program) {
   // The suite's handler is pushed first so that errors while reading the command line and -options_file
   // (before PetscInitialize returns) are reported like every other error: once, without a traceback.
+  keepSanitizerDefaults();
   pushSuiteErrorHandler();
   init_error_ = PetscInitialize(argc, argv, nullptr, help);
   if (init_error_) return;

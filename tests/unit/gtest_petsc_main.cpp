@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
+#include "core/sanitizer_defaults.hpp"
+
 int main(int argc, char** argv) {
+  suite::keepSanitizerDefaults();
   ::testing::InitGoogleTest(&argc, argv);
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, nullptr);
   if (ierr) return 1;
