@@ -5,6 +5,7 @@
 #include "core/sanitizer_defaults.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <string>
 
@@ -15,6 +16,17 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 namespace {
 extern "C" void onStopSignal(int sig) {
   g_stop_signal = sig;
+}
+
+// PETSc reads its viewer and convergence-reason options only during or after a solve (KSPSolve,
+// SNESSolve, TSSolve, ...): at the setup-time check they are still unused and must not count as misspelled.
+bool readDuringSolve(const char* name) {
+  const std::string s(name);
+  for (const char* suffix : {"_view", "_converged_reason", "_view_pre", "_view_solution", "_view_values"})
+    if (s.size() >= std::strlen(suffix) &&
+        s.compare(s.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
+      return true;
+  return s.find("_view_") != std::string::npos || s.rfind("log_", 0) == 0;
 }
 
 std::string isoNowUtc() {
@@ -95,12 +107,14 @@ PetscErrorCode RunContext::checkUnusedOptions() const {
   char **names = nullptr, **values = nullptr;
   PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
   std::string list;
+  PetscInt nleft = 0;
   for (PetscInt i = 0; i < n; ++i) {
+    if (readDuringSolve(names[i])) continue; // judged at the end of the run instead (see finalOptionsCheck)
+    ++nleft;
     if (!list.empty()) list += ", ";
     list += std::string("-") + names[i];
     if (values[i]) list += std::string(" ") + values[i];
   }
-  const PetscInt nleft = n; // LeftRestore zeroes n
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   if (nleft > 0 && allow_unused_) {
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "WARNING: options not used by %s: %s\n", program_.c_str(),
@@ -111,6 +125,20 @@ PetscErrorCode RunContext::checkUnusedOptions() const {
                "-allow_unused_options)",
                program_.c_str(), list.c_str());
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunContext::finalOptionsCheck() const {
+  PetscFunctionBeginUser;
+  PetscInt n = 0;
+  char **names = nullptr, **values = nullptr;
+  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
+  std::string list;
+  for (PetscInt i = 0; i < n; ++i) list += std::string(list.empty() ? "" : ", ") + "-" + names[i];
+  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+  if (!list.empty())
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "WARNING: options never used by %s: %s\n", program_.c_str(),
+                          list.c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -140,6 +168,7 @@ std::string RunContext::optionsText() const {
 }
 
 int RunContext::exitCode(PetscErrorCode ierr) const {
+  if (!ierr && petsc_up_ && !help_) ierr = finalOptionsCheck();
   std::fflush(stdout);
   std::fflush(stderr);
   return ierr ? 1 : 0;

@@ -41,7 +41,11 @@ public:
 
   // Errors (collectively) when an option was given but never queried, unless -allow_unused_options.
   // Call after all setup (every PetscOptionsBegin/End block and *SetFromOptions) has run.
+  // Options that PETSc reads only during a solve (*_view, *_converged_reason, log_*) are exempt here and
+  // judged by finalOptionsCheck().
   PetscErrorCode checkUnusedOptions() const;
+  // At the end of a run: warns (rank 0) about options that were never used, including the solve-time ones.
+  PetscErrorCode finalOptionsCheck() const;
   // Collective: true on all ranks once any rank received SIGTERM/SIGUSR1/SIGINT or -max_walltime
   // has elapsed. Cheap (one MPI_Allreduce of an int); call once per step.
   PetscErrorCode stopRequested(bool* stop) const;

@@ -4,6 +4,7 @@
 #include "io/checkpoint.hpp"
 
 #include "io/h5_input.hpp"
+#include "core/version.hpp"
 
 #include <cstdint>
 #include <cstring>
@@ -63,7 +64,7 @@ PetscErrorCode writeCheckpoint(MPI_Comm comm, const std::string& path, const Che
   PetscCall(out.writeAttribute("/checkpoint", "step", h.step));
   PetscCall(out.writeAttribute("/checkpoint", "time", h.time));
   PetscCall(out.writeAttribute("/checkpoint", "dt", h.dt));
-  PetscCall(out.writeAttribute("/checkpoint", "version", SUITE_VERSION));
+  PetscCall(out.writeAttribute("/checkpoint", "version", versionString()));
   const long long ng = (long long)h.grid.size();
   PetscCall(out.writeReplicated("/checkpoint/grid", h.grid.data(), {(unsigned long long)ng}, ""));
   for (const auto& f : fields) {

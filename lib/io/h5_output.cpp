@@ -2,6 +2,7 @@
 #include "io/h5_output.hpp"
 
 #include "core/run_context.hpp"
+#include "core/version.hpp"
 #include "io/h5_util.hpp"
 
 #include <hdf5.h>
@@ -54,7 +55,7 @@ PetscErrorCode H5Output::open(MPI_Comm comm, const std::string& path) {
 PetscErrorCode H5Output::writeProvenance(const RunContext& ctx) {
   PetscFunctionBeginUser;
   PetscCall(writeAttribute("/", "program", ctx.program()));
-  PetscCall(writeAttribute("/", "version", SUITE_VERSION));
+  PetscCall(writeAttribute("/", "version", versionString()));
   PetscCall(writeAttribute("/", "options", ctx.optionsText()));
   PetscCall(writeAttribute("/", "nranks", ctx.size()));
   PetscCall(writeAttribute("/", "start_time", ctx.startTimeIso()));
