@@ -1,0 +1,183 @@
+// Verified solve (acceptance rule, active-set refinement) and the helpers shared by the LCP solvers.
+#include "lcp/solver.hpp"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <ctime>
+
+namespace suite::lcp {
+
+const char* statusName(Status s) {
+  switch (s) {
+  case Status::Solved:
+    return "solved";
+  case Status::MaxIterations:
+    return "max_iterations";
+  case Status::RayTermination:
+    return "ray_termination";
+  case Status::Breakdown:
+    return "breakdown";
+  case Status::Unsupported:
+    return "unsupported";
+  case Status::NotAccepted:
+    return "not_accepted";
+  case Status::InvalidInput:
+    return "invalid_input";
+  case Status::NumericalError:
+    return "numerical_error";
+  }
+  return "?";
+}
+
+double signTolerance(const Problem& p) {
+  return 1e-13 * (1.0 + p.q.lpNorm<Eigen::Infinity>());
+}
+
+void evaluate(const Problem& p, Result* r) {
+  if (r->z.size() != p.size()) {
+    r->z = Vec::Zero(p.size());
+    r->w = p.q;
+    r->residual = kInf;
+    r->complementarity = kInf;
+    return;
+  }
+  r->w = slack(p, r->z);
+  r->residual = naturalResidual(p, r->z, r->w);
+  r->complementarity = complementarity(p, r->z, r->w);
+}
+
+std::vector<State> initialStates(const Problem& p, const Vec* warm) {
+  const int n = p.size();
+  std::vector<State> st(n, State::Free);
+  for (int i = 0; i < n; ++i) {
+    const bool lf = std::isfinite(p.l[i]), uf = std::isfinite(p.u[i]);
+    if (warm && warm->size() == n) {
+      const double z = (*warm)[i];
+      if (lf && z <= p.l[i])
+        st[i] = State::Lower;
+      else if (uf && z >= p.u[i])
+        st[i] = State::Upper;
+      else
+        st[i] = State::Free;
+    } else {
+      st[i] = lf ? State::Lower : (uf ? State::Upper : State::Free);
+    }
+  }
+  return st;
+}
+
+bool isSymmetric(const Mat& M) {
+  for (int j = 0; j < M.cols(); ++j)
+    for (int i = j + 1; i < M.rows(); ++i)
+      if (M(i, j) != M(j, i)) return false;
+  return true;
+}
+
+bool solveStates(const Problem& p, const std::vector<State>& st, Vec* z, bool symmetric) {
+  const int n = p.size();
+  z->resize(n);
+  std::vector<int> F, N;
+  F.reserve(n);
+  N.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    if (st[i] == State::Free) {
+      F.push_back(i);
+    } else {
+      N.push_back(i);
+      (*z)[i] = st[i] == State::Lower ? p.l[i] : p.u[i];
+    }
+  }
+  if (F.empty()) return true;
+  const int k = static_cast<int>(F.size());
+  const Mat A = p.M(F, F);
+  Vec b;
+  if (N.empty()) {
+    b = -p.q(F);
+  } else { // t = q + M z_N (z_F = 0): one contiguous matrix-vector product instead of gathering M_FN
+    Vec zn = Vec::Zero(n);
+    for (int j : N) zn[j] = (*z)[j];
+    const Vec t = p.M * zn + p.q;
+    b = -t(F);
+  }
+  Vec x;
+  bool done = false;
+  if (symmetric) {
+    Eigen::LLT<Mat> llt(A);
+    if (llt.info() == Eigen::Success) {
+      const auto d = llt.matrixLLT().diagonal();
+      if (d.minCoeff() > 1e-7 * d.maxCoeff()) { // cond(A) = (max/min)^2 <~ 1e14
+        x = llt.solve(b);
+        x += llt.solve(b - A * x);
+        done = true;
+      }
+    }
+  }
+  if (!done) {
+    Eigen::PartialPivLU<Mat> lu(A);
+    const double rc = lu.rcond();
+    if (!(rc > 1e-14)) return false;
+    x = lu.solve(b);
+    x += lu.solve(b - A * x); // one step of iterative refinement
+  }
+  if (!x.allFinite()) return false;
+  for (int a = 0; a < k; ++a) (*z)[F[a]] = x[a];
+  return true;
+}
+
+std::vector<State> statesFromSolution(const Problem& p, const Vec& z, const Vec& w) {
+  const int n = p.size();
+  std::vector<State> st(n);
+  for (int i = 0; i < n; ++i) {
+    const double t = z[i] - w[i];
+    if (t <= p.l[i])
+      st[i] = State::Lower;
+    else if (t >= p.u[i])
+      st[i] = State::Upper;
+    else
+      st[i] = State::Free;
+  }
+  return st;
+}
+
+Result solve(const Solver& s, const Problem& p, const SolverOptions& opt) {
+  const double t0 = MPI_Wtime();
+  timespec c0{}, c1{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
+  Result r;
+  try {
+    r = s.run(p, opt);
+  } catch (const std::exception& e) {
+    r = Result{};
+    r.status = Status::NumericalError;
+    r.message = e.what();
+  }
+  evaluate(p, &r);
+  const double tol = acceptanceTolerance(p, opt.rel_tol);
+  if (r.status == Status::Solved && !(r.residual <= tol) && opt.refine && std::isfinite(r.residual)) {
+    // Active-set refinement: the method found (approximately) the right index sets; solve exactly on them.
+    for (int k = 0; k < 3 && !(r.residual <= tol); ++k) {
+      Vec z;
+      if (!solveStates(p, statesFromSolution(p, r.z, r.w), &z)) break;
+      Result t = r;
+      t.z = z;
+      evaluate(p, &t);
+      ++r.refinements;
+      if (!(t.residual < r.residual)) break;
+      t.refinements = r.refinements;
+      r = t;
+    }
+  }
+  if (r.status == Status::Solved && !(r.residual <= tol)) {
+    r.status = Status::NotAccepted;
+    if (r.message.empty()) r.message = "residual above the acceptance tolerance";
+  }
+  if (r.status == Status::Solved && !r.z.allFinite()) r.status = Status::NumericalError;
+  r.time = MPI_Wtime() - t0;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c1);
+  r.cpu_time =
+      static_cast<double>(c1.tv_sec - c0.tv_sec) + 1e-9 * static_cast<double>(c1.tv_nsec - c0.tv_nsec);
+  return r;
+}
+
+} // namespace suite::lcp

@@ -1,0 +1,89 @@
+// Solver interface and registry of the LCP library: every solver returns z, w, a status, iteration and
+// pivot counts and the natural-map residual; solve() verifies the answer (acceptance rule of problem.hpp)
+// so that a solver can never report a wrong answer as solved.
+//
+// Adding a solver: one file in lib/lcp/solvers/ defining `std::unique_ptr<Solver> makeXxx()`, plus one
+// line in registry.cpp.
+#pragma once
+
+#include "lcp/problem.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace suite::lcp {
+
+enum class Status : int {
+  Solved = 0,
+  MaxIterations = 1,  // iteration / pivot cap reached
+  RayTermination = 2, // Lemke / Cottle-Dantzig: secondary ray (no solution found, e.g. infeasible LCP)
+  Breakdown = 3,      // zero or tiny pivot, singular block, cycling guard: the method cannot handle it
+  Unsupported = 4,    // problem class outside the method's domain (e.g. M_ii <= 0 for PGS)
+  NotAccepted = 5,    // the method stopped but the verified residual is above the acceptance tolerance
+  InvalidInput = 6,   // the problem failed validation (recorded by the batch driver)
+  NumericalError = 7, // NaN/Inf during the iteration
+};
+const char* statusName(Status s);
+
+struct SolverOptions {
+  int max_iterations = 0;          // 0: the solver's default cap
+  double rel_tol = 1e-10;          // acceptance: residual <= rel_tol (1 + ||q||_inf)
+  const Vec* warm_start = nullptr; // initial z (ignored by methods without warm start, e.g. Lemke)
+  double omega = 1.0;              // PGS relaxation
+  int block_size = 3;              // block PGS
+  bool refine = true;              // final active-set refinement of a claimed solution (see solve())
+};
+
+struct Result {
+  Vec z, w;
+  Status status = Status::NumericalError;
+  int iterations = 0;     // major iterations (Newton steps, block iterations, sweeps, pivots for pivoting)
+  long long pivots = 0;   // basis / index-set changes (0 for Newton and splitting methods)
+  int refinements = 0;    // exact active-set solves added by solve()
+  double residual = kInf; // natural-map residual of the returned z
+  double complementarity = kInf;
+  double time = 0.0;     // wall seconds (filled by solve())
+  double cpu_time = 0.0; // CPU seconds of the calling thread (filled by solve(); robust on a loaded machine)
+  std::string message;   // reason of a failure
+  bool ok() const { return status == Status::Solved; }
+};
+
+class Solver {
+public:
+  virtual ~Solver() = default;
+  virtual std::string name() const = 0;
+  // The raw method: fills z (and optionally w), status, iterations, pivots. Called through solve().
+  virtual Result run(const Problem& p, const SolverOptions& opt) const = 0;
+};
+
+// Registry by name (registry.cpp).
+std::vector<std::string> solverNames();
+// nullptr if the name is unknown.
+std::unique_ptr<Solver> makeSolver(const std::string& name);
+
+// Runs the solver, recomputes w = Mz + q, residual and complementarity, optionally refines a claimed
+// solution by exact solves on its active set (at most 3, counted in Result::refinements), and accepts
+// only when residual <= tolerance; a claimed solution above the tolerance becomes NotAccepted.
+Result solve(const Solver& s, const Problem& p, const SolverOptions& opt = {});
+
+// ---- helpers shared by the solvers ----
+// Index states of the active-set methods: z at lower bound, at upper bound, or free (w = 0).
+enum class State : signed char { Lower = 0, Upper = 1, Free = 2 };
+// Initial states: from a warm start (free if strictly inside, else at the nearer bound) or, without one,
+// at l if finite, else at u if finite, else free.
+std::vector<State> initialStates(const Problem& p, const Vec* warm);
+// z for the given states: z_L = l, z_U = u, z_F solving M_FF z_F = -(q_F + M_FN z_N) by LU.
+// Returns false if M_FF is singular (rcond below 1e-14 or non-finite result). symmetric: M is symmetric, try
+// a Cholesky factorisation first (half the flops of LU), LU if M_FF is not positive definite.
+bool solveStates(const Problem& p, const std::vector<State>& st, Vec* z, bool symmetric = false);
+// M == M^T exactly?
+bool isSymmetric(const Mat& M);
+// States read off an approximate solution: t = z - w <= l -> Lower, >= u -> Upper, else Free.
+std::vector<State> statesFromSolution(const Problem& p, const Vec& z, const Vec& w);
+// Fills w, residual, complementarity of r.z.
+void evaluate(const Problem& p, Result* r);
+// Default tolerance for sign tests of the pivoting methods: 1e-13 (1 + ||q||_inf).
+double signTolerance(const Problem& p);
+
+} // namespace suite::lcp
