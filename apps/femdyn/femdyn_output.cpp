@@ -1,0 +1,123 @@
+// femdyn output: provenance and run attributes, the mesh (corner nodes of the tets for XDMF), ordering
+// metrics, per-step timings and energies, snapshots with an XDMF tetrahedral series, the final displacement.
+#include "femdyn_run.hpp"
+
+#include "io/h5_output.hpp"
+#include "io/xdmf.hpp"
+
+#include <cstdio>
+
+namespace femdyn_app {
+
+PetscErrorCode FemdynRun::writeOutput() const {
+  PetscFunctionBeginUser;
+  using ull = unsigned long long;
+  suite::H5Output out;
+  PetscCall(out.open(ctx_.comm(), opt_.output));
+  PetscCall(out.writeProvenance(ctx_));
+  const long long nn = mesh_.numNodes(), ne = mesh_.numElems();
+  PetscCall(out.writeAttribute("/", "mode", opt_.is_static ? "static" : "dynamic"));
+  PetscCall(out.writeAttribute("/", "material", material_->name()));
+  PetscCall(out.writeAttribute("/", "ordering", opt_.ordering));
+  PetscCall(out.writeAttribute("/", "solver", solver_->name()));
+  PetscCall(out.writeAttribute("/", "element_order", (long long)mesh_.order()));
+  PetscCall(out.writeAttribute("/", "nodes", nn));
+  PetscCall(out.writeAttribute("/", "elements", ne));
+  PetscCall(out.writeAttribute("/", "dofs", (long long)model_.numFree()));
+  PetscCall(out.writeAttribute("/", "young", opt_.young));
+  PetscCall(out.writeAttribute("/", "poisson", opt_.poisson));
+  PetscCall(out.writeAttribute("/", "tip_load", opt_.tip_load));
+  PetscCall(out.writeAttribute("/", "setup_seconds", res_.setup_time));
+  PetscCall(out.writeAttribute("/", "solve_seconds", res_.loop_time));
+  const auto& m = res_.metrics;
+  PetscCall(out.createGroup("/ordering"));
+  PetscCall(out.writeAttribute("/ordering", "name", opt_.ordering));
+  PetscCall(out.writeAttribute("/ordering", "bandwidth", m.bandwidth));
+  PetscCall(out.writeAttribute("/ordering", "profile", m.profile));
+  PetscCall(out.writeAttribute("/ordering", "profile_definition",
+                               "sum_i (i - f_i), f_i = first nonzero column of row i of the permuted lower "
+                               "triangle (diagonal excluded)"));
+  PetscCall(out.writeAttribute("/ordering", "nnz_L", m.nnz_L));
+  PetscCall(out.writeAttribute("/ordering", "factor_flops", m.flops));
+  PetscCall(out.writeAttribute("/ordering", "envelope_flops", m.envelope_flops));
+  PetscCall(out.writeAttribute("/ordering", "time", res_.ordering_time));
+  PetscCall(out.writeAttribute("/ordering", "solver_nnz_L", res_.factor.nnz_L));
+
+  // Mesh: coordinates and the corner nodes of every tet (XDMF Tetrahedron).
+  std::vector<double> xyz(3 * nn);
+  for (long long v = 0; v < nn; ++v)
+    for (int i = 0; i < 3; ++i) xyz[3 * v + i] = mesh_.nodes[v][i];
+  std::vector<int> tets(4 * ne);
+  for (long long e = 0; e < ne; ++e)
+    for (int a = 0; a < 4; ++a) tets[4 * e + a] = mesh_.elem(e)[a];
+  PetscCall(out.writeReplicated("/mesh/coordinates", xyz.data(), {(ull)nn, 3}, "m"));
+  PetscCall(out.writeReplicated("/mesh/tets", tets.data(), {(ull)ne, 4}, ""));
+  PetscCall(out.writeReplicated("/final/u", res_.u_full.data(), {(ull)nn, 3}, "m"));
+
+  if (opt_.is_static) {
+    PetscCall(out.writeAttribute("/", "tip_deflection", res_.tip_deflection));
+    PetscCall(out.writeAttribute("/", "tip_ux", res_.tip_ux));
+    PetscCall(out.writeAttribute("/", "load_steps", (long long)res_.stat.load_steps));
+    PetscCall(out.writeAttribute("/", "newton_iterations", (long long)res_.stat.newton_iterations));
+    PetscCall(out.writeAttribute("/", "residual", res_.stat.residual));
+    PetscCall(out.writeAttribute("/", "strain_energy", res_.stat.energy));
+  } else if (!res_.steps.empty()) {
+    const size_t n = res_.steps.size();
+    auto column = [&](double StepRecord::*f) {
+      std::vector<double> c(n);
+      for (size_t i = 0; i < n; ++i) c[i] = res_.steps[i].*f;
+      return c;
+    };
+    auto icolumn = [&](int StepRecord::*f) {
+      std::vector<int> c(n);
+      for (size_t i = 0; i < n; ++i) c[i] = res_.steps[i].*f;
+      return c;
+    };
+    const struct {
+      const char* name;
+      double StepRecord::*f;
+      const char* units;
+    } cols[] = {{"time", &StepRecord::time, "s"},
+                {"assemble", &StepRecord::assemble, "s"},
+                {"factor", &StepRecord::factor, "s"},
+                {"solve", &StepRecord::solve, "s"},
+                {"wall", &StepRecord::total, "s"},
+                {"cpu", &StepRecord::cpu, "s"},
+                {"kinetic_energy", &StepRecord::kinetic, "J"},
+                {"strain_energy", &StepRecord::strain, "J"},
+                {"external_work", &StepRecord::external, "J"},
+                {"tip_deflection", &StepRecord::tip_uy, "m"}};
+    for (const auto& c : cols) {
+      const auto v = column(c.f);
+      PetscCall(out.writeReplicated(std::string("/steps/") + c.name, v.data(), {(ull)n}, c.units));
+    }
+    for (const auto& [name, f] : {std::make_pair("newton_iterations", &StepRecord::newton),
+                                  std::make_pair("rejected", &StepRecord::rejected),
+                                  std::make_pair("converged", &StepRecord::converged)}) {
+      const auto v = icolumn(f);
+      PetscCall(out.writeReplicated(std::string("/steps/") + name, v.data(), {(ull)n}, ""));
+    }
+    double wall = 0, cpu = 0;
+    for (size_t i = 1; i < n; ++i) wall += res_.steps[i].total, cpu += res_.steps[i].cpu;
+    PetscCall(out.writeAttribute("/", "steps", (long long)(n - 1)));
+    PetscCall(out.writeAttribute("/", "dt", opt_.dt));
+    PetscCall(out.writeAttribute("/", "rate_hz", cpu > 0 ? (n - 1) / cpu : 0.0)); // steps per CPU second
+    PetscCall(out.writeAttribute("/", "rate_hz_wall", wall > 0 ? (n - 1) / wall : 0.0));
+    PetscCall(out.writeAttribute("/", "tip_deflection", res_.steps.back().tip_uy));
+  }
+  std::vector<suite::XdmfTetStep> xsteps;
+  for (size_t k = 0; k < res_.snapshots.size(); ++k) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/snapshots/%06zu/u", k);
+    PetscCall(out.writeReplicated(name, res_.snapshots[k].second.data(), {(ull)nn, 3}, "m"));
+    xsteps.push_back({res_.snapshots[k].first, {{"displacement", name, 3}}});
+  }
+  if (xsteps.empty())
+    xsteps.push_back({res_.steps.empty() ? 0.0 : res_.steps.back().time, {{"displacement", "/final/u", 3}}});
+  PetscCall(out.commit(&ctx_));
+  suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)nn, (ull)ne};
+  PetscCall(suite::writeXdmfTetSeries(ctx_.comm(), opt_.output + ".xmf", opt_.output, xm, xsteps));
+  PetscFunctionReturn(0);
+}
+
+} // namespace femdyn_app

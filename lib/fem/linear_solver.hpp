@@ -1,0 +1,40 @@
+// Sparse symmetric positive definite direct solvers with a fixed pattern: analyze(pattern, ordering) once per
+// mesh, factor(values) per Newton step, solve(b). Registry by name: skyline (own envelope Cholesky), banded
+// (LAPACK), cholmod.
+#pragma once
+
+#include "fem/sparse.hpp"
+
+#include <petscsys.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace suite::fem {
+
+struct FactorStats {
+  long long nnz_L = 0; // stored factor entries (skyline: envelope + diagonal)
+  double flops = 0;    // of one numeric factorisation (estimate)
+};
+
+class LinearSolver {
+public:
+  virtual ~LinearSolver() = default;
+  virtual const char* name() const = 0;
+  // A: upper-triangle pattern (values ignored); perm[new] = old. Called once per pattern.
+  virtual PetscErrorCode analyze(MPI_Comm comm, const SymCsc& A, const std::vector<int>& perm) = 0;
+  // Numeric factorisation of A (same pattern as analyze). *ok = false if A is not positive definite.
+  virtual PetscErrorCode factor(const SymCsc& A, bool* ok) = 0;
+  // x = A^{-1} b (x may alias b).
+  virtual PetscErrorCode solve(const double* b, double* x) = 0;
+  virtual FactorStats stats() const = 0;
+};
+
+std::unique_ptr<LinearSolver> makeSkylineSolver();
+std::unique_ptr<LinearSolver> makeCholmodSolver();
+std::unique_ptr<LinearSolver> makeBandedSolver(); // LAPACK dpbtrf on the band of the ordering
+std::vector<std::string> solverNames();
+PetscErrorCode createLinearSolver(MPI_Comm comm, const std::string& name, std::unique_ptr<LinearSolver>* out);
+
+} // namespace suite::fem

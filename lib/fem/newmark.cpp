@@ -1,0 +1,255 @@
+// Newmark-beta with Newton iterations on the displacement increment (Hughes, The Finite Element Method 1987,
+// sec. 9.1 and 9.3; Wriggers, Nonlinear FEM 2008, sec. 5.2): u_{n+1} = u~ + beta dt^2 a_{n+1},
+// v_{n+1} = v~ + gamma dt a_{n+1}, u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, v~ = v_n + dt (1 - gamma) a_n.
+#include "fem/newmark.hpp"
+
+#include "fem/cpu_timer.hpp"
+
+#include <cmath>
+
+namespace suite::fem {
+
+namespace {
+double now() {
+  return threadCpuSeconds();
+}
+double norm2(const std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v * v;
+  return std::sqrt(s);
+}
+} // namespace
+
+bool LinearSecondOrderSystem::internalForce(const double* u, double* f, std::vector<double>* K,
+                                            double* energy) {
+  symMultiply(K_, K_.val, u, f);
+  if (K) *K = K_.val;
+  if (energy) {
+    double e = 0;
+    for (int i = 0; i < K_.n; ++i) e += 0.5 * u[i] * f[i];
+    *energy = e;
+  }
+  return true;
+}
+
+PetscErrorCode Newmark::setup(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver,
+                              std::vector<double> mass, const NewmarkParams& p,
+                              std::function<void(double, double*)> f_ext) {
+  PetscFunctionBeginUser;
+  comm_ = comm;
+  sys_ = sys;
+  solver_ = solver;
+  p_ = p;
+  fext_ = std::move(f_ext);
+  M_ = std::move(mass);
+  const int n = sys->pattern().n;
+  PetscCheck(p.beta > 0 && p.gamma >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Newmark -newmark_beta %g must be > 0 (implicit) and -newmark_gamma %g >= 0", p.beta, p.gamma);
+  PetscCheck(p.newton_max_it >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-newton_max_it %d must be >= 1",
+             p.newton_max_it);
+  r_.assign(n, 0), du_.assign(n, 0), f_.assign(n, 0), fe_.assign(n, 0), tmp_.assign(n, 0), tmp2_.assign(n, 0);
+  std::vector<double> zero(n, 0.0);
+  double e;
+  sys_->internalForce(zero.data(), f_.data(), &K0_, &e);
+  C_.assign(M_.size(), 0.0);
+  for (size_t k = 0; k < M_.size(); ++k) C_[k] = p.rayleigh_mass * M_[k] + p.rayleigh_stiffness * K0_[k];
+  Keff_ = sys->pattern();
+  factored_dt_ = -1;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Newmark::initialize(NewmarkState* s) {
+  PetscFunctionBeginUser;
+  const int n = Keff_.n;
+  s->u.resize(n, 0.0), s->v.resize(n, 0.0), s->a.assign(n, 0.0);
+  double e;
+  PetscCheck(sys_->internalForce(s->u.data(), f_.data(), nullptr, &e), comm_, PETSC_ERR_ARG_WRONG,
+             "initial displacement inverts an element (det F <= 0)");
+  fext_(s->t, fe_.data());
+  symMultiply(Keff_, C_, s->v.data(), tmp_.data());
+  for (int i = 0; i < n; ++i) r_[i] = fe_[i] - f_[i] - tmp_[i];
+  Keff_.val = M_;
+  bool ok;
+  PetscCall(solver_->factor(Keff_, &ok));
+  PetscCheck(ok, comm_, PETSC_ERR_MAT_CH_ZRPVT, "mass matrix is not positive definite (check -density)");
+  PetscCall(solver_->solve(r_.data(), s->a.data()));
+  factored_dt_ = -1;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Newmark::factorEffective(double dt, const std::vector<double>& Kt, StepTimings* tm, bool* ok) {
+  PetscFunctionBeginUser;
+  const double c0 = 1.0 / (p_.beta * dt * dt), c1 = p_.gamma / (p_.beta * dt);
+  const double t0 = now();
+  for (size_t k = 0; k < M_.size(); ++k) Keff_.val[k] = c0 * M_[k] + c1 * C_[k] + Kt[k];
+  PetscCall(solver_->factor(Keff_, ok));
+  tm->factor += now() - t0;
+  ++tm->factorizations;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, bool* ok) {
+  PetscFunctionBeginUser;
+  const int n = Keff_.n;
+  const double b = p_.beta, g = p_.gamma;
+  const double c0 = 1.0 / (b * dt * dt);
+  std::vector<double> up(n), vp(n), un(n), an(n), vn(n);
+  for (int i = 0; i < n; ++i) {
+    up[i] = s->u[i] + dt * s->v[i] + dt * dt * (0.5 - b) * s->a[i];
+    vp[i] = s->v[i] + dt * (1 - g) * s->a[i];
+    un[i] = up[i] + b * dt * dt * s->a[i];
+  }
+  fext_(s->t + dt, fe_.data());
+  const bool reuse = sys_->isLinear() || p_.initial_jacobian;
+  const bool exact_after_one = sys_->isLinear();
+  double ref = 0;
+  *ok = true;
+  tm->converged = false;
+  for (int it = 0;; ++it) {
+    for (int i = 0; i < n; ++i) an[i] = c0 * (un[i] - up[i]), vn[i] = vp[i] + g * dt * an[i];
+    double t0 = now();
+    const bool need_tangent = !reuse;
+    double e;
+    const bool admissible = sys_->internalForce(un.data(), f_.data(), need_tangent ? &Kt_ : nullptr, &e);
+    if (!admissible) {
+      *ok = false;
+      reject_reason_ = "an element inverts (det F <= 0) at Newton iteration " + std::to_string(it);
+      tm->assemble += now() - t0;
+      PetscFunctionReturn(0);
+    }
+    symMultiply(Keff_, M_, an.data(), tmp_.data());
+    symMultiply(Keff_, C_, vn.data(), tmp2_.data());
+    for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + tmp2_[i] + f_[i] - fe_[i];
+    tm->assemble += now() - t0;
+    const double rn = norm2(r_);
+    tm->residual = rn;
+    if (it == 0) ref = rn;
+    if (rn <= p_.newton_atol || (it > 0 && rn <= p_.newton_rtol * ref)) {
+      tm->converged = true;
+      break;
+    }
+    if (it >= p_.newton_max_it)
+      break; // not converged within newton_max_it solves (linearly implicit: it = 1)
+    bool fok = true;
+    if (!reuse || factored_dt_ != dt) {
+      PetscCall(factorEffective(dt, reuse ? K0_ : Kt_, tm, &fok));
+      factored_dt_ = (reuse && fok) ? dt : -1;
+    }
+    if (!fok) {
+      *ok = false;
+      reject_reason_ =
+          "the effective tangent is not positive definite at Newton iteration " + std::to_string(it);
+      PetscFunctionReturn(0);
+    }
+    t0 = now();
+    PetscCall(solver_->solve(r_.data(), du_.data()));
+    for (int i = 0; i < n; ++i) un[i] -= du_[i];
+    tm->solve += now() - t0;
+    ++tm->newton_iterations;
+    if ((exact_after_one && it == 0) || p_.newton_max_it == 1) {
+      tm->converged = exact_after_one;
+      break;
+    }
+  }
+  for (int i = 0; i < n; ++i) an[i] = c0 * (un[i] - up[i]), vn[i] = vp[i] + g * dt * an[i];
+  s->u.swap(un), s->v.swap(vn), s->a.swap(an);
+  s->t += dt;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Newmark::step(NewmarkState* s, double dt, StepTimings* tm) {
+  PetscFunctionBeginUser;
+  PetscCheck(dt > 0, comm_, PETSC_ERR_ARG_OUTOFRANGE, "time step -dt %g must be > 0", dt);
+  *tm = StepTimings();
+  // Substeps: try dt; on rejection halve and do two halves (recursively, up to max_halvings levels).
+  struct Frame {
+    double dt;
+    int level, remaining;
+  };
+  std::vector<Frame> stack = {{dt, 0, 1}};
+  while (!stack.empty()) {
+    Frame& f = stack.back();
+    if (f.remaining == 0) {
+      stack.pop_back();
+      continue;
+    }
+    const NewmarkState saved = *s;
+    bool ok;
+    PetscCall(attempt(s, f.dt, tm, &ok));
+    if (ok) {
+      --f.remaining;
+      continue;
+    }
+    *s = saved;
+    ++tm->rejected;
+    PetscCheck(
+        f.level < p_.max_halvings, comm_, PETSC_ERR_NOT_CONVERGED,
+        "Newmark step at t = %g rejected %d times (-max_halvings %d): %s even with dt = %g; reduce -dt "
+        "or the load",
+        s->t, tm->rejected, p_.max_halvings, reject_reason_.c_str(), f.dt);
+    const double half = 0.5 * f.dt;
+    const int level = f.level + 1;
+    --f.remaining;
+    stack.push_back({half, level, 2});
+  }
+  PetscFunctionReturn(0);
+}
+
+double Newmark::kineticEnergy(const NewmarkState& s) const {
+  std::vector<double> mv(s.v.size());
+  symMultiply(Keff_, M_, s.v.data(), mv.data());
+  double e = 0;
+  for (size_t i = 0; i < mv.size(); ++i) e += 0.5 * s.v[i] * mv[i];
+  return e;
+}
+
+double Newmark::strainEnergy(const NewmarkState& s) {
+  double e = 0;
+  sys_->internalForce(s.u.data(), f_.data(), nullptr, &e);
+  return e;
+}
+
+PetscErrorCode solveStatic(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver,
+                           const std::vector<double>& f_ext, int nsteps, int newton_max_it, double rtol,
+                           std::vector<double>* u, StaticResult* res) {
+  PetscFunctionBeginUser;
+  PetscCheck(nsteps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps %d must be >= 1", nsteps);
+  SymCsc K = sys->pattern();
+  const int n = K.n;
+  u->assign(n, 0.0);
+  std::vector<double> f(n), r(n), du(n);
+  const double fnorm = norm2(f_ext);
+  *res = StaticResult();
+  const int max_it = sys->isLinear() ? 1 : newton_max_it;
+  for (int step = 1; step <= nsteps; ++step) {
+    const double lam = static_cast<double>(step) / nsteps;
+    for (int it = 0;; ++it) {
+      double e;
+      PetscCheck(sys->internalForce(u->data(), f.data(), &K.val, &e), comm, PETSC_ERR_NOT_CONVERGED,
+                 "static solve: an element inverts (det F <= 0) at load step %d/%d; increase -load_steps",
+                 step, nsteps);
+      for (int i = 0; i < n; ++i) r[i] = f[i] - lam * f_ext[i];
+      res->residual = norm2(r);
+      res->energy = e;
+      if (res->residual <= rtol * std::max(fnorm, 1e-300) || it >= max_it) break;
+      bool ok;
+      PetscCall(solver->factor(K, &ok));
+      PetscCheck(ok, comm, PETSC_ERR_MAT_CH_ZRPVT,
+                 "static solve: the tangent stiffness is not positive definite at load step %d/%d (is the "
+                 "Dirichlet set empty, i.e. the body free to move rigidly?)",
+                 step, nsteps);
+      PetscCall(solver->solve(r.data(), du.data()));
+      for (int i = 0; i < n; ++i) (*u)[i] -= du[i];
+      ++res->newton_iterations;
+    }
+    res->load_steps = step;
+  }
+  PetscCheck(sys->isLinear() || res->residual <= rtol * std::max(fnorm, 1e-300) * 10, comm,
+             PETSC_ERR_NOT_CONVERGED,
+             "static Newton did not converge: residual %g after %d iterations per step "
+             "(-newton_max_it %d); increase -load_steps",
+             res->residual, newton_max_it, newton_max_it);
+  PetscFunctionReturn(0);
+}
+
+} // namespace suite::fem

@@ -1,0 +1,74 @@
+// Newmark time integration (Newmark 1959, J. Eng. Mech. Div. 85; beta = 1/4, gamma = 1/2 by default) of
+// M a + C v + f_int(u) = f_ext(t) with a Newton loop on the effective tangent K_eff = M/(beta dt^2) +
+// gamma/(beta dt) C + K_T (newton_max_it = 1: the linearly implicit variant), Rayleigh damping C = alpha M +
+// beta K0, and step rejection with dt halving when an element inverts (det F <= 0) or Newton fails.
+#pragma once
+
+#include "fem/linear_solver.hpp"
+#include "fem/second_order_system.hpp"
+
+#include <functional>
+#include <string>
+
+namespace suite::fem {
+
+struct NewmarkParams {
+  double beta = 0.25, gamma = 0.5;
+  int newton_max_it = 10;
+  double newton_rtol = 1e-9, newton_atol = 1e-12;
+  double rayleigh_mass = 0, rayleigh_stiffness = 0; // C = a M + b K0
+  int max_halvings = 10;
+  bool initial_jacobian = false; // modified Newton: K_eff from K0 (factor once per dt)
+};
+
+struct StepTimings { // CPU seconds of the calling thread (fem/cpu_timer.hpp)
+  double assemble = 0, factor = 0, solve = 0;
+  int newton_iterations = 0, factorizations = 0, rejected = 0;
+  double residual = 0;
+  bool converged = true;
+};
+
+struct NewmarkState {
+  std::vector<double> u, v, a;
+  double t = 0;
+};
+
+class Newmark {
+public:
+  // mass values on sys.pattern(); f_ext(t, f) fills the external force (free DOFs).
+  PetscErrorCode setup(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver, std::vector<double> mass,
+                       const NewmarkParams& p, std::function<void(double, double*)> f_ext);
+  // Consistent initial acceleration a0 = M^{-1} (f_ext(t0) - C v0 - f_int(u0)).
+  PetscErrorCode initialize(NewmarkState* s);
+  // Advances s by dt (substeps with halved dt on rejection). Errors after max_halvings rejections in a row.
+  PetscErrorCode step(NewmarkState* s, double dt, StepTimings* tm);
+  // Kinetic energy 1/2 v^T M v, strain energy from the last force evaluation.
+  double kineticEnergy(const NewmarkState& s) const;
+  double strainEnergy(const NewmarkState& s);
+
+private:
+  PetscErrorCode attempt(NewmarkState* s, double dt, StepTimings* tm, bool* ok);
+  PetscErrorCode factorEffective(double dt, const std::vector<double>& Kt, StepTimings* tm, bool* ok);
+
+  MPI_Comm comm_ = MPI_COMM_SELF;
+  SecondOrderSystem* sys_ = nullptr;
+  LinearSolver* solver_ = nullptr;
+  NewmarkParams p_;
+  std::function<void(double, double*)> fext_;
+  std::vector<double> M_, C_, K0_, Kt_, Keff_vals_;
+  SymCsc Keff_;
+  std::string reject_reason_; // why the last attempt was rejected
+  double factored_dt_ = -1; // dt of the current factorisation when it is reusable (linear / modified Newton)
+  std::vector<double> r_, du_, f_, fe_, tmp_, tmp2_;
+};
+
+// Static equilibrium f_int(u) = f_ext with load stepping (nsteps increments) and Newton per increment.
+struct StaticResult {
+  int load_steps = 0, newton_iterations = 0;
+  double residual = 0, energy = 0;
+};
+PetscErrorCode solveStatic(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver,
+                           const std::vector<double>& f_ext, int nsteps, int newton_max_it, double rtol,
+                           std::vector<double>* u, StaticResult* res);
+
+} // namespace suite::fem

@@ -1,0 +1,31 @@
+// Fill/bandwidth reducing orderings of a symmetric graph, registry by name (one file each):
+// natural, cm, rcm (own, George & Liu 1981), amd (SuiteSparse), metis (METIS_NodeND), auto (min predicted
+// nnz(L)).
+#pragma once
+
+#include "fem/sparse.hpp"
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace suite::fem {
+
+using OrderingFn = std::vector<int> (*)(const Graph& g); // returns perm, perm[new] = old
+
+std::vector<int> orderNatural(const Graph& g);
+std::vector<int> orderCuthillMcKee(const Graph& g); // CM; returns natural if that has a smaller profile
+std::vector<int> orderReverseCuthillMcKee(const Graph& g); // RCM; same guard
+std::vector<int> orderAmd(const Graph& g);
+std::vector<int> orderMetis(const Graph& g);
+std::vector<int> orderAuto(const Graph& g); // the one of rcm/amd/metis with the smallest symbolic nnz(L)
+
+// George & Liu's pseudo-peripheral node finder (SPARSEPAK FNROOT) in the component of root, restricted to
+// vertices with mask[v] != 0.
+int pseudoPeripheralNode(const Graph& g, int root, const std::vector<char>& mask);
+
+std::vector<std::string> orderingNames(); // natural cm rcm amd metis auto
+PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* fn);
+
+} // namespace suite::fem

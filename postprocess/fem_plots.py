@@ -1,0 +1,146 @@
+"""FEM figures: femdyn energy / tip-deflection / per-step timing histories; Hz against DOF per ordering and solver
+(scripts/bench/fem-rate CSV); ordering metrics per matrix or mesh (scripts/bench/fem-orderings CSV)."""
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+PROGRAM = "femdyn"
+
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def read_history(path):
+    """Per-step arrays of a dynamic femdyn run (dict of numpy arrays) and the root attributes."""
+    with h5py.File(path, "r") as f:
+        attrs = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in f.attrs.items()}
+        if "steps" not in f:
+            return {}, attrs
+        return {k: f["steps"][k][...] for k in f["steps"]}, attrs
+
+
+def plot_history(h5path, outdir):
+    s, attrs = read_history(h5path)
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    stem = Path(h5path).stem
+    if not s:
+        return []
+    plt = _plt()
+    fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(14, 4))
+    t = s["time"]
+    total = s["kinetic_energy"] + s["strain_energy"] - s["external_work"]
+    a1.plot(t, s["kinetic_energy"], label="kinetic")
+    a1.plot(t, s["strain_energy"], label="strain")
+    a1.plot(t, total, "k--", label="T + U - f.u")
+    a1.set(xlabel="t", ylabel="energy", title=f"{attrs.get('material', '')}, {int(attrs.get('dofs', 0))} DOF")
+    a1.legend(fontsize=8)
+    a2.plot(t, s["tip_deflection"])
+    a2.set(xlabel="t", ylabel="tip deflection (mean -u_y)", title="tip")
+    ms = lambda k: 1e3 * s[k][1:]
+    steps = np.arange(1, len(t))
+    a3.stackplot(steps, ms("assemble"), ms("factor"), ms("solve"), labels=["assemble", "factor", "solve"])
+    a3.plot(steps, ms("wall"), "k-", lw=0.8, label="step wall")
+    a3.set(xlabel="step", ylabel="ms", title=f"{attrs.get('ordering', '')}/{attrs.get('solver', '')}: "
+           f"{float(attrs.get('rate_hz', 0)):.0f} Hz")
+    a3.legend(fontsize=8)
+    fig.tight_layout()
+    png = Path(outdir) / f"femdyn_{stem}_history.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
+def default_plot(h5path, outdir):
+    return plot_history(h5path, outdir)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise ValueError(f"{path}: no rows")
+    for r in rows:
+        for k, v in r.items():
+            try:
+                r[k] = float(v)
+            except ValueError:
+                pass
+    return rows
+
+
+def plot_rate(csv_path, outdir):
+    rows = read_csv(csv_path)
+    plt = _plt()
+    methods = sorted({r["method"] for r in rows})
+    fig, axes = plt.subplots(1, len(methods), figsize=(5 * len(methods), 4), squeeze=False)
+    for ax, m in zip(axes[0], methods):
+        for key in sorted({(r["ordering"], r["solver"]) for r in rows if r["method"] == m}):
+            sel = [r for r in rows if r["method"] == m and (r["ordering"], r["solver"]) == key]
+            for case_marker, case in zip("os^v", sorted({r["case"] for r in sel})):
+                pts = [r for r in sel if r["case"] == case]
+                ax.plot([r["dofs"] for r in pts], [r["hz"] for r in pts], case_marker, label=f"{key[0]}/{key[1]} {case}")
+        ax.axhline(50, color="gray", ls=":")
+        ax.set(xlabel="DOF", ylabel="steps per second (Hz)", yscale="log", title=m)
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / "fem_rate.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
+def plot_orderings(csv_path, outdir):
+    rows = read_csv(csv_path)
+    plt = _plt()
+    sources = list(dict.fromkeys(r["source"] for r in rows))
+    orders = ["natural", "cm", "rcm", "amd", "metis", "auto"]
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(max(8, 0.6 * len(sources)), 7))
+    w = 0.8 / len(orders)
+    for i, o in enumerate(orders):
+        x = np.arange(len(sources)) + i * w
+        get = lambda s, k: next((r[k] for r in rows if r["source"] == s and r["ordering"] == o), np.nan)
+        a1.bar(x, [get(s, "nnz_L") for s in sources], w, label=o)
+        a2.bar(x, [get(s, "profile") for s in sources], w, label=o)
+    for ax, lab in ((a1, "nnz(L)"), (a2, "profile (envelope)")):
+        ax.set_xticks(np.arange(len(sources)) + 0.4)
+        ax.set_xticklabels(sources, rotation=60, fontsize=7)
+        ax.set(yscale="log", ylabel=lab)
+    a1.legend(fontsize=7, ncol=6)
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / "fem_orderings.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
+def _cli(fn):
+    def run(args):
+        for png in fn(args.file, args.outdir):
+            print(f"wrote {png}")
+        return 0
+
+    return run
+
+
+def register(sub):
+    for name, fn, help_text in (
+        ("fem-history", plot_history, "femdyn energy, tip deflection and step timings from an output file"),
+        ("fem-rate", plot_rate, "Hz against DOF per ordering and solver (scripts/bench/fem-rate CSV)"),
+        ("fem-orderings", plot_orderings, "nnz(L) and profile per ordering (scripts/bench/fem-orderings CSV)"),
+    ):
+        p = sub.add_parser(name, help=help_text)
+        p.add_argument("file")
+        p.add_argument("--outdir", default="out")
+        p.set_defaults(func=_cli(fn))

@@ -1,0 +1,103 @@
+"""Benchmarks of the FEM app (driven by scripts/bench/fem-rate and fem-orderings): write CSV, no figures."""
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import h5py
+
+ROOT = Path(__file__).resolve().parents[2]
+BIN = Path(os.environ.get("SUITE_BIN", ROOT / "build" / "bin"))
+DATA = Path(os.environ.get("SUITE_DATA", ROOT.parent / "shared" / "data"))
+
+# name, beam_cells, beam_length (cubic cells of size 1/ny), material, extra options
+RATE_CASES = [
+    ("beam-1k", (37, 2, 2), 18.5),
+    ("beam-5k", (104, 3, 3), 104 / 3),
+    ("block-5k", (20, 8, 8), 2.5),
+]
+RATE_METHODS = [
+    # label, material, options
+    ("stvk-newton", "stvk", ["-tip_load", "5", "-newton_rtol", "1e-6"]),
+    ("linear-fixed", "linear", ["-tip_load", "1", "-mass", "lumped"]),
+    ("corot-initial", "corotational", ["-tip_load", "1", "-jacobian", "initial", "-newton_rtol", "1e-6"]),
+]
+RATE_SOLVERS = [("rcm", "skyline"), ("rcm", "banded"), ("rcm", "cholmod"), ("amd", "cholmod"), ("metis", "cholmod")]
+
+
+def femdyn(out, *args):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    cmd = [str(BIN / "femdyn"), *map(str, args), "-output", out, "-quiet"]
+    subprocess.run(cmd, env=env, check=True, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    return h5py.File(out, "r")
+
+
+def rate(csv_path):
+    rows = []
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "r.h5")
+        for case, cells, length in RATE_CASES:
+            for label, material, extra in RATE_METHODS:
+                for ordering, solver in RATE_SOLVERS:
+                    steps = 40 if label == "stvk-newton" else 200
+                    with femdyn(out, "-beam_cells", ",".join(map(str, cells)), "-beam_length", length,
+                                "-material", material, "-ordering", ordering, "-solver", solver, "-dt", 0.01,
+                                "-steps", steps, *extra) as f:
+                        s = f["steps"]
+                        n = len(s["wall"]) - 1
+                        row = dict(case=case, method=label, ordering=ordering, solver=solver,
+                                   dofs=int(f.attrs["dofs"]), hz=float(f.attrs["rate_hz"]),
+                                   ms_assemble=1e3 * s["assemble"][1:].sum() / n,
+                                   ms_factor=1e3 * s["factor"][1:].sum() / n,
+                                   ms_solve=1e3 * s["solve"][1:].sum() / n,
+                                   newton_per_step=s["newton_iterations"][1:].mean(),
+                                   nnz_L=int(f["ordering"].attrs["nnz_L"]),
+                                   bandwidth=int(f["ordering"].attrs["bandwidth"]),
+                                   profile=int(f["ordering"].attrs["profile"]),
+                                   ordering_ms=1e3 * float(f["ordering"].attrs["time"]))
+                    rows.append(row)
+                    print(",".join(f"{v:.4g}" if isinstance(v, float) else str(v) for v in row.values()), flush=True)
+    write(csv_path, rows)
+
+
+def orderings(csv_path):
+    rows = []
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "o.h5")
+        for mtx in sorted((DATA / "matrices").glob("*.mtx")):
+            subprocess.run([str(BIN / "reorder"), "-matrix", str(mtx), "-ordering", "all", "-output", out, "-quiet"],
+                           env=env, check=True)
+            with h5py.File(out, "r") as f:
+                for k in f.keys():
+                    rows.append(dict(source=mtx.stem, kind="matrix", n=int(f.attrs["n"]), ordering=k,
+                                     bandwidth=int(f[k]["bandwidth"][0]), profile=int(f[k]["profile"][0]),
+                                     nnz_L=int(f[k]["nnz_L"][0]), flops=float(f[k]["flops"][0]),
+                                     time_ms=1e3 * float(f[k]["time"][0])))
+        meshes = [("beam-40k", (110, 10, 10), 11.0), ("cube-40k", (23, 23, 23), 1.0), ("beam-5k", (104, 3, 3), 104 / 3),
+                  ("cube-5k", (11, 11, 11), 1.0)]
+        for name, cells, length in meshes:
+            for k in ("natural", "cm", "rcm", "amd", "metis", "auto"):
+                with femdyn(out, "-beam_cells", ",".join(map(str, cells)), "-beam_length", length, "-ordering", k,
+                            "-steps", 0) as f:
+                    a = f["ordering"].attrs
+                    rows.append(dict(source=name, kind="mesh", n=int(f.attrs["dofs"]), ordering=k,
+                                     bandwidth=int(a["bandwidth"]), profile=int(a["profile"]), nnz_L=int(a["nnz_L"]),
+                                     flops=float(a["factor_flops"]), time_ms=1e3 * float(a["time"])))
+                print(rows[-1], flush=True)
+    write(csv_path, rows)
+
+
+def write(path, rows):
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print(f"wrote {path} ({len(rows)} rows)")
+
+
+if __name__ == "__main__":
+    {"rate": rate, "orderings": orderings}[sys.argv[1]](sys.argv[2])

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""femdyn regression: runs the executable and asserts numbers from its HDF5 output.
+
+- Cantilever L=10, 1x1, E=1000, nu=0.3, P=1 (Timoshenko 4.0306): P2 on 20x2x2 within 2%; P1 increases with
+  refinement and stays below the reference (shear locking). StVK elastica (P L^2/EI = 1) tip w/L and u/L.
+- Undamped linear Newmark (beta=1/4, gamma=1/2) under a suddenly applied tip load: the total energy
+  T + U - f.u is conserved to 1e-10 (relative).
+- Orderings and solvers give the same StVK dynamic solution (rcm/skyline vs amd/cholmod vs metis/cholmod).
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+TIMOSHENKO = 4.0306
+
+
+def run(exe, out, *args):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    cmd = [exe, *map(str, args), "-output", out, "-quiet"]
+    p = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if p.returncode != 0:
+        raise AssertionError(f"{' '.join(cmd)} failed:\n{p.stdout}")
+    return h5py.File(out, "r")
+
+
+def main(exe):
+    fails = []
+
+    def check(cond, msg):
+        print(("ok   " if cond else "FAIL ") + msg)
+        if not cond:
+            fails.append(msg)
+
+    with tempfile.TemporaryDirectory() as d:
+        p = lambda name: os.path.join(d, name)
+        # Cantilever, P2.
+        with run(exe, p("p2.h5"), "-static", "-tip_load", 1, "-beam_cells", "20,2,2", "-order", 2) as f:
+            w = f.attrs["tip_deflection"]
+            check(abs(w - TIMOSHENKO) / TIMOSHENKO < 0.02, f"P2 20x2x2 tip deflection {w:.5f} within 2% of 4.0306")
+        # Cantilever, P1 refinement (locking: monotone increase, below the reference).
+        prev = 0.0
+        for cells in ("10,1,1", "20,2,2", "40,4,4"):
+            with run(exe, p("p1.h5"), "-static", "-tip_load", 1, "-beam_cells", cells) as f:
+                w = f.attrs["tip_deflection"]
+            check(prev < w < TIMOSHENKO, f"P1 {cells} tip deflection {w:.5f} increases toward 4.0306")
+            prev = w
+        # Large-deflection StVK cantilever, P L^2/EI = 1 (dead load): elastica w/L = 0.30172, u/L = 0.05643.
+        with run(exe, p("el.h5"), "-static", "-material", "stvk", "-tip_load", 1000 / 12 / 100, "-load_steps", 5,
+                 "-beam_cells", "20,2,2", "-order", 2) as f:
+            w, u = f.attrs["tip_deflection"] / 10, -f.attrs["tip_ux"] / 10
+        check(abs(w - 0.30172) / 0.30172 < 0.01, f"elastica w/L {w:.5f} within 1% of 0.30172")
+        check(abs(u - 0.05643) / 0.05643 < 0.02, f"elastica u/L {u:.5f} within 2% of 0.05643")
+        # StVK at a small load agrees with linear.
+        with run(exe, p("lin.h5"), "-static", "-tip_load", 0.01, "-beam_cells", "10,2,2") as f:
+            wl = f.attrs["tip_deflection"]
+        with run(exe, p("nl.h5"), "-static", "-material", "stvk", "-tip_load", 0.01, "-beam_cells", "10,2,2") as f:
+            wn = f.attrs["tip_deflection"]
+        check(abs(wn - wl) / wl < 1e-3, f"StVK {wn:.6e} vs linear {wl:.6e} at P = 0.01")
+        # Energy conservation, undamped linear Newmark.
+        with run(exe, p("e.h5"), "-beam_cells", "10,2,2", "-tip_load", 1, "-dt", 0.05, "-steps", 200) as f:
+            s = f["steps"]
+            e = s["kinetic_energy"][:] + s["strain_energy"][:] - s["external_work"][:]
+            scale = np.max(np.abs(s["strain_energy"][:]))
+            drift = np.max(np.abs(e - e[0])) / scale
+            check(drift < 1e-10, f"linear undamped energy drift {drift:.2e} < 1e-10 over 200 steps")
+            check(np.max(s["tip_deflection"][:]) > 1.0, "the suddenly loaded beam swings past its static deflection")
+        # Orderings / solvers agree (StVK, full Newton).
+        finals = []
+        for order, solver in (("rcm", "skyline"), ("amd", "cholmod"), ("metis", "cholmod"), ("natural", "skyline")):
+            with run(exe, p(f"{order}.h5"), "-material", "stvk", "-beam_cells", "10,2,2", "-tip_load", 2, "-dt",
+                     0.05, "-steps", 10, "-ordering", order, "-solver", solver) as f:
+                finals.append(f["final/u"][:])
+                check(np.all(f["steps/converged"][1:] == 1), f"{order}/{solver}: Newton converged every step")
+        ref = finals[0]
+        for u in finals[1:]:
+            diff = np.max(np.abs(u - ref)) / np.max(np.abs(ref))
+            check(diff < 1e-8, f"orderings/solvers agree: max relative difference {diff:.2e}")
+    print(f"{len(fails)} failure(s)")
+    return 1 if fails else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
