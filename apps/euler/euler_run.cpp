@@ -1,0 +1,498 @@
+// 1D Euler run: options, DMDA setup, boundary ghosts, TS callbacks (see euler_run.hpp).
+#include "euler_run.hpp"
+
+#include "core/field_check.hpp"
+#include "core/log.hpp"
+#include "euler/gas.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+namespace euler_app {
+
+using namespace suite::euler;
+
+namespace {
+const char* const kTimeSchemes = "ssprk3, rk4, beuler, cn, bdf2";
+
+PetscErrorCode registerSspRk3() {
+  static bool done = false;
+  PetscFunctionBeginUser;
+  if (!done) { // Shu & Osher (1988) three-stage SSP-RK3 (Gottlieb & Shu 1998, eq. 4.2) in Butcher form
+    const PetscReal A[9] = {0, 0, 0, 1, 0, 0, 0.25, 0.25, 0}, b[3] = {1.0 / 6, 1.0 / 6, 2.0 / 3},
+                    c[3] = {0, 1, 0.5};
+    PetscCall(TSRKRegister("ssprk3", 3, 3, A, b, c, nullptr, 0, nullptr));
+    done = true;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode rhsCallback(TS, PetscReal t, Vec U, Vec F, void* ctx) {
+  return static_cast<EulerRun*>(ctx)->rhs(t, U, F);
+}
+PetscErrorCode preStepCallback(TS ts) {
+  void* ctx;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetApplicationContext(ts, &ctx));
+  PetscCall(static_cast<EulerRun*>(ctx)->preStep());
+  PetscFunctionReturn(0);
+}
+PetscErrorCode postStepCallback(TS ts) {
+  void* ctx;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetApplicationContext(ts, &ctx));
+  PetscCall(static_cast<EulerRun*>(ctx)->postStep());
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+EulerRun::~EulerRun() {
+  TSDestroy(&ts_);
+  VecDestroy(&U_);
+  DMDestroy(&da_);
+}
+
+PetscErrorCode EulerRun::readOptions() {
+  MPI_Comm comm = ctx_.comm();
+  char buf[PETSC_MAX_PATH_LEN];
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(buf, opt_.problem.c_str(), sizeof(buf)));
+  PetscOptionsBegin(comm, "", "Euler 1D options", "");
+  PetscCall(PetscOptionsString("-problem", "Problem", "", buf, buf, sizeof(buf), nullptr));
+  opt_.problem = buf;
+  PetscCall(PetscStrncpy(buf, opt_.scheme.c_str(), sizeof(buf)));
+  PetscCall(PetscOptionsString("-scheme", "Spatial scheme: enopade6, crweno5, weno5, muscl2", "", buf, buf,
+                               sizeof(buf), nullptr));
+  opt_.scheme = buf;
+  PetscCall(PetscStrncpy(buf, opt_.time.c_str(), sizeof(buf)));
+  PetscCall(PetscOptionsString("-time",
+                               "Time integrator: ssprk3, rk4, beuler, cn, bdf2 (then -ts_* refine it)", "",
+                               buf, buf, sizeof(buf), nullptr));
+  opt_.time = buf;
+  PetscOptionsEnd();
+  PetscCall(createProblem(comm, opt_.problem, &problem_));
+  scheme_ = findScheme(opt_.scheme);
+  PetscCheck(scheme_, comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+             "Unknown scheme '%s' (option -scheme); known schemes: %s", opt_.scheme.c_str(),
+             schemeNames().c_str());
+  const bool known_time = opt_.time == "ssprk3" || opt_.time == "rk4" || opt_.time == "beuler" ||
+                          opt_.time == "cn" || opt_.time == "bdf2";
+  PetscCheck(known_time, comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+             "Unknown time integrator '%s' (option -time); known: %s", opt_.time.c_str(), kTimeSchemes);
+  opt_.implicit = opt_.time == "beuler" || opt_.time == "cn" || opt_.time == "bdf2";
+
+  opt_.nx = problem_.default_nx;
+  opt_.t_final = problem_.t_final;
+  opt_.max_steps = problem_.default_max_steps;
+  opt_.dt = problem_.default_dt;
+  opt_.spacetime_every = problem_.default_spacetime_every;
+  if (opt_.implicit) opt_.positivity = PETSC_FALSE;
+  double xmin = problem_.xmin, xmax = problem_.xmax;
+  char bcl[64], bcr[64];
+  PetscCall(PetscStrncpy(bcl, bcName(problem_.bc_left), sizeof(bcl)));
+  PetscCall(PetscStrncpy(bcr, bcName(problem_.bc_right), sizeof(bcr)));
+  buf[0] = 0;
+  char ref[PETSC_MAX_PATH_LEN] = "";
+  PetscOptionsBegin(comm, "", "Euler 1D discretisation and output options", "");
+  PetscCall(PetscOptionsInt("-nx", "Number of cells", "", opt_.nx, &opt_.nx, nullptr));
+  PetscCall(PetscOptionsReal("-t_final", "End time", "", opt_.t_final, &opt_.t_final, nullptr));
+  PetscCall(PetscOptionsReal("-xmin", "Left end of the domain", "", xmin, &xmin, nullptr));
+  PetscCall(PetscOptionsReal("-xmax", "Right end of the domain", "", xmax, &xmax, nullptr));
+  PetscCall(PetscOptionsString("-bc_left", "Left boundary: periodic, outflow, reflecting, inflow", "", bcl,
+                               bcl, sizeof(bcl), nullptr));
+  PetscCall(PetscOptionsString("-bc_right", "Right boundary: periodic, outflow, reflecting, inflow", "", bcr,
+                               bcr, sizeof(bcr), nullptr));
+  PetscCall(
+      PetscOptionsReal("-cfl", "CFL number: dt = cfl dx / max(|u| + c)", "", opt_.cfl, &opt_.cfl, nullptr));
+  PetscCall(PetscOptionsReal("-dt", "Fixed time step (0: CFL-controlled)", "", opt_.dt, &opt_.dt, nullptr));
+  PetscCall(PetscOptionsInt("-max_steps", "Maximum number of steps (-1: no limit)", "", opt_.max_steps,
+                            &opt_.max_steps, nullptr));
+  PetscCall(PetscOptionsBool("-characteristic", "Characteristic-wise reconstruction (false: component-wise)",
+                             "", opt_.characteristic, &opt_.characteristic, nullptr));
+  PetscCall(PetscOptionsBool("-local_lf", "Local Lax-Friedrichs splitting (false: global)", "", opt_.local_lf,
+                             &opt_.local_lf, nullptr));
+  PetscCall(PetscOptionsBool("-positivity", "Hu-Adams-Shu positivity-preserving flux limiter", "",
+                             opt_.positivity, &opt_.positivity, nullptr));
+  PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
+                             opt_.shock_threshold, &opt_.shock_threshold, nullptr));
+  PetscCall(PetscOptionsString("-output", "HDF5 output file", "", buf, buf, sizeof(buf), &set));
+  if (set) opt_.output = buf;
+  PetscCall(PetscOptionsInt("-snapshot_every", "Write a snapshot every N steps (0: none)", "",
+                            opt_.snapshot_every, &opt_.snapshot_every, nullptr));
+  PetscCall(PetscOptionsInt("-spacetime_every", "Record density every N steps for the x-t image (0: none)",
+                            "", opt_.spacetime_every, &opt_.spacetime_every, nullptr));
+  PetscCall(PetscOptionsBool("-error", "Compute L1/L2/Linf errors against the exact solution (or -reference)",
+                             "", opt_.error, &opt_.error, nullptr));
+  PetscCall(PetscOptionsString("-reference", "HDF5 file of a finer (or equal) grid run to compare with", "",
+                               ref, ref, sizeof(ref), &set));
+  if (set) opt_.reference = ref;
+  PetscOptionsEnd();
+
+  PetscCheck(
+      parseBc(bcl, &problem_.bc_left), comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+      "Unknown boundary condition '%s' (option -bc_left); known: periodic, outflow, reflecting, inflow", bcl);
+  PetscCheck(
+      parseBc(bcr, &problem_.bc_right), comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+      "Unknown boundary condition '%s' (option -bc_right); known: periodic, outflow, reflecting, inflow",
+      bcr);
+  PetscCheck((problem_.bc_left == Bc::Periodic) == (problem_.bc_right == Bc::Periodic), comm,
+             PETSC_ERR_ARG_WRONG, "Periodic boundaries must be set on both ends (-bc_left %s, -bc_right %s)",
+             bcl, bcr);
+  periodic_ = problem_.bc_left == Bc::Periodic;
+  problem_.xmin = xmin;
+  problem_.xmax = xmax;
+  PetscCheck(xmax > xmin, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid domain: -xmax %g must exceed -xmin %g",
+             xmax, xmin);
+  const PetscInt width = 2 * LineOperator::kGhost;
+  PetscCheck(opt_.nx >= width, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -nx %" PetscInt_FMT ": below the stencil width %" PetscInt_FMT " of the schemes",
+             opt_.nx, width);
+  PetscCheck(opt_.nx >= LineOperator::kGhost * ctx_.size(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -nx %" PetscInt_FMT ": each of the %d ranks needs at least %d cells", opt_.nx,
+             ctx_.size(), LineOperator::kGhost);
+  PetscCheck(opt_.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", opt_.cfl);
+  PetscCheck(opt_.dt >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -dt %g: must be >= 0 (0: CFL-controlled)", opt_.dt);
+  PetscCheck(opt_.t_final > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -t_final %g: must be > 0",
+             opt_.t_final);
+  PetscCheck(opt_.snapshot_every >= 0 && opt_.spacetime_every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -snapshot_every/-spacetime_every: must be >= 0");
+  PetscCheck(!opt_.error || problem_.exact || !opt_.reference.empty(), comm, PETSC_ERR_ARG_WRONG,
+             "-error: problem '%s' has no exact solution; give -reference FILE.h5 of a fine-grid run",
+             opt_.problem.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::setup() {
+  MPI_Comm comm = ctx_.comm();
+  PetscFunctionBeginUser;
+  const DMBoundaryType bt = periodic_ ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
+  PetscCall(DMDACreate1d(comm, bt, opt_.nx, 3, LineOperator::kGhost, nullptr, &da_));
+  PetscCall(DMSetUp(da_));
+  PetscCall(DMDASetFieldName(da_, 0, "rho"));
+  PetscCall(DMDASetFieldName(da_, 1, "rho_u"));
+  PetscCall(DMDASetFieldName(da_, 2, "E"));
+  PetscCall(DMDAGetCorners(da_, &xs_, nullptr, nullptr, &xm_, nullptr, nullptr));
+  dx_ = (problem_.xmax - problem_.xmin) / opt_.nx;
+  LineOptions lo;
+  lo.gamma = problem_.gamma;
+  lo.characteristic = opt_.characteristic;
+  lo.local_lf = opt_.local_lf;
+  lo.shock_threshold = opt_.shock_threshold;
+  lo.positivity = opt_.positivity;
+  op_ = std::make_unique<LineOperator>(scheme_, lo);
+  q_.resize(xm_ + 2 * LineOperator::kGhost);
+  h_.resize(xm_ + 1);
+  dq_.resize(xm_);
+  xc_.resize(xm_);
+  PetscCall(DMCreateGlobalVector(da_, &U_));
+  PetscScalar* u;
+  PetscCall(VecGetArray(U_, &u));
+  for (PetscInt k = 0; k < xm_; ++k) {
+    xc_[k] = problem_.xmin + (xs_ + k + 0.5) * dx_;
+    const Vec3 q = toCons(problem_.initial(xc_[k]), problem_.gamma);
+    for (int c = 0; c < 3; ++c) u[3 * k + c] = q[c];
+  }
+  PetscCall(VecRestoreArray(U_, &u));
+  PetscCall(totals(U_, &totals0_));
+  PetscCall(setupTimeStepper());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::setupTimeStepper() {
+  PetscFunctionBeginUser;
+  PetscCall(registerSspRk3());
+  PetscCall(TSCreate(ctx_.comm(), &ts_));
+  PetscCall(TSSetDM(ts_, da_));
+  PetscCall(TSSetProblemType(ts_, TS_NONLINEAR));
+  PetscCall(TSSetRHSFunction(ts_, nullptr, rhsCallback, this));
+  PetscCall(TSSetApplicationContext(ts_, this));
+  if (opt_.time == "ssprk3" || opt_.time == "rk4") {
+    PetscCall(TSSetType(ts_, TSRK));
+    PetscCall(TSRKSetType(ts_, opt_.time == "rk4" ? TSRK4 : "ssprk3"));
+  } else {
+    if (opt_.time == "beuler")
+      PetscCall(TSSetType(ts_, TSBEULER));
+    else if (opt_.time == "cn")
+      PetscCall(TSSetType(ts_, TSCN));
+    else {
+      PetscCall(TSSetType(ts_, TSBDF));
+      PetscCall(TSBDFSetOrder(ts_, 2));
+    }
+    SNES snes;
+    KSP ksp;
+    PC pc;
+    PetscCall(TSGetSNES(ts_, &snes));
+    PetscCall(SNESSetUseMatrixFree(snes, PETSC_FALSE, PETSC_TRUE)); // Jacobian-free Newton-Krylov
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(KSPSetType(ksp, KSPGMRES));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCSetType(pc, PCNONE));
+    PetscCall(SNESSetTolerances(snes, 1e-10, 1e-6, PETSC_DEFAULT, 30, PETSC_DEFAULT));
+    PetscCall(SNESSetMaxLinearSolveFailures(snes, 30)); // inexact Newton: accept unconverged GMRES steps
+    PetscCall(KSPSetTolerances(ksp, 1e-3, PETSC_DEFAULT, PETSC_DEFAULT, 100));
+  }
+  TSAdapt adapt;
+  PetscCall(TSGetAdapt(ts_, &adapt));
+  PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));
+  PetscCall(TSSetMaxTime(ts_, opt_.t_final));
+  PetscCall(TSSetMaxSteps(ts_, opt_.max_steps > 0 ? opt_.max_steps : PETSC_MAX_INT));
+  PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_MATCHSTEP));
+  double amax;
+  PetscCall(maxWaveSpeed(U_, &amax));
+  PetscCall(TSSetTimeStep(ts_, opt_.dt > 0 ? opt_.dt : opt_.cfl * dx_ / amax));
+  PetscCall(TSSetPreStep(ts_, preStepCallback));
+  PetscCall(TSSetPostStep(ts_, postStepCallback));
+  PetscCall(TSSetFromOptions(ts_));
+  if (opt_.implicit) {
+    SNES snes;
+    PetscCall(TSGetSNES(ts_, &snes));
+    PetscCall(SNESSetFromOptions(snes));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::fillGhosts(Vec3* q) const {
+  PetscFunctionBeginUser;
+  if (periodic_) PetscFunctionReturn(0);
+  const int g = LineOperator::kGhost;
+  const double gam = problem_.gamma;
+  if (xs_ == 0) {
+    for (int m = 0; m < g; ++m) {
+      Vec3& ghost = q[g - 1 - m];
+      switch (problem_.bc_left) {
+      case Bc::Outflow:
+        ghost = q[g];
+        break;
+      case Bc::Reflecting:
+        ghost = q[g + m], ghost[1] = -ghost[1];
+        break;
+      case Bc::Inflow:
+        ghost = toCons(problem_.inflow_left, gam);
+        break;
+      case Bc::Periodic:
+        break;
+      }
+    }
+  }
+  if (xs_ + xm_ == opt_.nx) {
+    const int last = g + xm_ - 1;
+    for (int m = 0; m < g; ++m) {
+      Vec3& ghost = q[last + 1 + m];
+      switch (problem_.bc_right) {
+      case Bc::Outflow:
+        ghost = q[last];
+        break;
+      case Bc::Reflecting:
+        ghost = q[last - m], ghost[1] = -ghost[1];
+        break;
+      case Bc::Inflow:
+        ghost = toCons(problem_.inflow_right, gam);
+        break;
+      case Bc::Periodic:
+        break;
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::maxWaveSpeed(Vec U, double* amax) const {
+  const PetscScalar* u;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(U, &u));
+  double a = 0.0;
+  for (PetscInt k = 0; k < xm_; ++k) {
+    const double s = suite::euler::maxWaveSpeed({u[3 * k], u[3 * k + 1], u[3 * k + 2]}, problem_.gamma);
+    a = (std::isnan(s) || s > a) ? (std::isnan(a) ? a : s) : a;
+  }
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &a, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  *amax = a;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::rhs(double, Vec U, Vec F) {
+  Vec Ul;
+  const PetscScalar* u;
+  PetscScalar* f;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(da_, &Ul));
+  PetscCall(DMGlobalToLocal(da_, U, INSERT_VALUES, Ul));
+  PetscCall(VecGetArrayRead(Ul, &u));
+  const int g = LineOperator::kGhost;
+  double amax = 0.0;
+  for (PetscInt k = 0; k < xm_ + 2 * g; ++k) {
+    const bool ghost_at_end = !periodic_ && ((xs_ == 0 && k < g) || (xs_ + xm_ == opt_.nx && k >= xm_ + g));
+    if (!ghost_at_end) q_[k] = {u[3 * k], u[3 * k + 1], u[3 * k + 2]};
+    if (k >= g && k < xm_ + g) amax = std::max(amax, suite::euler::maxWaveSpeed(q_[k], problem_.gamma));
+  }
+  PetscCall(VecRestoreArrayRead(Ul, &u));
+  PetscCall(DMRestoreLocalVector(da_, &Ul));
+  PetscCall(fillGhosts(q_.data()));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &amax, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  try {
+    op_->interfaceFluxes(ctx_.comm(), q_.data(), opt_.nx, xs_, (int)xm_, periodic_, amax * (1.0 + 1e-12),
+                         opt_.positivity ? dt_limiter_ / dx_ : 0.0, h_.data());
+  } catch (const std::exception& e) { // identical on every rank: the line solve is redundant
+    SETERRQ(ctx_.comm(), PETSC_ERR_NOT_CONVERGED,
+            "Euler right-hand side failed at step %" PetscInt_FMT ": %s", steps_, e.what());
+  }
+  LineOperator::divergence(h_.data(), (int)xm_, dx_, dq_.data());
+  PetscCall(VecGetArray(F, &f));
+  for (PetscInt k = 0; k < xm_; ++k)
+    for (int c = 0; c < 3; ++c) f[3 * k + c] = dq_[k][c];
+  PetscCall(VecRestoreArray(F, &f));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::preStep() {
+  PetscReal t;
+  Vec U;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetTime(ts_, &t));
+  PetscCall(TSGetSolution(ts_, &U));
+  double dt = opt_.dt;
+  if (dt <= 0.0) {
+    double amax;
+    PetscCall(maxWaveSpeed(U, &amax));
+    PetscCheck(std::isfinite(amax) && amax > 0.0, ctx_.comm(), PETSC_ERR_FP,
+               "Wave speed is not finite at step %" PetscInt_FMT ", time %g", steps_, t);
+    dt = opt_.cfl * dx_ / amax;
+  }
+  if (t + dt > opt_.t_final) dt = opt_.t_final - t;
+  dt_limiter_ = dt;
+  PetscCall(TSSetTimeStep(ts_, dt));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::primitiveArrays(Vec U, std::vector<double>* rho, std::vector<double>* u,
+                                         std::vector<double>* p) const {
+  const PetscScalar* a;
+  PetscFunctionBeginUser;
+  rho->resize(xm_);
+  u->resize(xm_);
+  p->resize(xm_);
+  PetscCall(VecGetArrayRead(U, &a));
+  for (PetscInt k = 0; k < xm_; ++k) {
+    const Prim w = toPrim({a[3 * k], a[3 * k + 1], a[3 * k + 2]}, problem_.gamma);
+    (*rho)[k] = w.rho, (*u)[k] = w.u, (*p)[k] = w.p;
+  }
+  PetscCall(VecRestoreArrayRead(U, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::checkState(Vec U, PetscInt step, double time) const {
+  std::vector<double> rho, u, p;
+  PetscFunctionBeginUser;
+  PetscCall(primitiveArrays(U, &rho, &u, &p));
+  suite::FieldLocation where{"rho", step, time, xs_, xc_.data()};
+  PetscCall(suite::checkAbove(ctx_.comm(), rho.data(), xm_, 1, 0, 0.0, where));
+  where.field = "u";
+  PetscCall(suite::checkFinite(ctx_.comm(), u.data(), xm_, 1, 0, where));
+  where.field = "p";
+  PetscCall(suite::checkAbove(ctx_.comm(), p.data(), xm_, 1, 0, 0.0, where));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::postStep() {
+  PetscReal t;
+  Vec U;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetTime(ts_, &t));
+  PetscCall(TSGetStepNumber(ts_, &steps_));
+  PetscCall(TSGetSolution(ts_, &U));
+  time_ = t;
+  PetscCall(checkState(U, steps_, t));
+  if (opt_.snapshot_every > 0 && steps_ % opt_.snapshot_every == 0 && !opt_.output.empty())
+    PetscCall(writeSnapshot(steps_, t));
+  if (opt_.spacetime_every > 0 && steps_ % opt_.spacetime_every == 0) {
+    const PetscScalar* a;
+    PetscCall(VecGetArrayRead(U, &a));
+    for (PetscInt k = 0; k < xm_; ++k) spacetime_rho_.push_back(a[3 * k]);
+    PetscCall(VecRestoreArrayRead(U, &a));
+    spacetime_t_.push_back(t);
+  }
+  bool stop = false;
+  PetscCall(ctx_.stopRequested(&stop));
+  if (stop) {
+    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: stopping at step %" PetscInt_FMT " (%s)",
+                             steps_, ctx_.stopReason().c_str()));
+    PetscCall(TSSetConvergedReason(ts_, TS_CONVERGED_USER));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::solve() {
+  PetscFunctionBeginUser;
+  PetscCall(checkState(U_, 0, 0.0));
+  if (opt_.spacetime_every > 0) {
+    const PetscScalar* a;
+    PetscCall(VecGetArrayRead(U_, &a));
+    for (PetscInt k = 0; k < xm_; ++k) spacetime_rho_.push_back(a[3 * k]);
+    PetscCall(VecRestoreArrayRead(U_, &a));
+    spacetime_t_.push_back(0.0);
+  }
+  if (opt_.snapshot_every > 0 && !opt_.output.empty()) PetscCall(writeSnapshot(0, 0.0));
+  PetscCall(suite::logInfo(
+      ctx_.comm(), ctx_.quiet(),
+      "euler: problem %s, scheme %s, time %s, nx %" PetscInt_FMT ", t_final %g, %d rank(s)",
+      opt_.problem.c_str(), opt_.scheme.c_str(), opt_.time.c_str(), opt_.nx, opt_.t_final, ctx_.size()));
+  const double w0 = MPI_Wtime();
+  PetscCall(TSSolve(ts_, U_));
+  wall_solve_ = MPI_Wtime() - w0;
+  PetscCall(TSGetStepNumber(ts_, &steps_));
+  PetscReal t;
+  PetscCall(TSGetTime(ts_, &t));
+  time_ = t;
+  Vec3 tot;
+  PetscCall(totals(U_, &tot));
+  const char* names[3] = {"mass", "momentum", "energy"};
+  for (int c = 0; c < 3; ++c) {
+    const double scale = std::max(std::abs(totals0_[c]), 1e-300);
+    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                             "conservation %s: initial %.15e final %.15e rel_change %.3e", names[c],
+                             totals0_[c], tot[c], std::abs(tot[c] - totals0_[c]) / scale));
+  }
+  const double cells = (double)opt_.nx * steps_;
+  PetscCall(suite::logInfo(
+      ctx_.comm(), ctx_.quiet(),
+      "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank); "
+      "shock rows %lld, limited faces %lld, LU fallbacks %lld",
+      steps_, t, wall_solve_, cells / wall_solve_, cells / wall_solve_ / ctx_.size(), op_->stats().shock_rows,
+      op_->stats().limited_faces, op_->solver().stats().lu_fallbacks));
+  if (opt_.error) PetscCall(computeErrors());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::totals(Vec U, Vec3* sum) const {
+  const PetscScalar* a;
+  PetscFunctionBeginUser;
+  double s[3] = {0, 0, 0};
+  PetscCall(VecGetArrayRead(U, &a));
+  for (PetscInt k = 0; k < xm_; ++k)
+    for (int c = 0; c < 3; ++c) s[c] += a[3 * k + c] * dx_;
+  PetscCall(VecRestoreArrayRead(U, &a));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 3, MPI_DOUBLE, MPI_SUM, ctx_.comm()));
+  *sum = {s[0], s[1], s[2]};
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode runEuler(const suite::RunContext& ctx) {
+  EulerRun run(ctx);
+  PetscFunctionBeginUser;
+  PetscCall(run.readOptions());
+  if (ctx.helpRequested()) {
+    PetscCall(ctx.checkUnusedOptions());
+    PetscFunctionReturn(0);
+  }
+  PetscCall(run.setup());
+  PetscCall(ctx.checkUnusedOptions());
+  PetscCall(run.solve());
+  PetscCall(run.writeOutput());
+  PetscFunctionReturn(0);
+}
+
+} // namespace euler_app

@@ -1,0 +1,35 @@
+// Scheme registry (see schemes.hpp).
+#include "euler/schemes.hpp"
+
+#include "euler/crweno5.hpp"
+#include "euler/enopade6.hpp"
+#include "euler/weno5.hpp"
+
+namespace suite::euler {
+
+namespace {
+const SchemeInfo kSchemes[] = {
+    {"enopade6", "6th-order Pade core, CRWENO5-Z rows at discontinuities (ENO-Pade hybrid)", true, true,
+     false, padeRow, crweno5Row, central6Row, weno5Row, 6},
+    {"crweno5", "5th-order compact-reconstruction WENO-Z (Ghosh & Baeder 2012)", true, false, false,
+     crweno5Row, crweno5Row, weno5Row, weno5Row, 5},
+    {"weno5", "5th-order WENO-Z, explicit (Jiang & Shu 1996; Borges et al. 2008)", false, false, false,
+     weno5Row, weno5Row, weno5Row, weno5Row, 5},
+    {"muscl2", "2nd-order MUSCL (van Leer limiter) + HLLC", false, false, true, nullptr, nullptr, nullptr,
+     nullptr, 2},
+};
+} // namespace
+
+const SchemeInfo* findScheme(const std::string& name) {
+  for (const auto& s : kSchemes)
+    if (name == s.name) return &s;
+  return nullptr;
+}
+
+std::string schemeNames() {
+  std::string out;
+  for (const auto& s : kSchemes) out += (out.empty() ? "" : ", ") + std::string(s.name);
+  return out;
+}
+
+} // namespace suite::euler

@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""Regression checks of the 1D Euler app: runs bin/euler (under mpiexec) and asserts the numbers it prints.
+
+Standard library only. SUITE_BIN points at the build's bin/ (set by ctest). Usage: euler_check.py CHECK
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+BIN = os.environ.get("SUITE_BIN", "build/bin")
+MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
+
+
+def run(args, np=1):
+    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np), os.path.join(BIN, "euler")] + [str(a) for a in args]
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900)
+    print("$ " + " ".join(cmd))
+    print(p.stdout)
+    if p.returncode != 0:
+        raise SystemExit(f"FAIL: exit {p.returncode}")
+    return p.stdout
+
+
+def error(out, var="rho", norm="L1"):
+    m = re.search(rf"error {var}: L1 (\S+) L2 (\S+) Linf (\S+)", out)
+    if not m:
+        raise SystemExit(f"FAIL: no error line for {var}")
+    return float(m.group({"L1": 1, "L2": 2, "Linf": 3}[norm]))
+
+
+def check(cond, msg):
+    print(("OK: " if cond else "FAIL: ") + msg)
+    if not cond:
+        raise SystemExit(1)
+
+
+def density_wave_order():
+    """Pade core: L1 order >= 5.8 on density_wave, N = 20..160, RK4 with dt ~ dx^1.5 (time error negligible)."""
+    errs = []
+    ns = [20, 40, 80, 160]
+    for n in ns:
+        dx = 2.0 / n
+        dt = 0.25 * dx ** 1.5
+        out = run(["-problem", "density_wave", "-nx", n, "-time", "rk4", "-dt", dt, "-t_final", 0.5, "-error",
+                   "-quiet"])
+        errs.append(error(out))
+    orders = [math.log2(errs[i - 1] / errs[i]) for i in range(1, len(errs))]
+    print("errors", errs, "orders", orders)
+    check(min(orders) >= 5.8, f"ENO-Pade (Pade core) L1 orders {orders} >= 5.8")
+
+
+def sod():
+    out = run(["-problem", "sod", "-nx", 200, "-t_final", 0.2, "-error", "-quiet"])
+    e = error(out)
+    check(e <= 2.8e-3, f"Sod N=200 enopade6 L1(rho) = {e:.4e} <= 2.8e-3")
+
+
+def shu_osher():
+    with tempfile.TemporaryDirectory() as d:
+        ref = os.path.join(d, "ref.h5")
+        run(["-problem", "shu_osher", "-nx", 6400, "-scheme", "weno5", "-output", ref, "-quiet"])
+        out = run(["-problem", "shu_osher", "-nx", 400, "-reference", ref, "-error", "-quiet"])
+        e = error(out)
+        check(e <= 1.8e-2, f"Shu-Osher N=400 enopade6 vs N=6400 reference: L1(rho) = {e:.4e} <= 1.8e-2")
+
+
+def conservation():
+    for scheme, problem in [("enopade6", "pulse"), ("crweno5", "density_wave"), ("weno5", "pulse"),
+                            ("muscl2", "pulse")]:
+        out = run(["-problem", problem, "-scheme", scheme, "-nx", 200, "-max_steps", 200])
+        for q in ("mass", "momentum", "energy"):
+            m = re.search(rf"conservation {q}: .* rel_change (\S+)", out)
+            v = float(m.group(1))
+            check(v <= 1e-13, f"{scheme}/{problem}: relative change of total {q} {v:.3e} <= 1e-13")
+
+
+def ranks():
+    with tempfile.TemporaryDirectory() as d:
+        for problem, scheme in [("sod", "enopade6"), ("density_wave", "crweno5"), ("blast", "weno5")]:
+            one = os.path.join(d, f"{problem}1.h5")
+            run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-output", one, "-quiet"])
+            out = run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-reference", one,
+                       "-error", "-quiet"], np=2)
+            m = re.search(r"reference max relative difference (\S+)", out)
+            v = float(m.group(1))
+            check(v <= 1e-12, f"{problem}/{scheme}: 1 vs 2 ranks max relative difference {v:.3e} <= 1e-12")
+
+
+def positivity():
+    cases = [["-problem", "toro123", "-nx", 400], ["-problem", "blast", "-nx", 400],
+             ["-problem", "riemann", "-rho_l", 1, "-p_l", 1, "-rho_r", 1e-3, "-p_r", 1e-10, "-nx", 400, "-t_final",
+              0.15]]
+    for scheme in ("enopade6", "weno5"):
+        for c in cases:
+            out = run(c + ["-scheme", scheme])  # non-zero exit (checkAbove) if rho or p ever <= 0
+            check("steps to" in out, f"{scheme} {' '.join(map(str, c))}: density and pressure stayed positive")
+
+
+if __name__ == "__main__":
+    globals()[sys.argv[1]]()
