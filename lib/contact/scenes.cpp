@@ -1,0 +1,273 @@
+// Scene builders (incline, drop, box_stack, pyramid, log_heap, file) and the static-overlap check.
+// The log heap follows the experiment of Lacoursiere, SIGRAD 2003 (N identical logs dropped into a heap),
+// with the logs modelled as capsules.
+#include "contact/scenes.hpp"
+
+#include "contact/collision.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace suite::contact {
+
+namespace {
+constexpr double kDeg = M_PI / 180.0;
+
+void require(bool ok, const std::string& msg) {
+  if (!ok) throw SceneError(msg);
+}
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+Shape boxShape(double edge) {
+  Shape s;
+  s.type = ShapeType::Box;
+  s.half = Vec3::Constant(0.5 * edge);
+  return s;
+}
+
+} // namespace
+
+std::vector<std::string> sceneNames() {
+  return {"incline", "drop", "box_stack", "pyramid", "log_heap", "file"};
+}
+
+Body makePlane(const std::string& name, const Vec3& n, const Vec3& point) {
+  Shape s;
+  s.type = ShapeType::Plane;
+  return makeBody(name, s, 0.0, 0.0, point, Quat::FromTwoVectors(Vec3::UnitZ(), n.normalized()), true);
+}
+
+std::vector<Body> buildScene(const SceneParams& p) {
+  std::vector<Body> b;
+  require(p.size > 0 && std::isfinite(p.size), "-size " + num(p.size) + ": must be > 0");
+  require(p.density > 0 && std::isfinite(p.density), "-density " + num(p.density) + ": must be > 0");
+  require(p.mass >= 0 && std::isfinite(p.mass), "-mass " + num(p.mass) + ": must be > 0 (0 = from -density)");
+  if (p.scene == "incline") {
+    require(p.theta_deg >= 0 && p.theta_deg < 90,
+            "-theta " + num(p.theta_deg) + ": must be in [0, 90) degrees");
+    const Quat q(Eigen::AngleAxisd(-p.theta_deg * kDeg, Vec3::UnitY()));
+    const Vec3 n = q * Vec3::UnitZ();
+    Shape s;
+    s.type = ShapeType::Plane;
+    b.push_back(makeBody("incline", s, 0, 0, Vec3::Zero(), q, true));
+    b.push_back(makeBody("box", boxShape(p.size), p.density, p.mass, 0.5 * p.size * n, q, false));
+    const Vec3 downhill = q * Vec3(-1, 0, 0);
+    b.back().v = p.v0 * downhill;
+  } else if (p.scene == "drop") {
+    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
+    require(p.height >= 0, "-height " + num(p.height) + ": must be >= 0");
+    Shape s;
+    s.type = shapeFromName(p.drop_body);
+    require(s.type != ShapeType::Plane, "-drop_body plane: a plane cannot be dropped");
+    s.radius = 0.5 * p.size;
+    s.half = Vec3::Constant(0.5 * p.size);
+    s.half_length = 0.5 * p.size;
+    const Quat q(Eigen::AngleAxisd(p.tilt_deg * kDeg, Vec3::UnitX()));
+    Body body = makeBody(p.drop_body, s, p.density, p.mass, Vec3::Zero(), q, false);
+    // lowest point of the body above the plane at 'height'
+    double low = 0.0;
+    const Mat3 R = body.R();
+    switch (s.type) {
+    case ShapeType::Sphere:
+      low = s.radius;
+      break;
+    case ShapeType::Box:
+      low = (R.transpose() * Vec3::UnitZ()).cwiseAbs().dot(s.half);
+      break;
+    case ShapeType::Capsule:
+      low = s.radius + s.half_length * std::abs(R(2, 2));
+      break;
+    case ShapeType::Cylinder:
+      low = s.half_length * std::abs(R(2, 2)) + s.radius * std::sqrt(std::max(0.0, 1 - R(2, 2) * R(2, 2)));
+      break;
+    default:
+      break;
+    }
+    body.x = Vec3(0, 0, low + p.height);
+    body.v = Vec3(p.v0, 0, 0);
+    body.w = Vec3(0, p.spin, 0);
+    b.push_back(body);
+  } else if (p.scene == "box_stack") {
+    require(p.stack_height >= 1, "-stack_height " + std::to_string(p.stack_height) + ": must be >= 1");
+    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
+    for (int i = 0; i < p.stack_height; ++i)
+      b.push_back(makeBody("box" + std::to_string(i), boxShape(p.size), p.density, 0.0,
+                           Vec3(0, 0, (i + 0.5) * p.size), Quat::Identity(), false));
+  } else if (p.scene == "pyramid") {
+    require(p.pyramid_base >= 1, "-pyramid_base " + std::to_string(p.pyramid_base) + ": must be >= 1");
+    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
+    const double pitch = 1.1 * p.size; // gap of 0.1 size between neighbours of a row
+    for (int k = 0; k < p.pyramid_base; ++k)
+      for (int j = 0; j < p.pyramid_base - k; ++j) {
+        const double x = (j - 0.5 * (p.pyramid_base - k - 1)) * pitch;
+        b.push_back(makeBody("box" + std::to_string(k) + "_" + std::to_string(j), boxShape(p.size), p.density,
+                             0.0, Vec3(x, 0, (k + 0.5) * p.size), Quat::Identity(), false));
+      }
+  } else if (p.scene == "log_heap") {
+    require(p.n_logs >= 1, "-n_logs " + std::to_string(p.n_logs) + ": must be >= 1");
+    require(p.log_radius > 0, "-log_radius " + num(p.log_radius) + ": must be > 0");
+    require(p.log_length > 0, "-log_length " + num(p.log_length) + ": must be > 0");
+    const double r = p.log_radius, hl = 0.5 * p.log_length;
+    const int per_layer = 5;
+    const double pitch = 3.0 * r;
+    const double wx = 0.5 * per_layer * pitch + 2 * r, wy = hl + r + 0.3 * p.log_length;
+    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
+    b.push_back(makePlane("wall_xm", Vec3::UnitX(), Vec3(-wx, 0, 0)));
+    b.push_back(makePlane("wall_xp", -Vec3::UnitX(), Vec3(wx, 0, 0)));
+    b.push_back(makePlane("wall_ym", Vec3::UnitY(), Vec3(0, -wy, 0)));
+    b.push_back(makePlane("wall_yp", -Vec3::UnitY(), Vec3(0, wy, 0)));
+    std::mt19937 rng(p.seed);
+    std::uniform_real_distribution<double> jitter(-1.0, 1.0);
+    Shape s;
+    s.type = ShapeType::Capsule;
+    s.radius = r;
+    s.half_length = hl;
+    for (int i = 0; i < p.n_logs; ++i) {
+      const int layer = i / per_layer, j = i % per_layer;
+      const double x = (j - 0.5 * (per_layer - 1)) * pitch + 0.3 * r * jitter(rng);
+      const double z = r + 0.5 * r + layer * 3.0 * r;
+      const double yaw = 0.15 * jitter(rng), pitch_ang = 0.1 * jitter(rng);
+      const Quat q = Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ())) *
+                     Quat(Eigen::AngleAxisd(pitch_ang, Vec3::UnitY())) *
+                     Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())); // axis along y
+      b.push_back(makeBody("log" + std::to_string(i), s, p.density, 0.0, Vec3(x, 0.1 * r * jitter(rng), z), q,
+                           false));
+    }
+  } else if (p.scene == "file") {
+    require(!p.file.empty(), "-scene file needs -scene_file PATH");
+    b = readSceneFile(p.file);
+  } else {
+    std::string list;
+    for (const auto& s : sceneNames()) list += (list.empty() ? "" : ", ") + s;
+    throw SceneError("-scene " + p.scene + ": unknown scene (" + list + ")");
+  }
+  return b;
+}
+
+namespace {
+Vec3 parseVec(const std::string& where, const std::string& key, const std::string& v, int n, double* extra) {
+  std::vector<double> x;
+  std::stringstream ss(v);
+  std::string tok;
+  while (std::getline(ss, tok, ',')) {
+    char* end = nullptr;
+    const double d = std::strtod(tok.c_str(), &end);
+    require(end && *end == '\0' && !tok.empty() && std::isfinite(d),
+            where + ": bad number '" + tok + "' in " + key);
+    x.push_back(d);
+  }
+  require((int)x.size() == n,
+          where + ": " + key + " needs " + std::to_string(n) + " comma-separated numbers");
+  if (extra && n == 4) *extra = x[3];
+  return Vec3(x[0], x[1], x[2]);
+}
+} // namespace
+
+std::vector<Body> readSceneFile(const std::string& path) {
+  std::ifstream in(path);
+  require((bool)in, "scene file " + path + ": cannot open");
+  std::vector<Body> bodies;
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::stringstream ss(line);
+    std::string type;
+    if (!(ss >> type)) continue;
+    const std::string where = path + ":" + std::to_string(lineno);
+    ShapeType t;
+    try {
+      t = shapeFromName(type);
+    } catch (const SceneError& e) {
+      throw SceneError(where + ": " + e.what());
+    }
+    Shape s;
+    s.type = t;
+    std::string name = type + std::to_string(bodies.size());
+    Vec3 pos = Vec3::Zero(), normal = Vec3::UnitZ(), vel = Vec3::Zero(), omega = Vec3::Zero();
+    Quat q = Quat::Identity();
+    double density = 1000.0, mass = 0.0;
+    bool is_static = t == ShapeType::Plane;
+    std::string tok;
+    while (ss >> tok) {
+      if (tok == "static") {
+        is_static = true;
+        continue;
+      }
+      const auto eq = tok.find('=');
+      require(eq != std::string::npos, where + ": expected key=value, got '" + tok + "'");
+      const std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
+      double deg = 0.0;
+      auto scalar = [&]() {
+        char* end = nullptr;
+        const double d = std::strtod(v.c_str(), &end);
+        require(end && *end == '\0' && !v.empty() && std::isfinite(d),
+                where + ": bad number '" + v + "' for " + k);
+        return d;
+      };
+      if (k == "name")
+        name = v;
+      else if (k == "pos" || k == "point")
+        pos = parseVec(where, k, v, 3, nullptr);
+      else if (k == "normal")
+        normal = parseVec(where, k, v, 3, nullptr);
+      else if (k == "vel")
+        vel = parseVec(where, k, v, 3, nullptr);
+      else if (k == "omega")
+        omega = parseVec(where, k, v, 3, nullptr);
+      else if (k == "half")
+        s.half = parseVec(where, k, v, 3, nullptr);
+      else if (k == "axis_angle") {
+        const Vec3 ax = parseVec(where, k, v, 4, &deg);
+        require(ax.norm() > 0, where + ": axis_angle needs a non-zero axis");
+        q = Quat(Eigen::AngleAxisd(deg * kDeg, ax.normalized()));
+      } else if (k == "radius")
+        s.radius = scalar();
+      else if (k == "half_length")
+        s.half_length = scalar();
+      else if (k == "density")
+        density = scalar();
+      else if (k == "mass") {
+        mass = scalar();
+        require(mass > 0, where + ": body '" + name + "': mass " + v + ": must be > 0 and finite");
+      } else
+        throw SceneError(where + ": unknown key '" + k + "'");
+    }
+    try {
+      if (t == ShapeType::Plane) {
+        require(normal.norm() > 0, "plane normal must be non-zero");
+        bodies.push_back(makePlane(name, normal, pos));
+      } else {
+        bodies.push_back(makeBody(name, s, density, mass, pos, q, is_static));
+        bodies.back().v = vel;
+        bodies.back().w = omega;
+      }
+    } catch (const SceneError& e) {
+      throw SceneError(where + ": " + e.what());
+    }
+  }
+  require(!bodies.empty(), "scene file " + path + ": no bodies");
+  return bodies;
+}
+
+void validateScene(const std::vector<Body>& bodies, double tol) {
+  for (auto& [i, j] : broadPhase(bodies, 0.0, true)) {
+    if (!bodies[i].is_static || !bodies[j].is_static) continue;
+    std::vector<Contact> cs;
+    collide(bodies, i, j, 0.0, &cs);
+    for (const Contact& c : cs)
+      require(c.phi >= -tol, "static bodies '" + bodies[i].name + "' and '" + bodies[j].name +
+                                 "' overlap by " + num(-c.phi) + " (tolerance " + num(tol) + ")");
+  }
+}
+
+} // namespace suite::contact

@@ -1,0 +1,47 @@
+// Scenes of the contact app: incline (box on a plane of angle theta), drop (one body dropped on a plane),
+// box_stack, pyramid, log_heap (capsule logs dropped between walls), and a scene file format for arbitrary
+// bodies. Every scene is built identically on every rank (replicated, deterministic, seeded).
+//
+// Scene file (one body per line, '#' starts a comment, key=value tokens, vectors comma-separated):
+//   plane    name=ground normal=0,0,1 point=0,0,0
+//   box      name=b half=0.5,0.5,0.5 pos=0,0,0.5 [axis_angle=ax,ay,az,deg] [density=1000 | mass=2]
+//            [vel=vx,vy,vz] [omega=wx,wy,wz] [static]
+//   sphere   radius=R ...;  capsule / cylinder  radius=R half_length=H ... (axis = local z)
+#pragma once
+
+#include "contact/body.hpp"
+
+#include <string>
+#include <vector>
+
+namespace suite::contact {
+
+struct SceneParams {
+  std::string scene = "incline";
+  double theta_deg = 20.0; // incline angle
+  double size = 1.0;       // box edge / sphere diameter / log length scale
+  double density = 1000.0;
+  double mass = 0.0;     // > 0 overrides density for the main bodies of incline / drop
+  double v0 = 0.0;       // initial speed (incline: downhill; drop: along x)
+  double height = 1.0;   // drop: initial gap between body and plane
+  double tilt_deg = 0.0; // drop: initial rotation about x
+  double spin = 0.0;     // drop: initial angular velocity about y (rad/s)
+  std::string drop_body = "sphere";
+  int stack_height = 5;
+  int pyramid_base = 4;
+  int n_logs = 40;
+  double log_radius = 0.1, log_length = 1.0;
+  unsigned seed = 1;
+  std::string file; // scene file for scene "file"
+};
+
+std::vector<std::string> sceneNames();
+// Throws SceneError with a one-line message for bad parameters or an unknown scene.
+std::vector<Body> buildScene(const SceneParams& p);
+std::vector<Body> readSceneFile(const std::string& path);
+// Throws SceneError if two static bodies (other than planes) overlap by more than tol.
+void validateScene(const std::vector<Body>& bodies, double tol);
+// A static plane with world normal n through point.
+Body makePlane(const std::string& name, const Vec3& n, const Vec3& point);
+
+} // namespace suite::contact

@@ -1,0 +1,128 @@
+// Velocity-level time stepping of rigid bodies with unilateral contacts and dry friction, one LCP / box LCP
+// per step solved by lib/lcp: Stewart & Trinkle 1996, Anitescu & Potra 1997, in the box-MLCP and
+// operator-splitting forms of Lacoursiere, "Splitting methods for dry frictional contact problems in rigid
+// multibody systems" (SIGRAD 2003), with Baumgarte stabilisation of the normal constraints.
+//
+// Per step (semi-implicit Euler): v* = v + dt g;  impulses lambda solve
+//   w = A lambda + b,  A = J M^-1 J^T (+ reg diag(A), a compliance as in SPOOK),  b = J v* + c,   c_n =
+//   phi/dt (phi >= 0, a gap closes in one step) or beta phi/dt (phi < 0, penetration), c_t = 0; normal rows:
+//   0 <= lambda_n _|_ w_n >= 0;  tangent rows: box bounds -mu nu <= lambda_t <= mu nu;
+// then v = v* + M^-1 J^T lambda, x += dt v, q <- exp(dt w / 2) q. Restitution is 0.
+// Friction models (estimate nu of the normal impulse used in the bounds):
+//   none        plain LCP of the normal rows only;
+//   box         nu = |g| dt m / (contacts of the body): fixed estimate from the weight;
+//   scaled_box  nu = the normal impulse of the same contact at the previous step (else the box estimate);
+//   splitting   repeat { solve with bounds mu nu; nu <- lambda_n } until max|delta lambda_n| <= tol (1 +
+//   |lambda|)
+//               or the cap, starting from nu = 0 (zero friction), +inf (infinite friction) or the previous
+//               step's normal impulses (paper, sec. 4);
+//   polyhedral  the linearised cone LCP (paper, Eq. 6; Stewart & Trinkle 1996) with d directions per contact:
+//               [lambda_n, beta, gamma], D^T v + e gamma >= 0 _|_ beta >= 0, mu lambda_n - e^T beta >= 0 _|_
+//               gamma >= 0, solved by Lemke.
+// Tangent rows with zero bound (mu = 0, or zero estimated normal force) are left out of the problem.
+#pragma once
+
+#include "contact/collision.hpp"
+#include "lcp/problem.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace suite::contact {
+
+enum class FrictionModel { None = 0, Box = 1, ScaledBox = 2, Splitting = 3, Polyhedral = 4 };
+const char* frictionName(FrictionModel m);
+std::vector<std::string> frictionNames();
+bool frictionFromName(const std::string& name, FrictionModel* m);
+
+enum class SplitStart { Zero = 0, Infinite = 1, Previous = 2 };
+const char* splitStartName(SplitStart s);
+bool splitStartFromName(const std::string& name, SplitStart* s);
+
+struct StepperOptions {
+  double dt = 0.01;
+  Vec3 gravity = Vec3(0, 0, -9.81);
+  double mu = 0.5;
+  FrictionModel friction = FrictionModel::Splitting;
+  // bpp: no failure on the incline/rest/drop problems at any splitting start (lemke, keller, murty,
+  // fb_newton, cottle_dantzig, pgs_block failed on some), and the fewest iterations.
+  std::string lcp_solver = "bpp";
+  std::vector<std::string> fallback_solvers = {"lemke", "smoothed_newton"};
+  // Acceptance: natural-map residual <= lcp_tol (1 + |b|_inf) (m/s): 1e-8 is far below what the time
+  // step resolves, and heap problems often end at 1e-10..1e-9 where the library's default 1e-10 rejects them.
+  double lcp_tol = 1e-8;
+  int lcp_max_iterations = 0; // cap of the primary solver (0: its default); fallbacks use theirs
+  double baumgarte = 0.2;     // beta in (0, 1]
+  // Compliance added as reg * A_ii to the diagonal: normal rows (makes the load distribution over
+  // coplanar contacts unique; velocity error reg * A_nn lambda_n, corrected by Baumgarte) and tangent rows.
+  double regularisation = 1e-6;
+  double regularisation_t = 1e-8;
+  double margin = 1e-3; // contacts are generated for phi < margin
+  SplitStart split_start = SplitStart::Previous;
+  int splitting_max_it = 50;
+  double splitting_tol = 1e-8; // relative; the load distribution is resolved to ~1e-9
+  int polyhedral_directions = 8;
+  bool warm_start = true;
+  // Sleeping (off by default): a dynamic body whose |v| + |w| r stays below sleep_velocity for sleep_steps
+  // steps sleeps: it is not integrated and acts as a static body in the contacts of awake bodies; contacts
+  // between sleeping (or sleeping and static) bodies are not solved. It wakes when an awake dynamic body
+  // touches it.
+  bool sleep = false;
+  double sleep_velocity = 1e-3;
+  int sleep_steps = 20;
+};
+
+// What one step did.
+struct StepStats {
+  int contacts = 0;
+  int rows = 0;                // size of the (last) problem solved
+  double force_ratio = 0.0;    // sum over body pairs |sum tangential impulse| / sum normal impulse
+  double cone_violation = 0.0; // sum_i max(0, |lambda_t,i| - mu lambda_n,i) / sum lambda_n
+  double normal_impulse = 0.0; // sum lambda_n
+  std::string solver;          // solver that produced the accepted answer (fallback name if it was needed)
+  int fallbacks = 0;           // failed attempts before the accepted one
+  int iterations = 0;          // solver iterations (summed over splitting passes)
+  long long pivots = 0;
+  double residual = 0.0; // natural-map residual (max over passes)
+  int splitting_iterations = 0;
+  double splitting_error = 0.0;     // last max|delta lambda_n|
+  std::vector<double> split_errors; // per pass: max|delta lambda_n| (pass 1: |lambda_n|_inf)
+  std::vector<double> split_ratios; // force ratio after each pass
+  int sleeping = 0;                 // bodies asleep during this step
+  bool failed = false;
+  std::string message; // failure: which solver, status, why
+};
+
+class Stepper {
+public:
+  explicit Stepper(StepperOptions o) : o_(std::move(o)) {}
+  const StepperOptions& options() const { return o_; }
+  // Advances the bodies by one step. On failure (every solver failed, or a non-finite state) the bodies
+  // are left unchanged and stats.failed is set; lastProblem() is the problem that failed.
+  StepStats step(std::vector<Body>* bodies);
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  // Impulses of the last step per contact: (normal, t1, t2).
+  const std::vector<Vec3>& impulses() const { return impulses_; }
+  // The problems of the last step: every one (one per splitting pass) with keepProblems(true), else the
+  // last one solved or attempted.
+  const std::vector<lcp::Problem>& lastProblems() const { return problems_; }
+  void keepProblems(bool on) { keep_problems_ = on; }
+
+private:
+  StepStats stepBodies(std::vector<Body>* bodies);
+  StepperOptions o_;
+  std::vector<int> still_;
+  std::vector<char> asleep_;
+  std::vector<Contact> contacts_;
+  std::vector<Vec3> impulses_;
+  std::vector<Contact> prev_contacts_;
+  std::vector<Vec3> prev_impulses_;
+  std::vector<lcp::Problem> problems_;
+  bool keep_problems_ = false;
+};
+
+// Total mechanical energy sum(0.5 m v^2 + 0.5 w^T I w - m g.x) of the dynamic bodies.
+double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity);
+
+} // namespace suite::contact

@@ -1,0 +1,127 @@
+"""Checks of the contact app on its HDF5 output (run by ctest: test_contact_app.py <contact executable>).
+
+- incline above the friction angle: acceleration g(sin th - mu cos th) within 1 %, force ratio = mu;
+  below: the box sticks (|v| <= 1e-8) and the force ratio is tan th;
+- splitting from zero and from infinite friction reproduces min(tan th, mu) to 1e-6 (pass counts printed);
+- a failing solver is replaced by the fallback and the run records it;
+- results identical at 1 and 2 ranks; every sample scene runs without NaN; no energy gain in a drop.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+APP = sys.argv[1]
+G = 9.81
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+TMP = Path(tempfile.mkdtemp(prefix="contact_test_"))
+failures = []
+
+
+def run(name, *args, np_=1):
+    out = TMP / f"{name}.h5"
+    cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), APP, *map(str, args), "-output", str(out), "-quiet"]
+    p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if p.returncode != 0:
+        raise SystemExit(f"FAILED: {' '.join(cmd)}\n{p.stdout}")
+    return h5py.File(out, "r")
+
+
+def check(cond, what):
+    print(("ok    " if cond else "FAIL  ") + what)
+    if not cond:
+        failures.append(what)
+
+
+def downhill(theta):
+    th = np.radians(theta)
+    return np.array([-np.cos(th), 0.0, -np.sin(th)])
+
+
+# incline sliding: acceleration and force ratio
+for model in ("splitting", "scaled_box", "polyhedral"):
+    th, mu = 30.0, 0.3
+    with run(f"slide_{model}", "-scene", "incline", "-theta", th, "-mu", mu, "-friction", model, "-steps", 50,
+             "-output_every", 1) as f:
+        v = f["/frames/velocities"][:, 1, :3] @ downhill(th)
+        t = f["/frames/time"][:]
+        a = (v[-1] - v[1]) / (t[-1] - t[1])
+        exact = G * (np.sin(np.radians(th)) - mu * np.cos(np.radians(th)))
+        ratio = f["/steps/force_ratio"][1 if model == "scaled_box" else 0:]  # scaled_box: bounds from step 1's forces
+        check(abs(a / exact - 1) < 0.01, f"{model}: incline {th} deg mu {mu} slides with a = {a:.6f} (exact {exact:.6f})")
+        check(np.all(np.abs(ratio - mu) < 1e-6), f"{model}: sliding force ratio = mu (max dev {np.abs(ratio - mu).max():.2e})")
+
+# incline sticking
+with run("stick", "-scene", "incline", "-theta", 20, "-mu", 0.5, "-steps", 200) as f:
+    vend = np.linalg.norm(f["/frames/velocities"][-1, 1, :3])
+    ratio = f["/steps/force_ratio"][-1]
+    check(vend <= 1e-8, f"incline 20 deg mu 0.5 sticks: |v| = {vend:.2e}")
+    check(abs(ratio - np.tan(np.radians(20))) < 1e-6, f"sticking force ratio {ratio:.10f} = tan 20 deg")
+
+# splitting from both starts (the paper's Fig. 7): first step of a box at rest
+mu = 0.5
+for start in ("zero", "infinite"):
+    ok = 0
+    passes = []
+    thetas = [5, 10, 15, 20, 25, 30, 35, 40]
+    for th in thetas:
+        with run(f"split_{start}_{th}", "-scene", "incline", "-theta", th, "-mu", mu, "-splitting_start", start,
+                 "-steps", 1) as f:
+            exact = min(np.tan(np.radians(th)), mu)
+            r = f["/splitting/force_ratio"][:]
+            within = np.nonzero(np.abs(r - exact) > 1e-6)[0]
+            passes.append(int(within[-1]) + 2 if len(within) else 1)
+            ok += abs(f["/steps/force_ratio"][0] - exact) < 1e-6
+    check(ok == len(thetas), f"splitting from {start} friction: {ok}/{len(thetas)} angles reach min(tan th, mu) "
+          f"to 1e-6; passes needed {passes}")
+
+# fallback: pgs with one iteration fails, lemke takes over
+with run("fallback", "-scene", "incline", "-lcp_solver", "pgs", "-lcp_max_iterations", 1, "-steps", 5) as f:
+    names = f["/steps"].attrs["solver_names"]
+    names = names.decode() if isinstance(names, bytes) else str(names)
+    fb = f["/steps/fallbacks"][:]
+    check(fb[0] >= 1 and "lemke" in names.split(",") and np.all(np.isfinite(f["/frames/positions"][:])),
+          f"failing solver replaced by the fallback (solvers used: {names}; fallbacks per step {fb.tolist()})")
+
+# -dump_problems writes every problem in the LCP library's HDF5 format
+prefix = TMP / "dump"
+with run("dump", "-scene", "incline", "-steps", 2, "-dump_problems", prefix) as f:
+    passes = int(f["/steps/splitting_iterations"][:].sum())
+files = sorted(TMP.glob("dump_step*_pass*.h5"))
+ok = len(files) == passes
+for p in files:
+    with h5py.File(p, "r") as g:
+        n = g["/q"].shape[0]
+        ok &= g["/M"].shape == (n, n) and g["/l"].shape == (n,) and np.all(np.isfinite(g["/M"][...]))
+check(ok, f"-dump_problems wrote {len(files)} problem files (one per splitting pass: {passes})")
+
+# identical at 1 and 2 ranks
+a = run("stack_np1", "-scene", "box_stack", "-stack_height", 3, "-steps", 50)
+b = run("stack_np2", "-scene", "box_stack", "-stack_height", 3, "-steps", 50, np_=2)
+check(np.array_equal(a["/frames/positions"][:], b["/frames/positions"][:]), "box_stack identical at 1 and 2 ranks")
+drift = np.abs(a["/frames/positions"][-1] - a["/frames/positions"][0]).max()
+check(drift < 1e-6, f"box_stack of 3 stays at rest (drift {drift:.2e})")
+
+# sample scenes: finite, no energy gain in a frictional drop
+for name, args in {
+    "pyramid": ["-scene", "pyramid", "-pyramid_base", 3, "-steps", 100],
+    "log_heap": ["-scene", "log_heap", "-n_logs", 10, "-steps", 150],
+    "drop_box": ["-scene", "drop", "-drop_body", "box", "-tilt", 20, "-spin", 3, "-v0", 1, "-steps", 150],
+    "drop_cyl": ["-scene", "drop", "-drop_body", "cylinder", "-tilt", 60, "-steps", 150],
+}.items():
+    with run(name, *args) as f:
+        pos = f["/frames/positions"][:]
+        check(np.all(np.isfinite(pos)) and f.attrs["status"] in ("completed", b"completed"), f"{name}: runs, finite")
+        if name.startswith("drop"):
+            e = f["/steps/energy"][:]
+            inc = np.max(np.diff(e)) / abs(e[0])
+            check(inc <= 1e-8, f"{name}: energy never increases (largest relative step change {inc:.2e})")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("all contact app checks passed")
