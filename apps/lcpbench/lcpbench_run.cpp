@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -111,9 +112,10 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
   PetscInt n = 100, count = 500, max_it = 0, block_size = 3, chunk = 0, seed = 1;
   PetscReal cond = 1e4, qrange = 1e2, lower = -1e2, upper = 1e2, omega = 1.0, rel_tol = 1e-10;
   PetscBool strict = PETSC_FALSE, strict_set = PETSC_FALSE, refine = PETSC_TRUE;
+  PetscBool family_set = PETSC_FALSE;
   PetscOptionsBegin(comm, "", "lcpbench options", "");
   PetscCall(PetscOptionsString("-family", "Problem family: random_spd, random_box, pmatrix, psd, murty, file",
-                               "", family, family, sizeof family, nullptr));
+                               "", family, family, sizeof family, &family_set));
   PetscCall(PetscOptionsInt("-n", "Problem size (generated families)", "", n, &n, nullptr));
   PetscCall(PetscOptionsInt("-count", "Number of problems (generated families)", "", count, &count, nullptr));
   PetscCall(PetscOptionsInt("-seed", "Seed of the generators (problem k uses stream (seed, k))", "", seed,
@@ -151,6 +153,10 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
   PetscCall(ctx.checkUnusedOptions());
   if (ctx.helpRequested()) PetscFunctionReturn(0);
 
+  // -file alone means -family file; -file with a generated family would silently ignore the files.
+  if (files[0] && !family_set) std::snprintf(family, sizeof family, "file");
+  PetscCheck(!files[0] || std::string(family) == "file", comm, PETSC_ERR_ARG_INCOMP,
+             "-file is only read with -family file (given -family %s)", family);
   Batch b;
   b.family = family;
   const bool known_family = b.family == "file" || isFamily(b.family);
