@@ -2,14 +2,15 @@
 // LCP / box LCP per step (lib/contact on lib/lcp). After Lacoursiere, SIGRAD 2003 (box MLCPs, splitting).
 // The scene is replicated on every rank (identical deterministic computation); rank 0 writes the output.
 //
-// Sample runs (executed by tests/contact/CMakeLists.txt):
+// Sample runs (tests/sample_runs.py executes each line):
 //   contact -scene incline -theta 30 -mu 0.3 -friction splitting -steps 100 -output incline.h5
-//   contact -scene incline -theta 20 -mu 0.5 -friction splitting -splitting_start infinite -steps 5 -output
-//   s.h5 contact -scene box_stack -stack_height 4 -steps 200 -output stack.h5 contact -scene pyramid
-//   -pyramid_base 4 -steps 200 -output pyramid.h5 contact -scene log_heap -n_logs 20 -steps 200 -output
-//   heap.h5 contact -scene drop -drop_body box -tilt 20 -spin 3 -steps 200 -output drop.h5 contact -scene
-//   file -scene_file inputs/contact/two_spheres.scene -steps 100 -output file.h5 contact -options_file
-//   inputs/contact/default.yaml -output out/contact.h5
+//   contact -scene incline -theta 20 -mu 0.5 -friction splitting -splitting_start infinite -steps 5 -output s.h5
+//   contact -scene box_stack -stack_height 4 -steps 200 -output stack.h5
+//   contact -scene pyramid -pyramid_base 4 -steps 200 -output pyramid.h5
+//   contact -scene log_heap -n_logs 8 -steps 60 -regularisation 1e-4 -lcp_solver lemke -output heap.h5
+//   contact -scene drop -drop_body box -tilt 20 -spin 3 -steps 200 -output drop.h5
+//   contact -scene file -scene_file inputs/contact/two_spheres.scene -steps 100 -output file.h5
+//   contact -options_file inputs/contact/default.yaml -output out/contact.h5
 #include "contact_output.hpp"
 
 #include "contact/scenes.hpp"

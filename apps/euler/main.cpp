@@ -1,14 +1,14 @@
 // 1D Euler equations: ENO-Pade (default), CRWENO5, WENO5-Z or MUSCL2 in space, PETSc TS in time, MPI via
 // DMDA.
 //
-// Sample runs (tests execute these; see tests/euler/CMakeLists.txt):
+// Sample runs (tests/sample_runs.py executes each line):
 //   mpiexec -n 4 euler -problem sod -nx 400 -t_final 0.2 -scheme enopade6 -output out.h5 -error
 //   euler -problem shu_osher -nx 400 -output so.h5
 //   euler -problem density_wave -nx 80 -time rk4 -error
 //   euler -problem blast -nx 800 -scheme weno5 -output blast.h5
-//   euler -problem pulse -output pulse.h5            # 560 cells, 2000 steps, space-time density in
-//   /spacetime/rho euler -problem sod -time bdf2 -cfl 2 -error      # implicit (BDF2, Jacobian-free
-//   Newton-Krylov) euler -options_file inputs/euler/sod.yaml
+//   euler -problem pulse -output pulse.h5          # 560 cells, 2000 steps, space-time density in /spacetime/rho
+//   euler -problem sod -scheme muscl2 -time bdf2 -cfl 2 -error    # implicit (BDF2, JFNK)
+//   euler -options_file inputs/euler/sod.yaml
 #include "core/run_context.hpp"
 #include "euler_run.hpp"
 

@@ -3,12 +3,12 @@
 // Nilsson & Dieckmann, SIGRAD 2003). The computation is serial; at several ranks every rank runs it
 // identically and rank 0 writes.
 //
-// Sample runs (tests execute these; see tests/femdyn/CMakeLists.txt):
+// Sample runs (tests/sample_runs.py executes each line):
 //   femdyn -static -tip_load 1 -beam_cells 20,2,2 -order 2 -output cant.h5       # tip_deflection attribute
 //   femdyn -material stvk -beam_cells 20,3,3 -dt 0.01 -steps 50 -tip_load 1 -output dyn.h5
 //   femdyn -material linear -ordering rcm -solver skyline -gravity 0,-1,0 -steps 100 -output lin.h5
 //   femdyn -static -material stvk -tip_load 25 -load_steps 10 -output elastica.h5
-//   femdyn -options_file inputs/femdyn/default.yaml
+//   femdyn -options_file inputs/femdyn/default.yaml -output out/femdyn.h5
 #include "core/run_context.hpp"
 #include "femdyn_run.hpp"
 

@@ -2,13 +2,13 @@
 // dealt to ranks by dynamic load balancing, results (status, iterations, pivots, time, residual per solver
 // and problem, plus histograms) in one HDF5 file (Lacoursiere 2003, SIGRAD: iteration-count histograms).
 //
-// Sample runs (tests execute these; see tests/lcpbench/CMakeLists.txt):
-//   mpiexec -n 4 lcpbench -family random_box -n 100 -count 500 -cond 1e4 -qrange 1e2 -solvers
-//   lemke,keller,cottle_dantzig,murty,bpp,fb_newton,smoothed_newton,pgs -output batch.h5 lcpbench -family
-//   murty -n 16 -count 1 -solvers lemke -output murty.h5      # 2^16 - 1 Lemke pivots lcpbench -family file
-//   -file ../shared/data/lcp/lcp_deudeu.dat,../shared/data/lcp/relay_2x2.dat -output f.h5 lcpbench -family
-//   random_spd -n 50 -count 100 -solvers bpp,fb_newton -output spd.h5 lcpbench -options_file
-//   inputs/lcpbench/random_box.yaml
+// Sample runs (tests/sample_runs.py executes each line):
+//   mpiexec -n 4 lcpbench -family random_box -n 100 -count 500 -cond 1e4 -qrange 1e2
+//       -solvers lemke,keller,cottle_dantzig,murty,bpp,fb_newton,smoothed_newton,pgs -output batch.h5
+//   lcpbench -family murty -n 16 -count 1 -solvers lemke -output murty.h5     # 2^16 - 1 Lemke pivots
+//   lcpbench -file ../shared/data/lcp/lcp_deudeu.dat,../shared/data/lcp/relay_2x2.dat -output f.h5
+//   lcpbench -family random_spd -n 50 -count 100 -solvers bpp,fb_newton -output spd.h5
+//   lcpbench -options_file inputs/lcpbench/random_box.yaml
 #include "core/run_context.hpp"
 #include "lcpbench_run.hpp"
 

@@ -1,7 +1,7 @@
 // reorder: applies fill/bandwidth reducing orderings (natural, cm, rcm, amd, metis, auto) to a Matrix Market
 // matrix and reports bandwidth, profile (envelope), nnz(L), factor flops and ordering time.
 //
-// Sample runs (tests execute these; see tests/reorder/CMakeLists.txt):
+// Sample runs (tests/sample_runs.py executes each line):
 //   reorder -matrix ../shared/data/matrices/can_1072.mtx -ordering all -output can1072.h5
 //   reorder -matrix ../shared/data/matrices/bcsstk10.mtx -ordering rcm -output b10.h5
 #include "core/run_context.hpp"
