@@ -1,0 +1,186 @@
+// Options of the contact app (see contact_options.hpp).
+#include "contact_options.hpp"
+
+#include "lcp/solver.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace contact_app {
+
+static std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> v;
+  std::stringstream ss(s);
+  std::string tok;
+  while (std::getline(ss, tok, ','))
+    if (!tok.empty() && tok != "none") v.push_back(tok);
+  return v;
+}
+
+PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
+  PetscFunctionBeginUser;
+  SceneParams& s = o->scene;
+  StepperOptions& t = o->step;
+  char scene[64] = "incline", friction[64] = "splitting", solver[64] = "", start[64] = "previous",
+       fallback[256] = "", drop_body[64] = "sphere", file[PETSC_MAX_PATH_LEN] = "";
+  PetscCall(PetscStrncpy(solver, t.lcp_solver.c_str(), sizeof solver));
+  std::string fb;
+  for (auto& f : t.fallback_solvers) fb += (fb.empty() ? "" : ",") + f;
+  PetscCall(PetscStrncpy(fallback, fb.c_str(), sizeof fallback));
+  PetscReal g = 9.81;
+  PetscInt stack = s.stack_height, base = s.pyramid_base, nlogs = s.n_logs, seed = (PetscInt)s.seed,
+           dirs = t.polyhedral_directions, split_it = t.splitting_max_it, lcp_it = t.lcp_max_iterations;
+  PetscOptionsBegin(comm, nullptr, "Contact app options", nullptr);
+  PetscCall(PetscOptionsString("-scene", "incline, drop, box_stack, pyramid, log_heap, file", nullptr, scene,
+                               scene, sizeof scene, nullptr));
+  PetscCall(PetscOptionsString("-scene_file", "Scene file for -scene file (format: lib/contact/scenes.hpp)",
+                               nullptr, file, file, sizeof file, nullptr));
+  PetscCall(
+      PetscOptionsReal("-theta", "Incline angle (degrees)", nullptr, s.theta_deg, &s.theta_deg, nullptr));
+  PetscCall(PetscOptionsReal("-size", "Box edge / sphere diameter (m)", nullptr, s.size, &s.size, nullptr));
+  PetscCall(PetscOptionsReal("-density", "Density (kg/m^3)", nullptr, s.density, &s.density, nullptr));
+  PetscCall(PetscOptionsReal("-mass", "Mass of the incline/drop body (kg, 0: from density)", nullptr, s.mass,
+                             &s.mass, nullptr));
+  PetscCall(PetscOptionsReal("-v0", "Initial speed (incline: downhill, drop: along x)", nullptr, s.v0, &s.v0,
+                             nullptr));
+  PetscCall(PetscOptionsReal("-height", "Drop: initial gap (m)", nullptr, s.height, &s.height, nullptr));
+  PetscCall(PetscOptionsReal("-tilt", "Drop: initial rotation about x (degrees)", nullptr, s.tilt_deg,
+                             &s.tilt_deg, nullptr));
+  PetscCall(PetscOptionsReal("-spin", "Drop: initial angular velocity about y (rad/s)", nullptr, s.spin,
+                             &s.spin, nullptr));
+  PetscCall(PetscOptionsString("-drop_body", "Drop: sphere, box, capsule, cylinder", nullptr, drop_body,
+                               drop_body, sizeof drop_body, nullptr));
+  PetscCall(PetscOptionsInt("-stack_height", "box_stack: number of boxes", nullptr, stack, &stack, nullptr));
+  PetscCall(
+      PetscOptionsInt("-pyramid_base", "pyramid: boxes in the bottom row", nullptr, base, &base, nullptr));
+  PetscCall(PetscOptionsInt("-n_logs", "log_heap: number of logs", nullptr, nlogs, &nlogs, nullptr));
+  PetscCall(PetscOptionsReal("-log_radius", "log_heap: log radius (m)", nullptr, s.log_radius, &s.log_radius,
+                             nullptr));
+  PetscCall(PetscOptionsReal("-log_length", "log_heap: log length (m)", nullptr, s.log_length, &s.log_length,
+                             nullptr));
+  PetscCall(PetscOptionsInt("-seed", "log_heap: random seed", nullptr, seed, &seed, nullptr));
+  PetscCall(PetscOptionsString("-friction", "none, box, scaled_box, splitting, polyhedral", nullptr, friction,
+                               friction, sizeof friction, nullptr));
+  PetscCall(PetscOptionsReal("-mu", "Friction coefficient", nullptr, t.mu, &t.mu, nullptr));
+  PetscCall(PetscOptionsString("-lcp_solver", "LCP solver (lib/lcp registry)", nullptr, solver, solver,
+                               sizeof solver, nullptr));
+  PetscCall(PetscOptionsString("-fallback_solvers", "Comma list tried when the solver fails ('none': stop)",
+                               nullptr, fallback, fallback, sizeof fallback, nullptr));
+  PetscCall(PetscOptionsReal("-lcp_tol", "Acceptance: natural-map residual <= tol (1 + |q|_inf)", nullptr,
+                             t.lcp_tol, &t.lcp_tol, nullptr));
+  PetscCall(PetscOptionsInt("-lcp_max_iterations", "Iteration cap of the primary LCP solver (0: its default)",
+                            nullptr, lcp_it, &lcp_it, nullptr));
+  PetscCall(PetscOptionsReal("-dt", "Time step (s)", nullptr, t.dt, &t.dt, nullptr));
+  PetscCall(PetscOptionsInt("-steps", "Number of steps", nullptr, o->steps, &o->steps, nullptr));
+  PetscCall(PetscOptionsReal("-gravity", "Gravity (m/s^2, along -z)", nullptr, g, &g, nullptr));
+  PetscCall(PetscOptionsReal("-baumgarte", "Baumgarte factor for penetration (0, 1]", nullptr, t.baumgarte,
+                             &t.baumgarte, nullptr));
+  PetscCall(PetscOptionsReal("-regularisation", "Relative compliance of the normal rows", nullptr,
+                             t.regularisation, &t.regularisation, nullptr));
+  PetscCall(PetscOptionsReal("-regularisation_t", "Relative compliance of the tangent rows", nullptr,
+                             t.regularisation_t, &t.regularisation_t, nullptr));
+  PetscCall(PetscOptionsReal("-margin", "Contact margin (m)", nullptr, t.margin, &t.margin, nullptr));
+  PetscCall(PetscOptionsString("-splitting_start", "zero, infinite, previous", nullptr, start, start,
+                               sizeof start, nullptr));
+  PetscCall(
+      PetscOptionsInt("-splitting_max_it", "Splitting: pass cap", nullptr, split_it, &split_it, nullptr));
+  PetscCall(PetscOptionsReal("-splitting_tol", "Splitting: relative tolerance on max|delta lambda_n|",
+                             nullptr, t.splitting_tol, &t.splitting_tol, nullptr));
+  PetscCall(PetscOptionsInt("-polyhedral_directions", "Polyhedral: friction directions per contact", nullptr,
+                            dirs, &dirs, nullptr));
+  PetscBool sleep = t.sleep ? PETSC_TRUE : PETSC_FALSE;
+  PetscInt sleep_steps = t.sleep_steps;
+  PetscCall(PetscOptionsBool("-sleep",
+                             "Put bodies at rest to sleep (not integrated, their contacts not solved)",
+                             nullptr, sleep, &sleep, nullptr));
+  PetscCall(PetscOptionsReal("-sleep_velocity",
+                             "Sleep: speed |v| + |w| r below which a body is at rest (m/s)", nullptr,
+                             t.sleep_velocity, &t.sleep_velocity, nullptr));
+  PetscCall(PetscOptionsInt("-sleep_steps", "Sleep: steps at rest before sleeping", nullptr, sleep_steps,
+                            &sleep_steps, nullptr));
+  t.sleep = sleep;
+  t.sleep_steps = (int)sleep_steps;
+  PetscCall(PetscOptionsReal("-overlap_tol", "Largest allowed overlap of static bodies (m)", nullptr,
+                             o->overlap_tol, &o->overlap_tol, nullptr));
+  PetscCall(PetscOptionsInt("-output_every", "Frame interval in steps", nullptr, o->output_every,
+                            &o->output_every, nullptr));
+  PetscCall(PetscOptionsString("-output", "HDF5 output file", nullptr, o->output, o->output, sizeof o->output,
+                               nullptr));
+  PetscCall(PetscOptionsString("-dump_problems", "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5",
+                               nullptr, o->dump, o->dump, sizeof o->dump, nullptr));
+  PetscCall(
+      PetscOptionsInt("-dump_max", "Most problems dumped", nullptr, o->dump_max, &o->dump_max, nullptr));
+  PetscOptionsEnd();
+  s.scene = scene;
+  s.file = file;
+  s.drop_body = drop_body;
+  s.stack_height = (int)stack;
+  s.pyramid_base = (int)base;
+  s.n_logs = (int)nlogs;
+  s.seed = (unsigned)seed;
+  t.gravity = Vec3(0, 0, -g);
+  t.lcp_solver = solver;
+  t.fallback_solvers = splitList(fallback);
+  t.lcp_max_iterations = (int)lcp_it;
+  t.polyhedral_directions = (int)dirs;
+  t.splitting_max_it = (int)split_it;
+  PetscCheck(frictionFromName(friction, &t.friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-friction %s: unknown friction model (none, box, scaled_box, splitting, polyhedral)", friction);
+  PetscCheck(splitStartFromName(start, &t.split_start), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-splitting_start %s: unknown (zero, infinite, previous)", start);
+  std::string names;
+  for (auto& n : suite::lcp::solverNames()) names += (names.empty() ? "" : ", ") + n;
+  for (const auto& n : std::vector<std::string>{t.lcp_solver}) {
+    PetscCheck(suite::lcp::makeSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-lcp_solver %s: unknown solver (%s)", n.c_str(), names.c_str());
+  }
+  for (const auto& n : t.fallback_solvers)
+    PetscCheck(suite::lcp::makeSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-fallback_solvers: unknown solver %s (%s)", n.c_str(), names.c_str());
+  PetscCheck(t.lcp_tol > 0 && t.lcp_tol < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-lcp_tol %g: must be in (0, 1)",
+             (double)t.lcp_tol);
+  PetscCheck(t.mu >= 0 && std::isfinite(t.mu), comm, PETSC_ERR_ARG_OUTOFRANGE, "-mu %g: must be >= 0",
+             (double)t.mu);
+  PetscCheck(t.dt > 0 && std::isfinite(t.dt), comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g: must be > 0",
+             (double)t.dt);
+  PetscCheck(o->steps >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-steps %d: must be >= 0", (int)o->steps);
+  PetscCheck(g >= 0 && std::isfinite(g), comm, PETSC_ERR_ARG_OUTOFRANGE, "-gravity %g: must be >= 0",
+             (double)g);
+  PetscCheck(t.baumgarte > 0 && t.baumgarte <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-baumgarte %g: must be in (0, 1]", (double)t.baumgarte);
+  PetscCheck(t.regularisation >= 0 && t.regularisation_t >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-regularisation %g / -regularisation_t %g: must be >= 0", (double)t.regularisation,
+             (double)t.regularisation_t);
+  PetscCheck(t.margin >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-margin %g: must be >= 0", (double)t.margin);
+  PetscCheck(t.splitting_max_it >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-splitting_max_it %d: must be >= 1",
+             t.splitting_max_it);
+  PetscCheck(t.splitting_tol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-splitting_tol %g: must be > 0",
+             (double)t.splitting_tol);
+  PetscCheck(t.polyhedral_directions >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-polyhedral_directions %d: must be >= 3", t.polyhedral_directions);
+  PetscCheck(o->output_every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %d: must be >= 1",
+             (int)o->output_every);
+  PetscCheck(t.sleep_velocity > 0 && t.sleep_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-sleep_velocity %g / -sleep_steps %d: must be > 0 / >= 1", (double)t.sleep_velocity,
+             t.sleep_steps);
+  PetscCheck(o->overlap_tol >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-overlap_tol %g: must be >= 0",
+             (double)o->overlap_tol);
+  PetscFunctionReturn(0);
+}
+
+std::string simplifications(const AppOptions& o, const std::vector<Body>& bodies) {
+  std::string s;
+  if (o.step.mu == 0 || o.step.friction == FrictionModel::None)
+    s += "no friction rows (plain LCP); ";
+  else if (o.step.friction != FrictionModel::Polyhedral)
+    s += "box friction (per-direction bounds, not a cone); ";
+  bool cyl = false;
+  for (const Body& b : bodies) cyl = cyl || b.shape.type == ShapeType::Cylinder;
+  if (cyl) s += "cylinders act as capsules except against planes; ";
+  s += "zero-bound tangent rows left out; ";
+  s += o.step.sleep ? "sleeping on (bodies at rest are frozen, contacts among them not solved)"
+                    : "sleeping off (every contact is solved each step)";
+  return s;
+}
+
+} // namespace contact_app
