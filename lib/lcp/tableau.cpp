@@ -1,6 +1,8 @@
 // Dictionary pivoting for complementary pivoting methods; see tableau.hpp.
 #include "lcp/tableau.hpp"
 
+#include <algorithm>
+
 namespace suite::lcp {
 
 Tableau::Tableau(const Mat& M, const Vec& q, const Vec* d) : n(static_cast<int>(q.size())) {
@@ -48,6 +50,15 @@ void Tableau::pivot(int r, int c) {
   col_of[xc] = -1;
   row_of[yr] = -1;
   col_of[yr] = c;
+}
+
+Vec Tableau::zValues() const {
+  Vec z = Vec::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    const int rr = row_of[n + i];
+    if (rr >= 0) z[i] = std::max(0.0, b[rr]);
+  }
+  return z;
 }
 
 } // namespace suite::lcp

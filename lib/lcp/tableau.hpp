@@ -27,6 +27,9 @@ struct Tableau {
     if (c < 0) return row_of[k] == r ? 1.0 : 0.0;
     return -A(r, c);
   }
+  // z of the current basic solution: basic z_i take their row value (clipped at 0 against round-off),
+  // nonbasic z_i are 0.
+  Vec zValues() const;
   static int complement(int id, int n) { return id < n ? id + n : (id < 2 * n ? id - n : -1); }
 };
 

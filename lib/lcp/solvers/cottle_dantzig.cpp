@@ -85,11 +85,7 @@ CdOut cottleDantzig(const Mat& M, const Vec& q, long long cap) {
     }
     if (!major_done) break;
   }
-  out.z = Vec::Zero(n);
-  for (int i = 0; i < n; ++i) {
-    const int rr = T.row_of[n + i];
-    out.z[i] = rr >= 0 ? std::max(0.0, T.b[rr]) : 0.0;
-  }
+  out.z = T.zValues();
   return out;
 }
 

@@ -96,10 +96,7 @@ Core lemkeCore(const Mat& M, const Vec& q, long long max_pivots) {
     }
     entering = Tableau::complement(leaving, n);
   }
-  for (int i = 0; i < n; ++i) {
-    const int rr = T.row_of[n + i];
-    out.z[i] = rr >= 0 ? std::max(0.0, T.b[rr]) : 0.0;
-  }
+  out.z = T.zValues();
   return out;
 }
 
