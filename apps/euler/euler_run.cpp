@@ -15,6 +15,7 @@ using namespace suite::euler;
 
 namespace {
 const char* const kTimeSchemes = "ssprk3, rk4, beuler, cn, bdf2";
+const char* const kLineSolves[] = {"substructured", "gather"};
 
 PetscErrorCode registerSspRk3() {
   static bool done = false;
@@ -57,6 +58,7 @@ PetscErrorCode EulerRun::readOptions() {
   MPI_Comm comm = ctx_.comm();
   char buf[PETSC_MAX_PATH_LEN];
   PetscBool set;
+  PetscInt line_solve = 0;
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(buf, opt_.problem.c_str(), sizeof(buf)));
   PetscOptionsBegin(comm, "", "Euler 1D options", "");
@@ -117,6 +119,12 @@ PetscErrorCode EulerRun::readOptions() {
                              opt_.positivity, &opt_.positivity, nullptr));
   PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
                              opt_.shock_threshold, &opt_.shock_threshold, nullptr));
+  PetscCall(PetscOptionsEList("-line_solve",
+                              "Distributed compact line solve: substructured (O(N/P) per rank) or gather "
+                              "(whole line on every rank, for comparison)",
+                              "", kLineSolves, 2, kLineSolves[opt_.gather_lines ? 1 : 0], &line_solve,
+                              nullptr));
+  opt_.gather_lines = line_solve == 1;
   PetscCall(PetscOptionsString("-output", "HDF5 output file", "", buf, buf, sizeof(buf), &set));
   if (set) opt_.output = buf;
   PetscCall(PetscOptionsInt("-snapshot_every", "Write a snapshot every N steps (0: none)", "",
@@ -182,6 +190,7 @@ PetscErrorCode EulerRun::setup() {
   lo.local_lf = opt_.local_lf;
   lo.shock_threshold = opt_.shock_threshold;
   lo.positivity = opt_.positivity;
+  lo.gather_lines = opt_.gather_lines;
   op_ = std::make_unique<LineOperator>(scheme_, lo);
   q_.resize(xm_ + 2 * LineOperator::kGhost);
   h_.resize(xm_ + 1);
@@ -460,9 +469,9 @@ PetscErrorCode EulerRun::solve() {
   PetscCall(suite::logInfo(
       ctx_.comm(), ctx_.quiet(),
       "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank); "
-      "shock rows %lld, limited faces %lld, LU fallbacks %lld",
+      "shock rows %lld, limited faces %lld, line solves %lld (exact fallbacks %lld)",
       steps_, t, wall_solve_, cells / wall_solve_, cells / wall_solve_ / ctx_.size(), op_->stats().shock_rows,
-      op_->stats().limited_faces, op_->solver().stats().lu_fallbacks));
+      op_->stats().limited_faces, op_->lineSolves(), op_->lineFallbacks()));
   if (opt_.error) PetscCall(computeErrors());
   PetscFunctionReturn(0);
 }

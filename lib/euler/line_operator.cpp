@@ -184,13 +184,20 @@ void LineOperator::interfaceFluxes(MPI_Comm comm, const Vec3* q, long long nx, l
           abc_[3 * k + 2] = C_[0][9 * k];
           for (int c = 0; c < 3; ++c) rhs_[3 * k + c] = d_[0][3 * k + c] + d_[1][3 * k + c];
         }
-        solver_.solveScalar(comm, nown, abc_.data(), 3, rhs_.data(), periodic, xs, nface, x_.data());
+        if (opt_.gather_lines)
+          gather_.solveScalar(comm, nown, abc_.data(), 3, rhs_.data(), periodic, xs, nface, x_.data());
+        else
+          sub_.solveScalar(comm, nown, abc_.data(), 3, rhs_.data(), periodic, xs, nface, x_.data());
         for (int k = 0; k < nface; ++k) h[k] = {x_[3 * k], x_[3 * k + 1], x_[3 * k + 2]};
       } else {
         for (int k = 0; k < nface; ++k) h[k] = {0.0, 0.0, 0.0};
         for (int s = 0; s < 2; ++s) {
-          solver_.solve(comm, 3, nown, A_[s].data(), B_[s].data(), C_[s].data(), d_[s].data(), periodic, xs,
-                        nface, x_.data());
+          if (opt_.gather_lines)
+            gather_.solve(comm, 3, nown, A_[s].data(), B_[s].data(), C_[s].data(), d_[s].data(), periodic, xs,
+                          nface, x_.data());
+          else
+            sub_.solve(comm, 3, nown, A_[s].data(), B_[s].data(), C_[s].data(), d_[s].data(), periodic, xs,
+                       nface, x_.data());
           for (int k = 0; k < nface; ++k)
             for (int c = 0; c < 3; ++c) h[k][c] += x_[3 * k + c];
         }

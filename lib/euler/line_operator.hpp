@@ -5,7 +5,7 @@
 // neighbours, which must be split with the same alpha, otherwise the alpha U parts of f+ and f- no longer
 // cancel and the scheme is inconsistent — measured: Sod N = 200 L1(rho) 5.5e-3 with per-row alpha vs 2.4e-3
 // with the global one), characteristic-wise (Roe-averaged eigenvectors at x_{j+1/2}) or component-wise rows
-// from the scheme registry, an exact distributed tridiagonal solve for compact schemes, and the Hu-Adams-Shu
+// from the scheme registry, an exact distributed (substructured) tridiagonal solve for compact schemes, and the Hu-Adams-Shu
 // positivity limiter. Reference: Shu, ICASE report 97-65 (1997), sec. 2.3 and 4.2 (flux splitting,
 // characteristic decomposition); Ghosh & Baeder (2012) sec. 2.3 (characteristic compact rows as a
 // block-tridiagonal system: row j+1/2 of field k is multiplied by the left eigenvector l_k(j+1/2), then by
@@ -14,6 +14,7 @@
 
 #include "euler/gas.hpp"
 #include "euler/schemes.hpp"
+#include "linalg/substructured_block_line.hpp"
 #include "linalg/tridiag_distributed.hpp"
 
 #include <mpi.h>
@@ -28,6 +29,7 @@ struct LineOptions {
   bool local_lf = true;       // false: global Lax-Friedrichs alpha
   double shock_threshold = 0.02;
   bool positivity = true;
+  bool gather_lines = false; // true: gather each line to every rank (DistributedTridiag), for comparison
 };
 
 struct LineStats {
@@ -52,13 +54,18 @@ public:
   const LineStats& stats() const { return stats_; }
   const LineOptions& options() const { return opt_; }
   const SchemeInfo& scheme() const { return *scheme_; }
-  const linalg::DistributedTridiag& solver() const { return solver_; }
+  // Substructured line solves, and how many of them fell back to the exact gathered solve.
+  long long lineSolves() const { return opt_.gather_lines ? gather_.stats().solves : sub_.stats().solves; }
+  long long lineFallbacks() const {
+    return opt_.gather_lines ? gather_.stats().lu_fallbacks : sub_.stats().fallbacks;
+  }
 
 private:
   const SchemeInfo* scheme_;
   LineOptions opt_;
   LineStats stats_;
-  linalg::DistributedTridiag solver_;
+  linalg::SubstructuredBlockLine sub_; // default: O(N/P) work, O(1) messages per solve
+  linalg::DistributedTridiag gather_;  // -line_solve gather
   // work arrays
   std::vector<Vec3> f_;
   std::vector<double> speed_, rho_, p_, alpha_;

@@ -87,6 +87,12 @@ def ranks():
             m = re.search(r"reference max relative difference (\S+)", out)
             v = float(m.group(1))
             check(v <= 1e-12, f"{problem}/{scheme}: 1 vs 2 ranks max relative difference {v:.3e} <= 1e-12")
+        # 3 ranks, and the substructured solve against the gathered one at 2 ranks.
+        for np_, extra in [(3, []), (2, ["-line_solve", "gather"])]:
+            out = run(["-problem", "sod", "-nx", 120, "-max_steps", 60, "-reference", os.path.join(d, "sod1.h5"),
+                       "-error", "-quiet"] + extra, np=np_)
+            v = float(re.search(r"reference max relative difference (\S+)", out).group(1))
+            check(v <= 1e-12, f"sod/enopade6 {np_} ranks {' '.join(extra)}: max relative difference {v:.3e}")
 
 
 def positivity():

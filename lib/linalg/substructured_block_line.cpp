@@ -1,0 +1,267 @@
+// Substructured (partition-method) solve of one distributed block-tridiagonal line; see the header.
+#include "linalg/substructured_block_line.hpp"
+
+#include "linalg/lapack.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace suite::linalg {
+namespace {
+
+// LU with partial pivoting of one bs x bs block; solve() applies its inverse to a bs x m row-major block.
+template <int BS> struct SmallLU {
+  double lu[BS * BS];
+  int piv[BS];
+
+  bool factor(const double* M) {
+    double scale = 0.0;
+    for (int e = 0; e < BS * BS; ++e) {
+      lu[e] = M[e];
+      scale = std::max(scale, std::fabs(M[e]));
+    }
+    for (int k = 0; k < BS; ++k) {
+      int p = k;
+      for (int i = k + 1; i < BS; ++i)
+        if (std::fabs(lu[i * BS + k]) > std::fabs(lu[p * BS + k])) p = i;
+      piv[k] = p;
+      if (!(std::fabs(lu[p * BS + k]) > 1e-14 * scale)) return false; // also catches NaN
+      if (p != k)
+        for (int j = 0; j < BS; ++j) std::swap(lu[k * BS + j], lu[p * BS + j]);
+      for (int i = k + 1; i < BS; ++i) {
+        const double l = lu[i * BS + k] /= lu[k * BS + k];
+        for (int j = k + 1; j < BS; ++j) lu[i * BS + j] -= l * lu[k * BS + j];
+      }
+    }
+    return true;
+  }
+  void solve(double* X, int m) const {
+    for (int k = 0; k < BS; ++k)
+      if (piv[k] != k)
+        for (int c = 0; c < m; ++c) std::swap(X[k * m + c], X[piv[k] * m + c]);
+    for (int i = 1; i < BS; ++i)
+      for (int k = 0; k < i; ++k)
+        for (int c = 0; c < m; ++c) X[i * m + c] -= lu[i * BS + k] * X[k * m + c];
+    for (int i = BS - 1; i >= 0; --i) {
+      for (int k = i + 1; k < BS; ++k)
+        for (int c = 0; c < m; ++c) X[i * m + c] -= lu[i * BS + k] * X[k * m + c];
+      for (int c = 0; c < m; ++c) X[i * m + c] /= lu[i * BS + i];
+    }
+  }
+};
+
+// Y (bs x m) -= M (bs x bs) * X (bs x m), row-major with row strides m.
+template <int BS> inline void subtractProduct(const double* M, const double* X, int m, double* Y) {
+  for (int a = 0; a < BS; ++a)
+    for (int b = 0; b < BS; ++b) {
+      const double v = M[a * BS + b];
+      for (int c = 0; c < m; ++c) Y[a * m + c] -= v * X[b * m + c];
+    }
+}
+
+// Thrown (identically on every rank) when the substructured solve must hand over to the exact fallback.
+struct NeedsFallback {};
+
+} // namespace
+
+// Block Thomas on this rank's rows with the m right-hand-side columns in R (overwritten by the solution).
+// A_0 and C_{n-1} (the couplings to the neighbours) are not used: they are the P and Q columns.
+template <int BS>
+bool SubstructuredBlockLine::eliminate(int n, const double* A, const double* B, const double* C, int m,
+                                       double* R) {
+  constexpr int bb = BS * BS;
+  G_.resize((size_t)n * bb);
+  const int rs = BS * m; // stride of one block row of R
+  for (int i = 0; i < n; ++i) {
+    double Bh[bb];
+    for (int e = 0; e < bb; ++e) Bh[e] = B[(size_t)i * bb + e];
+    double* Ri = R + (size_t)i * rs;
+    if (i > 0) {
+      subtractProduct<BS>(A + (size_t)i * bb, G_.data() + (size_t)(i - 1) * bb, BS, Bh);
+      subtractProduct<BS>(A + (size_t)i * bb, Ri - rs, m, Ri);
+    }
+    SmallLU<BS> lu;
+    if (!lu.factor(Bh)) return false;
+    lu.solve(Ri, m);
+    if (i + 1 < n) {
+      double* Gi = G_.data() + (size_t)i * bb;
+      for (int e = 0; e < bb; ++e) Gi[e] = C[(size_t)i * bb + e];
+      lu.solve(Gi, BS);
+    }
+  }
+  for (int i = n - 2; i >= 0; --i)
+    subtractProduct<BS>(G_.data() + (size_t)i * bb, R + (size_t)(i + 1) * rs, m, R + (size_t)i * rs);
+  return true;
+}
+
+// Reduced system for the first (F_r) and last (L_r) rows of every rank r, unknown blocks ordered
+// F_0, L_0, F_1, L_1, ...:  F_r - PF_r L_{r-1} - QF_r F_{r+1} = YF_r  and the same for L_r with PL, QL, YL.
+// On return *z holds the solution, column-major N x nrhs. Identical on every rank (same data, same LAPACK).
+template <int BS>
+void SubstructuredBlockLine::reducedSolve(int P, int nrhs, bool periodic, std::vector<double>* z) {
+  const int N = 2 * P * BS, E = 2 * BS * nrhs + 4 * BS * BS + 1;
+  const bool banded = !periodic && N > 1536;
+  const int kl = 3 * BS - 1, ku = 3 * BS - 1, ldab = 2 * kl + ku + 1;
+  red_.assign(banded ? (size_t)ldab * N : (size_t)N * N, 0.0);
+  auto at = [&](int row, int col) -> double& {
+    return banded ? red_[(size_t)(kl + ku + row - col) + (size_t)col * ldab] : red_[(size_t)col * N + row];
+  };
+  z->assign((size_t)N * nrhs, 0.0);
+  for (int r = 0; r < P; ++r) {
+    const double* e = all_ends_.data() + (size_t)r * E;
+    const double *yF = e, *yL = yF + BS * nrhs, *PF = yL + BS * nrhs, *PL = PF + BS * BS, *QF = PL + BS * BS,
+                 *QL = QF + BS * BS;
+    const int left = r > 0 ? r - 1 : (periodic ? P - 1 : -1);
+    const int right = r + 1 < P ? r + 1 : (periodic ? 0 : -1);
+    for (int side = 0; side < 2; ++side) {
+      const double *y = side ? yL : yF, *Pm = side ? PL : PF, *Qm = side ? QL : QF;
+      for (int a = 0; a < BS; ++a) {
+        const int row = (2 * r + side) * BS + a;
+        at(row, row) += 1.0;
+        for (int b = 0; b < BS; ++b) {
+          if (left >= 0) at(row, (2 * left + 1) * BS + b) -= Pm[a * BS + b];
+          if (right >= 0) at(row, 2 * right * BS + b) -= Qm[a * BS + b];
+        }
+        for (int k = 0; k < nrhs; ++k) (*z)[(size_t)k * N + row] = y[a * nrhs + k];
+      }
+    }
+  }
+  ipiv_.resize(N);
+  int info = 0;
+  if (banded)
+    dgbsv_(&N, &kl, &ku, &nrhs, red_.data(), &ldab, ipiv_.data(), z->data(), &N, &info);
+  else
+    dgesv_(&N, &nrhs, red_.data(), &N, ipiv_.data(), z->data(), &N, &info);
+  if (info != 0) z->assign(z->size(), NAN); // caught by the residual check: fallback
+}
+
+template <int BS>
+void SubstructuredBlockLine::solveImpl(MPI_Comm comm, int n, const double* A, const double* B,
+                                       const double* C, const double* d, int nrhs, bool periodic,
+                                       long long first, int count, double* x) {
+  constexpr int bb = BS * BS;
+  int rank = 0, P = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &P);
+  ++stats_.solves;
+  const bool hasL = rank > 0 || periodic, hasR = rank + 1 < P || periodic;
+  if (n < 2 || count < n || count > n + 1 || (count == n + 1 && !hasR))
+    throw std::invalid_argument("SubstructuredBlockLine: needs >= 2 rows per rank and count = nloc (+1)");
+  const int cP = nrhs, cQ = nrhs + (hasL ? BS : 0), m = cQ + (hasR ? BS : 0), rs = BS * m;
+  R_.assign((size_t)n * rs, 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < BS; ++a)
+      for (int k = 0; k < nrhs; ++k) R_[(size_t)i * rs + a * m + k] = d[((size_t)i * BS + a) * nrhs + k];
+  for (int a = 0; a < BS; ++a)
+    for (int b = 0; b < BS; ++b) {
+      if (hasL) R_[a * m + cP + b] = -A[a * BS + b];
+      if (hasR) R_[(size_t)(n - 1) * rs + a * m + cQ + b] = -C[(size_t)(n - 1) * bb + a * BS + b];
+    }
+  const bool ok = eliminate<BS>(n, A, B, C, m, R_.data());
+
+  // Ends: YF, YL (bs x nrhs), PF, PL, QF, QL (bs x bs), and the local success flag.
+  const int E = 2 * BS * nrhs + 4 * bb + 1;
+  ends_.assign(E, 0.0);
+  for (int side = 0; side < 2; ++side) {
+    const double* row = R_.data() + (size_t)(side ? n - 1 : 0) * rs;
+    for (int a = 0; a < BS; ++a) {
+      for (int k = 0; k < nrhs; ++k) ends_[side * BS * nrhs + a * nrhs + k] = row[a * m + k];
+      for (int b = 0; b < BS; ++b) {
+        if (hasL) ends_[2 * BS * nrhs + side * bb + a * BS + b] = row[a * m + cP + b];
+        if (hasR) ends_[2 * BS * nrhs + (2 + side) * bb + a * BS + b] = row[a * m + cQ + b];
+      }
+    }
+  }
+  ends_[E - 1] = ok ? 1.0 : 0.0;
+  all_ends_.resize((size_t)E * P);
+  MPI_Allgather(ends_.data(), E, MPI_DOUBLE, all_ends_.data(), E, MPI_DOUBLE, comm);
+  bool all_ok = true;
+  for (int r = 0; r < P; ++r) all_ok = all_ok && all_ends_[(size_t)r * E + E - 1] == 1.0;
+  if (!all_ok) { // same decision on every rank
+    ++stats_.fallbacks;
+    throw NeedsFallback{};
+  }
+  reducedSolve<BS>(P, nrhs, periodic, &zr_);
+  const int N = 2 * P * BS;
+  const int left = rank > 0 ? rank - 1 : P - 1, right = rank + 1 < P ? rank + 1 : 0;
+  double xl[BS * 8], xr[BS * 8]; // nrhs <= 8
+  for (int a = 0; a < BS; ++a)
+    for (int k = 0; k < nrhs; ++k) {
+      xl[a * nrhs + k] = hasL ? zr_[(size_t)k * N + (2 * left + 1) * BS + a] : 0.0;
+      xr[a * nrhs + k] = hasR ? zr_[(size_t)k * N + 2 * right * BS + a] : 0.0;
+    }
+  for (int i = 0; i < n; ++i) {
+    const double* Ri = R_.data() + (size_t)i * rs;
+    for (int a = 0; a < BS; ++a)
+      for (int k = 0; k < nrhs; ++k) {
+        double v = Ri[a * m + k];
+        for (int b = 0; b < BS; ++b) {
+          if (hasL) v += Ri[a * m + cP + b] * xl[b * nrhs + k];
+          if (hasR) v += Ri[a * m + cQ + b] * xr[b * nrhs + k];
+        }
+        x[((size_t)i * BS + a) * nrhs + k] = v;
+      }
+  }
+  if (count == n + 1)
+    for (int e = 0; e < BS * nrhs; ++e) x[(size_t)n * BS * nrhs + e] = xr[e];
+
+  // Residual of this rank's rows of the global system (x_{-1} = xl, x_n = xr).
+  double worst[2] = {0.0, 0.0}; // max |residual|, max |d|
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < BS; ++a)
+      for (int k = 0; k < nrhs; ++k) {
+        double r = -d[((size_t)i * BS + a) * nrhs + k];
+        worst[1] = std::max(worst[1], std::fabs(r));
+        for (int b = 0; b < BS; ++b) {
+          const double xm1 = i > 0 ? x[((size_t)(i - 1) * BS + b) * nrhs + k] : xl[b * nrhs + k];
+          const double xp1 = i + 1 < n ? x[((size_t)(i + 1) * BS + b) * nrhs + k] : xr[b * nrhs + k];
+          r += B[(size_t)i * bb + a * BS + b] * x[((size_t)i * BS + b) * nrhs + k];
+          if (i > 0 || hasL) r += A[(size_t)i * bb + a * BS + b] * xm1;
+          if (i + 1 < n || hasR) r += C[(size_t)i * bb + a * BS + b] * xp1;
+        }
+        worst[0] = std::max(worst[0], std::isfinite(r) ? std::fabs(r) : 1e300);
+      }
+  MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, comm);
+  (void)first;
+  if (!(worst[0] <= tolerance * std::max(worst[1], 1e-300))) {
+    ++stats_.fallbacks;
+    throw NeedsFallback{};
+  }
+}
+
+void SubstructuredBlockLine::solve(MPI_Comm comm, int bs, int nloc, const double* A, const double* B,
+                                   const double* C, const double* d, bool periodic, long long first,
+                                   int count, double* x) {
+  try {
+    if (bs == 3)
+      solveImpl<3>(comm, nloc, A, B, C, d, 1, periodic, first, count, x);
+    else if (bs == 1)
+      solveImpl<1>(comm, nloc, A, B, C, d, 1, periodic, first, count, x);
+    else
+      throw std::invalid_argument("SubstructuredBlockLine: block size must be 1 or 3");
+  } catch (const NeedsFallback&) { // collective decision: exact gather + pivoting band LU
+    fallback_.solve(comm, bs, nloc, A, B, C, d, periodic, first, count, x);
+  }
+}
+
+void SubstructuredBlockLine::solveScalar(MPI_Comm comm, int nloc, const double* abc, int ncomp,
+                                         const double* d, bool periodic, long long first, int count,
+                                         double* x) {
+  if (ncomp < 1 || ncomp > 8) throw std::invalid_argument("SubstructuredBlockLine: 1..8 right-hand sides");
+  sA_.resize(nloc);
+  sB_.resize(nloc);
+  sC_.resize(nloc);
+  for (int i = 0; i < nloc; ++i) {
+    sA_[i] = abc[3 * i];
+    sB_[i] = abc[3 * i + 1];
+    sC_[i] = abc[3 * i + 2];
+  }
+  try {
+    solveImpl<1>(comm, nloc, sA_.data(), sB_.data(), sC_.data(), d, ncomp, periodic, first, count, x);
+  } catch (const NeedsFallback&) {
+    fallback_.solveScalar(comm, nloc, abc, ncomp, d, periodic, first, count, x);
+  }
+}
+
+} // namespace suite::linalg
