@@ -95,6 +95,14 @@ def ranks():
             check(v <= 1e-12, f"sod/enopade6 {np_} ranks {' '.join(extra)}: max relative difference {v:.3e}")
 
 
+def implicit():
+    """Implicit BDF2 (JFNK) through Sod's shock with every scheme: Newton failures are retried at half dt."""
+    for scheme, nx, bound in [("muscl2", 200, 3.5e-3), ("weno5", 200, 4.0e-3), ("enopade6", 100, 7.0e-3)]:
+        out = run(["-problem", "sod", "-nx", nx, "-scheme", scheme, "-time", "bdf2", "-cfl", 1, "-error"])
+        e = error(out)
+        check(e <= bound, f"{scheme} BDF2 CFL 1 Sod N={nx}: L1(rho) {e:.3e} <= {bound}")
+
+
 def positivity():
     cases = [["-problem", "toro123", "-nx", 400], ["-problem", "blast", "-nx", 400],
              ["-problem", "riemann", "-rho_l", 1, "-p_l", 1, "-rho_r", 1e-3, "-p_r", 1e-10, "-nx", 400, "-t_final",
