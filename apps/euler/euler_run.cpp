@@ -140,6 +140,7 @@ PetscErrorCode EulerRun::readOptions() {
                                ref, ref, sizeof(ref), &set));
   if (set) opt_.reference = ref;
   PetscOptionsEnd();
+  PetscCall(ckpt_.setFromOptions(comm, "euler"));
 
   PetscCheck(
       parseBc(bcl, &problem_.bc_left), comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
@@ -431,8 +432,10 @@ PetscErrorCode EulerRun::postStep() {
     PetscCall(VecRestoreArrayRead(U, &a));
     spacetime_t_.push_back(t);
   }
-  bool stop = false;
+  bool stop = false, due = false;
   PetscCall(ctx_.stopRequested(&stop));
+  PetscCall(ckpt_.due(steps_, &due));
+  if ((due || stop) && ckpt_.enabled()) PetscCall(checkpointNow());
   if (stop) {
     PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: stopping at step %" PetscInt_FMT " (%s)",
                              steps_, ctx_.stopReason().c_str()));
@@ -443,7 +446,8 @@ PetscErrorCode EulerRun::postStep() {
 
 PetscErrorCode EulerRun::solve() {
   PetscFunctionBeginUser;
-  PetscCall(checkState(U_, 0, 0.0));
+  PetscCall(restartIfRequested());
+  PetscCall(checkState(U_, steps_, time_));
   if (opt_.spacetime_every > 0) {
     const PetscScalar* a;
     PetscCall(VecGetArrayRead(U_, &a));
@@ -463,6 +467,7 @@ PetscErrorCode EulerRun::solve() {
   PetscReal t;
   PetscCall(TSGetTime(ts_, &t));
   time_ = t;
+  if (ckpt_.enabled() && last_checkpoint_step_ != steps_) PetscCall(checkpointNow()); // final state
   Vec3 tot;
   PetscCall(totals(U_, &tot));
   const char* names[3] = {"mass", "momentum", "energy"};

@@ -5,6 +5,7 @@
 #include "core/run_context.hpp"
 #include "euler/line_operator.hpp"
 #include "euler/problem.hpp"
+#include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
 
 #include <petscdmda.h>
@@ -57,6 +58,11 @@ private:
   PetscErrorCode writeSnapshot(PetscInt step, double time);
   PetscErrorCode totals(Vec U, Vec3* sum) const;
   PetscErrorCode computeErrors();
+  // Checkpoint/restart (euler_checkpoint.cpp)
+  std::string checkpointTag() const;
+  PetscErrorCode checkpointIo(bool write, const std::string& path, PetscInt* step, double* time);
+  PetscErrorCode restartIfRequested();
+  PetscErrorCode checkpointNow();
 
   const suite::RunContext& ctx_;
   Options opt_;
@@ -76,6 +82,8 @@ private:
   std::vector<Snapshot> snapshots_;
   std::vector<double> spacetime_rho_, spacetime_t_;
   Vec3 totals0_{};
+  suite::CheckpointPolicy ckpt_;
+  PetscInt last_checkpoint_step_ = -1;
   struct ErrorSet {
     double l1[3], l2[3], linf[3];
   };

@@ -103,6 +103,71 @@ def implicit():
         check(e <= bound, f"{scheme} BDF2 CFL 1 Sod N={nx}: L1(rho) {e:.3e} <= {bound}")
 
 
+def restart():
+    """Checkpoint/restart (issue #8): a run stopped part-way (max_steps, SIGTERM) and restarted from its
+    latest checkpoint ends bitwise equal to an uninterrupted run at the same rank count and within 1e-12 at
+    another; a checkpoint of other numerics or a corrupted one is refused with one message."""
+    import signal
+    import time
+    base = ["-problem", "shu_osher", "-nx", 400, "-t_final", 0.5]
+    with tempfile.TemporaryDirectory() as d:
+        full = {n: os.path.join(d, f"full{n}.h5") for n in (1, 2)}
+        for n in (1, 2):
+            run(base + ["-output", full[n], "-quiet"], np=n)
+
+        def restart_diff(ck, np_):
+            out = run(base + ["-checkpoint_dir", ck, "-restart", "latest", "-reference", full[np_], "-error"],
+                      np=np_)
+            check("restarted from" in out, f"restart at {np_} rank(s) read a checkpoint")
+            return float(re.search(r"reference max relative difference (\S+)", out).group(1))
+
+        ck = os.path.join(d, "ck")
+        run(base + ["-checkpoint_dir", ck, "-checkpoint_every", 40, "-max_steps", 100, "-quiet"], np=2)
+        v = restart_diff(ck, 2)
+        check(v == 0.0, f"stopped at step 100 (2 ranks), restarted at 2 ranks: max relative difference {v:.3e} == 0")
+        run(base + ["-checkpoint_dir", ck, "-checkpoint_every", 40, "-max_steps", 100, "-quiet"], np=2)
+        v = restart_diff(ck, 1)
+        check(v <= 1e-12, f"stopped at 2 ranks, restarted at 1 rank: max relative difference {v:.3e} <= 1e-12")
+
+        # SIGTERM part-way: a final checkpoint at the step reached, then a bitwise restart.
+        ck2 = os.path.join(d, "ck2")
+        big = base + ["-nx", 4000, "-t_final", 0.2]
+        cmd = [os.path.join(BIN, "euler")] + [str(a) for a in big + ["-checkpoint_dir", ck2]]  # singleton MPI
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        time.sleep(1.5)
+        p.send_signal(signal.SIGTERM)
+        out, _ = p.communicate(timeout=120)
+        print(out)
+        m = re.search(r"stopping at step (\d+)", out)
+        check(p.returncode == 0 and m is not None, f"SIGTERM: clean stop (exit {p.returncode})")
+        check(os.path.exists(os.path.join(ck2, f"euler_{int(m.group(1)):010d}.h5")), "SIGTERM: final checkpoint")
+        ref = os.path.join(d, "big.h5")
+        run(big + ["-output", ref, "-quiet"])
+        out = run(big + ["-checkpoint_dir", ck2, "-restart", "latest", "-reference", ref, "-error"])
+        v = float(re.search(r"reference max relative difference (\S+)", out).group(1))
+        check(v == 0.0, f"SIGTERM at step {m.group(1)} + restart: max relative difference {v:.3e} == 0")
+
+        # Refusals: other numerics, a flipped byte.
+        latest = sorted(f for f in os.listdir(ck) if f.endswith(".h5"))[-1]
+        path = os.path.join(ck, latest)
+        for extra, pattern in [(["-scheme", "weno5"], "scheme"), (["-nx", 200], "grid")]:
+            p = subprocess.run([MPIEXEC, "--oversubscribe", "-n", "2", os.path.join(BIN, "euler")] +
+                               [str(a) for a in base + extra + ["-restart", path]],
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+            lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
+            check(p.returncode != 0 and len(lines) == 1 and pattern in lines[0],
+                  f"restart with {' '.join(map(str, extra))} refused once: {lines}")
+        data = bytearray(open(path, "rb").read())
+        data[len(data) // 2] ^= 0xFF
+        bad = os.path.join(d, "bad.h5")
+        open(bad, "wb").write(bytes(data))
+        p = subprocess.run([MPIEXEC, "--oversubscribe", "-n", "2", os.path.join(BIN, "euler")] +
+                           [str(a) for a in base + ["-restart", bad]],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+        lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
+        check(p.returncode != 0 and len(lines) == 1, f"corrupted checkpoint refused once: {lines}")
+
+
 def positivity():
     cases = [["-problem", "toro123", "-nx", 400], ["-problem", "blast", "-nx", 400],
              ["-problem", "riemann", "-rho_l", 1, "-p_l", 1, "-rho_r", 1e-3, "-p_r", 1e-10, "-nx", 400, "-t_final",
