@@ -3,10 +3,12 @@
 
 #include "core/field_check.hpp"
 #include "core/log.hpp"
+#include "core/resource_checks.hpp"
 #include "euler/gas.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 namespace euler_app {
@@ -157,6 +159,18 @@ PetscErrorCode EulerRun::readOptions() {
   problem_.xmax = xmax;
   PetscCheck(xmax > xmin, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid domain: -xmax %g must exceed -xmin %g",
              xmax, xmin);
+  // 3 unknowns per cell must fit the 32-bit PetscInt; PETSc itself wraps larger values silently.
+  PetscCall(suite::checkIntOptionRange(comm, "-nx", 1));
+  PetscCheck(opt_.nx <= PETSC_MAX_INT / 3, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -nx %" PetscInt_FMT ": 3 nx unknowns exceed the 32-bit PetscInt (at most %d cells)",
+             opt_.nx, (int)(PETSC_MAX_INT / 3));
+  PetscCall(suite::checkIntOptionRange(comm, "-max_steps", -1));
+  PetscCall(suite::checkIntOptionRange(comm, "-snapshot_every", 0));
+  // Measured peak memory: ~1.0 kB per cell explicit, ~1.6 kB implicit (GMRES(30) vectors), Sod N = 1e6.
+  char what[64];
+  std::snprintf(what, sizeof what, "-nx %lld", (long long)opt_.nx);
+  PetscCall(suite::checkMemoryEstimate(comm, (opt_.implicit ? 2000.0 : 1200.0) * opt_.nx / ctx_.size() + 5e7,
+                                       what));
   const PetscInt width = 2 * LineOperator::kGhost;
   PetscCheck(opt_.nx >= width, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -nx %" PetscInt_FMT ": below the stencil width %" PetscInt_FMT " of the schemes",

@@ -168,6 +168,22 @@ def restart():
         check(p.returncode != 0 and len(lines) == 1, f"corrupted checkpoint refused once: {lines}")
 
 
+def extreme():
+    """Extreme inputs that must complete with a verified answer (exact Riemann solutions)."""
+    cases = [
+        # Mach ~200 shock: the blast wave's states as one Riemann problem (pressure ratio 1e5).
+        ("Mach ~200 shock", ["-problem", "riemann", "-p_l", 1000, "-p_r", 0.01, "-rho_l", 1, "-rho_r", 1,
+                             "-t_final", 0.012, "-nx", 400], 3.5e-2),
+        ("near vacuum", ["-problem", "riemann", "-rho_l", 1, "-p_l", 1, "-rho_r", 1e-3, "-p_r", 1e-10,
+                         "-nx", 400, "-t_final", 0.15], 2.0e-3),
+        ("gamma 1 + 1e-7", ["-problem", "sod", "-gamma", 1.0000001, "-nx", 400], 2.5e-3),
+        ("smallest grid nx = 6", ["-problem", "sod", "-nx", 6], 6.0e-2),
+    ]
+    for name, args, bound in cases:
+        e = error(run(args + ["-error"]))
+        check(e <= bound, f"{name}: completed, L1(rho) against the exact solution {e:.3e} <= {bound}")
+
+
 def positivity():
     cases = [["-problem", "toro123", "-nx", 400], ["-problem", "blast", "-nx", 400],
              ["-problem", "riemann", "-rho_l", 1, "-p_l", 1, "-rho_r", 1e-3, "-p_r", 1e-10, "-nx", 400, "-t_final",
