@@ -19,7 +19,17 @@ namespace suite {
 
 H5Output::~H5Output() {
   if (file_ < 0) return;
-  closeFile();
+  // Error path (never committed): abandon the partial file quietly. Truncating it first frees the space a
+  // full disk needs for the closing metadata flush; a close that fails would leave HDF5 an open file that
+  // it then tries to close again inside MPI_Finalize, which crashed (HDF5 1.10, Open MPI).
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized) return;
+  if (rank_ == 0 && truncate(tmp_path_.c_str(), 0) != 0) { /* nothing more to do */
+  }
+  MPI_Barrier(comm_);
+  H5Fclose((hid_t)file_);
+  file_ = -1;
   if (rank_ == 0) std::remove(tmp_path_.c_str());
 }
 

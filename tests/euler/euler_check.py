@@ -61,7 +61,7 @@ def sod():
 def shu_osher():
     with tempfile.TemporaryDirectory() as d:
         ref = os.path.join(d, "ref.h5")
-        run(["-problem", "shu_osher", "-nx", 6400, "-scheme", "weno5", "-output", ref, "-quiet"])
+        run(["-problem", "shu_osher", "-nx", 6400, "-scheme", "weno5", "-output", ref, "-quiet"], np=2)
         out = run(["-problem", "shu_osher", "-nx", 400, "-reference", ref, "-error", "-quiet"])
         e = error(out)
         check(e <= 1.8e-2, f"Shu-Osher N=400 enopade6 vs N=6400 reference: L1(rho) = {e:.4e} <= 1.8e-2")
@@ -182,6 +182,35 @@ def extreme():
     for name, args, bound in cases:
         e = error(run(args + ["-error"]))
         check(e <= bound, f"{name}: completed, L1(rho) against the exact solution {e:.3e} <= {bound}")
+
+
+def disk_full():
+    """A disk that fills during the run (a 1.2 MB tmpfs; needs root, as CI is): one clear message, non-zero
+    exit on every rank, no crash, no partial file, and the previous good output left intact."""
+    with tempfile.TemporaryDirectory() as d:
+        mnt = os.path.join(d, "small")
+        os.mkdir(mnt)
+        m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1200k", "tmpfs", mnt], stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True)
+        check(m.returncode == 0, f"mounted a 1.2 MB tmpfs (needs root): {m.stdout.strip()}")
+        try:
+            out = os.path.join(mnt, "o.h5")
+            run(["-problem", "sod", "-nx", 200, "-output", out, "-quiet"])
+            good = open(out, "rb").read()
+            files = sorted(os.listdir(mnt))  # o.h5 and its XDMF sidecar
+            for np_ in (1, 2):
+                p = subprocess.run([MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler"), "-problem",
+                                    "sod", "-nx", "20000", "-snapshot_every", "5", "-max_steps", "40", "-output", out],
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120)
+                print(p.stdout)
+                errors = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
+                check(p.returncode != 0 and len(errors) == 1 and "disk full" in errors[0],
+                      f"{np_} rank(s): disk full mid-run reported once: {errors}")
+                check("Segmentation" not in p.stdout and "signal" not in p.stdout, f"{np_} rank(s): no crash")
+                check(sorted(os.listdir(mnt)) == files, f"{np_} rank(s): no partial file left: {os.listdir(mnt)}")
+                check(open(out, "rb").read() == good, f"{np_} rank(s): previous output intact")
+        finally:
+            subprocess.run(["umount", mnt])
 
 
 def positivity():
