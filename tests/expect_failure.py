@@ -37,7 +37,7 @@ def main():
         print(f"FAIL: /{a.expect}/ matched {len(hits)} lines, expected {a.count}")
         ok = False
     if ok:
-        print(f"OK: exit {p.returncode}, message found {len(hits)} time(s)")
+        print(f"OK: refused (exit {p.returncode}): {hits[0].strip() if hits else ''}")
     return 0 if ok else 1
 
 

@@ -32,7 +32,7 @@ def run(np_, *args, timeout=120, check=True):
 
 
 def expect(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
+    print(("OK: " if cond else "FAIL: ") + what)
     if not cond:
         FAILS.append(what)
 
