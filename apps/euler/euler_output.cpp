@@ -118,6 +118,7 @@ PetscErrorCode EulerRun::writeOutput() {
   PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "solve_seconds", wall_solve_));
+  PetscCall(out_.writeAttribute("/", "solve_cpu_seconds_rank0", cpu_solve_));
   Vec3 tot;
   PetscCall(totals(U_, &tot));
   const char* cn[3] = {"mass", "momentum", "energy"};

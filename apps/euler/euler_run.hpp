@@ -92,7 +92,7 @@ private:
   ErrorSet errors_{};
   double ref_diff_ = -1.0;
   PetscInt steps_ = 0;
-  double time_ = 0.0, wall_solve_ = 0.0;
+  double time_ = 0.0, wall_solve_ = 0.0, cpu_solve_ = 0.0;
 };
 
 PetscErrorCode runEuler(const suite::RunContext& ctx);
