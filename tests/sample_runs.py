@@ -59,17 +59,19 @@ def main(apps):
     for main_cpp in sorted(SRC.glob("apps/*/main.cpp")):
         if apps and main_cpp.parent.name not in apps:
             continue
-        for cmd in sample_commands(main_cpp):
-            argv = to_argv(cmd)
-            with tempfile.TemporaryDirectory() as d:
+        # One working directory per app, commands in order: a sample may use what an earlier one wrote
+        # (a checkpoint to restart from).
+        with tempfile.TemporaryDirectory() as d:
+            for cmd in sample_commands(main_cpp):
+                argv = to_argv(cmd)
                 t0 = time.time()
                 p = subprocess.run(argv, cwd=d, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-            ok = p.returncode == 0
-            passed += ok
-            failed += not ok
-            print(f"{'ok  ' if ok else 'FAIL'} {time.time() - t0:6.1f} s  {cmd}")
-            if not ok:
-                print(p.stdout[-3000:])
+                ok = p.returncode == 0
+                passed += ok
+                failed += not ok
+                print(f"{'ok  ' if ok else 'FAIL'} {time.time() - t0:6.1f} s  {cmd}")
+                if not ok:
+                    print(p.stdout[-3000:])
     print(f"{passed} passed, {failed} failed")
     return 1 if failed or not passed else 0
 

@@ -82,6 +82,9 @@ PetscErrorCode EulerRun::readOptions() {
                                "Time integrator: ssprk3, rk4, beuler, cn, bdf2 (then -ts_* refine it)", "",
                                buf, buf, sizeof(buf), nullptr));
   opt_.time = buf;
+  PetscCall(PetscOptionsInt("-scheme_spectrum",
+                            "Measure the scheme's modified wavenumber on N periodic points instead of a run",
+                            "", opt_.scheme_spectrum, &opt_.scheme_spectrum, nullptr));
   PetscOptionsEnd();
   PetscCall(createProblem(comm, opt_.problem, &problem_));
   scheme_ = findScheme(opt_.scheme);
@@ -539,6 +542,11 @@ PetscErrorCode runEuler(const suite::RunContext& ctx) {
   PetscCall(run.readOptions());
   if (ctx.helpRequested()) {
     PetscCall(ctx.checkUnusedOptions());
+    PetscFunctionReturn(0);
+  }
+  if (run.spectrumOnly()) {
+    PetscCall(ctx.checkUnusedOptions());
+    PetscCall(run.schemeSpectrum());
     PetscFunctionReturn(0);
   }
   PetscCall(run.setup());

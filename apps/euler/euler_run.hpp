@@ -22,7 +22,7 @@ using suite::euler::Vec3;
 
 struct Options {
   std::string problem = "sod", scheme = "enopade6", time = "ssprk3", output, reference;
-  PetscInt nx = 0, snapshot_every = 0, max_steps = -1, spacetime_every = 0;
+  PetscInt nx = 0, snapshot_every = 0, max_steps = -1, spacetime_every = 0, scheme_spectrum = 0;
   double t_final = 0.0, cfl = 0.4, dt = 0.0, shock_threshold = 0.02;
   bool gather_lines = false;
   PetscBool error = PETSC_FALSE, characteristic = PETSC_TRUE, local_lf = PETSC_TRUE, positivity = PETSC_TRUE;
@@ -42,6 +42,8 @@ public:
   PetscErrorCode setup();
   PetscErrorCode solve();
   PetscErrorCode writeOutput();
+  bool spectrumOnly() const { return opt_.scheme_spectrum != 0; }
+  PetscErrorCode schemeSpectrum(); // -scheme_spectrum N (euler_spectrum.cpp)
 
   // TS callbacks
   PetscErrorCode rhs(double t, Vec U, Vec F);
