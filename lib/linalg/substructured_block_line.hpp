@@ -48,7 +48,8 @@ private:
   void solveImpl(MPI_Comm comm, int nloc, const double* A, const double* B, const double* C, const double* d,
                  int nrhs, bool periodic, long long first, int count, double* x);
   template <int BS>
-  bool eliminate(int n, const double* A, const double* B, const double* C, int m, double* R);
+  bool eliminate(int n, const double* A, const double* B, const double* C, int nrhs, int mf, int m,
+                 double* R);
   template <int BS> void reducedSolve(int P, int nrhs, bool periodic, std::vector<double>* z);
 
   DistributedTridiag fallback_;
