@@ -7,6 +7,7 @@
 #include "core/version.hpp"
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 
@@ -74,6 +75,9 @@ PetscErrorCode writeCheckpoint(MPI_Comm comm, const std::string& path, const Che
     PetscCall(out.writeDistributed(ds, f.data, f.dims, f.start, f.count, ""));
     PetscCall(out.writeAttribute(ds, "checksum", std::to_string(sum)));
   }
+  // Fault injection for the reliability tests: a job killed in the middle of this checkpoint's write.
+  if (const char* s = std::getenv("SUITE_FAULT_ABORT_IN_CHECKPOINT"))
+    if (std::atoll(s) == h.step) std::abort();
   PetscCall(out.commit(nullptr));
   PetscFunctionReturn(0);
 }

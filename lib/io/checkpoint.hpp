@@ -25,6 +25,8 @@ struct CheckpointField {
   double* data; // read into / written from
 };
 
+// Fault injection for tests: with SUITE_FAULT_ABORT_IN_CHECKPOINT=STEP in the environment, the write of the
+// checkpoint of that step aborts the process after its data, before the rename (a job killed mid-write).
 PetscErrorCode writeCheckpoint(MPI_Comm comm, const std::string& path, const CheckpointHeader& header,
                                const std::vector<CheckpointField>& fields);
 // Reads the header into *found and checks it against expected (app, scheme, grid); then reads the fields

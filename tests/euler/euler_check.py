@@ -147,6 +147,23 @@ def restart():
         v = float(re.search(r"reference max relative difference (\S+)", out).group(1))
         check(v == 0.0, f"SIGTERM at step {m.group(1)} + restart: max relative difference {v:.3e} == 0")
 
+        # A job killed inside a checkpoint write (fault injection: abort after the data, before the rename,
+        # at step 3 of a run checkpointing every step): checkpoint 2 stays complete and loads, the partial
+        # .tmp of step 3 is never picked, and the restart ends bitwise equal to the uninterrupted run.
+        ck3 = os.path.join(d, "ck3")
+        env = dict(os.environ, SUITE_FAULT_ABORT_IN_CHECKPOINT="3")
+        p = subprocess.run([MPIEXEC, "--oversubscribe", "-n", "2", os.path.join(BIN, "euler")] + [str(a) for a in base + [
+            "-checkpoint_dir", ck3, "-checkpoint_every", 1, "-checkpoint_keep", 5, "-quiet"]], env=env,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120)
+        names = sorted(os.listdir(ck3))
+        check(p.returncode != 0 and "euler_0000000003.h5.tmp" in names and "euler_0000000002.h5" in names,
+              f"killed inside the write of checkpoint 3: exit {p.returncode}, files {names}")
+        out = run(base + ["-checkpoint_dir", ck3, "-restart", "latest", "-reference", full[2], "-error"], np=2)
+        check(f"restarted from {os.path.join(ck3, 'euler_0000000002.h5')} at step 2" in out,
+              "restart picked the last complete checkpoint (step 2), not the partial one")
+        v = float(re.search(r"reference max relative difference (\S+)", out).group(1))
+        check(v == 0.0, f"after the kill mid-write: max relative difference {v:.3e} == 0")
+
         # Refusals: other numerics, a flipped byte.
         latest = sorted(f for f in os.listdir(ck) if f.endswith(".h5"))[-1]
         path = os.path.join(ck, latest)
