@@ -1,6 +1,7 @@
 // Seeded problem generators of the LCP benchmark; see generators.hpp for the families and references.
 #include "lcp/generators.hpp"
 #include "lcp/rng.hpp"
+#include "lcp/solver.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -45,7 +46,8 @@ bool isFamily(const std::string& name) {
   return false;
 }
 
-Problem generate(const std::string& family, const GeneratorParams& gp, std::uint64_t index) {
+namespace {
+Problem generateRaw(const std::string& family, const GeneratorParams& gp, std::uint64_t index) {
   const int n = gp.n;
   Rng rng(gp.seed, index);
   const std::string name = family + "#" + std::to_string(index);
@@ -100,6 +102,13 @@ Problem generate(const std::string& family, const GeneratorParams& gp, std::uint
     return makeLcp(std::move(M), Vec::Constant(n, -1.0), "murty" + std::to_string(n));
   }
   throw std::invalid_argument("unknown problem family '" + family + "'");
+}
+} // namespace
+
+Problem generate(const std::string& family, const GeneratorParams& gp, std::uint64_t index) {
+  Problem p = generateRaw(family, gp, index);
+  p.symmetric = isSymmetric(p.M) ? 1 : 0; // once per problem, shared by every solver of a batch
+  return p;
 }
 
 } // namespace suite::lcp

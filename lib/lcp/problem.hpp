@@ -26,6 +26,9 @@ struct Problem {
   Vec q, l, u;  // l, u always sized n (LCP: 0 and +inf)
   int n_eq = 0; // MLCP: number of leading free (equality) variables
   Vec z_known;  // optional known solution (empty if none)
+  // M == M^T exactly: -1 unknown (solvers test it, see isSymmetric(const Problem&)), 0 no, 1 yes. Set by
+  // the generators, which know it, so that a batch does not re-test it for every solver.
+  signed char symmetric = -1;
   std::string name;
 
   int size() const { return static_cast<int>(q.size()); }

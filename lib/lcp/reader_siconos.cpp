@@ -42,6 +42,13 @@ public:
     return static_cast<int>(v);
   }
   size_t remaining() const { return v_.size() - pos_; }
+  // Throws "truncated" before a caller allocates room for `count` numbers the text does not hold: memory stays
+  // bounded by the input size whatever the header claims.
+  void need(unsigned long long count, const char* what) const {
+    if (count > remaining())
+      throw std::runtime_error(name_ + ": truncated file (header announces " + std::to_string(count) + " " +
+                               what + ", only " + std::to_string(remaining()) + " numbers follow)");
+  }
   const std::string& name() const { return name_; }
 
 private:
@@ -67,6 +74,7 @@ Mat readNumericsMatrix(Numbers& in, int n_expected) {
   if (n_expected >= 0 && r != n_expected)
     throw std::runtime_error(in.name() + ": M is " + std::to_string(r) + " x " + std::to_string(c) +
                              " but the problem size is " + std::to_string(n_expected));
+  in.need(static_cast<unsigned long long>(r) * static_cast<unsigned long long>(c), "matrix entries");
   Mat M(r, c);
   for (int j = 0; j < c; ++j)
     for (int i = 0; i < r; ++i) M(i, j) = in.next("a matrix entry");
@@ -74,12 +82,14 @@ Mat readNumericsMatrix(Numbers& in, int n_expected) {
 }
 
 Vec readVec(Numbers& in, int n, const char* what) {
+  in.need(static_cast<unsigned long long>(n), "vector entries");
   Vec v(n);
   for (int i = 0; i < n; ++i) v[i] = in.next(what);
   return v;
 }
 
 Mat readRowWise(Numbers& in, int r, int c, const char* what) {
+  in.need(static_cast<unsigned long long>(r) * static_cast<unsigned long long>(c), "matrix entries");
   Mat A(r, c);
   for (int i = 0; i < r; ++i)
     for (int j = 0; j < c; ++j) A(i, j) = in.next(what);
@@ -102,6 +112,7 @@ Problem parseSiconos(const std::string& text, const std::string& name) {
     const int n = in.nextInt("n (equalities)", 0, kMaxN), m = in.nextInt("m (complementarities)", 0, kMaxN);
     if (!st1 && !st2) throw std::runtime_error(name + ": MLCP with neither storage type");
     const int N = n + m;
+    in.need(static_cast<unsigned long long>(N), "variables"); // every variable has at least its q entry
     std::vector<char> comp(N, 1);
     Mat M;
     Vec q;

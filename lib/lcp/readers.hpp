@@ -19,6 +19,13 @@
 //   /z_known  float64 (n)             optional known solution
 //   root attribute "n_eq" (integer, optional): the first n_eq variables are free (MLCP equality block)
 //   root attribute "kind" (string, optional): "lcp", "box" or "mlcp" (informative)
+//
+// FCLib local frictional-contact problems (FCLib HDF5 files, group /fclib_local: W, q, mu, spacedim; layout in
+// reader_fclib.cpp): the frictionless (normal-contact) LCP is extracted, 0 <= r_n _|_ W_nn r_n + q_n >= 0,
+// with W_nn the rows and columns of the normal directions (local index spacedim * contact) and q_n likewise;
+// the friction coefficients are validated but a Coulomb cone is not an LCP and is not used. Read with the
+// suite's HDF5 (not libfclib, which links the serial libhdf5). Global problems (M, H, G) and mixed local
+// problems (V, R) are refused with a clear message.
 #pragma once
 
 #include "lcp/problem.hpp"
@@ -32,6 +39,11 @@ namespace suite::lcp {
 // Throws std::runtime_error("<file>: <what is wrong>") on a missing, truncated or malformed file.
 Problem readSiconos(const std::string& path);
 Problem parseSiconos(const std::string& text, const std::string& name);
+
+// FCLib (serial, per rank): throws std::runtime_error("<file>: <what is wrong>"); at most 8192 contacts.
+Problem readFclibLocal(const std::string& path);
+// True when path is an HDF5 file with an /fclib_local or /fclib_global group.
+bool isFclibFile(const std::string& path);
 
 // Collective on comm; a malformed file is a PETSc error with a message naming the file.
 PetscErrorCode readProblemH5(MPI_Comm comm, const std::string& path, Problem* p);

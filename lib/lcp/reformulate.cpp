@@ -6,7 +6,8 @@
 
 namespace suite::lcp {
 
-Reformulation toStandardLcp(const Problem& p) {
+namespace {
+Reformulation boxToStandard(const Problem& p) {
   const int n = p.size();
   // LCP variables: (orig index, sign of z in x, kind 0 = primary, 1 = upper-bound multiplier v)
   struct Var {
@@ -54,6 +55,45 @@ Reformulation toStandardLcp(const Problem& p) {
     }
   }
   R.lcp = makeLcp(std::move(Mx), std::move(qx), p.name + " (standard form)");
+  return R;
+}
+} // namespace
+
+Reformulation toStandardLcp(const Problem& p) {
+  const int n = p.size();
+  std::vector<int> F, B;
+  for (int i = 0; i < n; ++i) (std::isfinite(p.l[i]) || std::isfinite(p.u[i]) ? B : F).push_back(i);
+  if (F.empty()) return boxToStandard(p);
+  // Free variables: eliminated by the Schur complement when M_FF is well conditioned, z_F = -M_FF^{-1}(q_F +
+  // M_FB z_B), leaving a box problem on B with M' = M_BB - M_BF M_FF^{-1} M_FB (the x+ - x- split doubles the
+  // free variables into a singular block on which Lemke's tableau loses accuracy: ray terminations at cond 1e4).
+  Eigen::PartialPivLU<Mat> lu(p.M(F, F));
+  if (!(lu.rcond() > 1e-12)) return boxToStandard(p); // singular block: the split still applies
+  const Mat G = lu.solve(p.M(F, B));                  // M_FF^{-1} M_FB
+  const Vec g = lu.solve(p.q(F));                     // M_FF^{-1} q_F
+  Problem red;
+  red.kind = Kind::Box;
+  red.M = p.M(B, B) - p.M(B, F) * G;
+  red.q = p.q(B) - p.M(B, F) * g;
+  red.l = p.l(B);
+  red.u = p.u(B);
+  red.name = p.name;
+  const Reformulation Rb = boxToStandard(red);
+  const int m = static_cast<int>(Rb.S.cols());
+  Reformulation R;
+  R.lcp = Rb.lcp;
+  R.c = Vec::Zero(n);
+  R.S = Mat::Zero(n, m);
+  const Vec cF = -g - G * Rb.c;
+  const Mat SF = -G * Rb.S;
+  for (size_t a = 0; a < B.size(); ++a) {
+    R.c[B[a]] = Rb.c[a];
+    R.S.row(B[a]) = Rb.S.row(a);
+  }
+  for (size_t a = 0; a < F.size(); ++a) {
+    R.c[F[a]] = cF[a];
+    R.S.row(F[a]) = SF.row(a);
+  }
   return R;
 }
 

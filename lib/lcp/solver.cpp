@@ -3,6 +3,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 
@@ -68,9 +69,17 @@ std::vector<State> initialStates(const Problem& p, const Vec* warm) {
 }
 
 bool isSymmetric(const Mat& M) {
-  for (int j = 0; j < M.cols(); ++j)
-    for (int i = j + 1; i < M.rows(); ++i)
-      if (M(i, j) != M(j, i)) return false;
+  // 16 x 16 tiles: the transposed accesses stay in cache (a plain double loop strides over whole columns).
+  const int n = static_cast<int>(M.rows());
+  if (M.cols() != n) return false;
+  constexpr int T = 16;
+  for (int jb = 0; jb < n; jb += T)
+    for (int ib = jb; ib < n; ib += T) {
+      const int je = std::min(n, jb + T), ie = std::min(n, ib + T);
+      for (int j = jb; j < je; ++j)
+        for (int i = std::max(ib, j + 1); i < ie; ++i)
+          if (M(i, j) != M(j, i)) return false;
+    }
   return true;
 }
 
@@ -123,6 +132,10 @@ bool solveStates(const Problem& p, const std::vector<State>& st, Vec* z, bool sy
   if (!x.allFinite()) return false;
   for (int a = 0; a < k; ++a) (*z)[F[a]] = x[a];
   return true;
+}
+
+bool isSymmetric(const Problem& p) {
+  return p.symmetric >= 0 ? p.symmetric == 1 : isSymmetric(p.M);
 }
 
 std::vector<State> statesFromSolution(const Problem& p, const Vec& z, const Vec& w) {

@@ -79,6 +79,8 @@ std::vector<State> initialStates(const Problem& p, const Vec* warm);
 bool solveStates(const Problem& p, const std::vector<State>& st, Vec* z, bool symmetric = false);
 // M == M^T exactly?
 bool isSymmetric(const Mat& M);
+// p.symmetric when known, else isSymmetric(p.M).
+bool isSymmetric(const Problem& p);
 // States read off an approximate solution: t = z - w <= l -> Lower, >= u -> Upper, else Free.
 std::vector<State> statesFromSolution(const Problem& p, const Vec& z, const Vec& w);
 // Fills w, residual, complementarity of r.z.

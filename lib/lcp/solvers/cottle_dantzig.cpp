@@ -24,6 +24,11 @@ struct CdOut {
 CdOut cottleDantzig(const Mat& M, const Vec& q, long long cap) {
   const int n = static_cast<int>(q.size());
   CdOut out;
+  if (n == 0) { // everything was eliminated (free variables only)
+    out.status = Status::Solved;
+    out.z = Vec();
+    return out;
+  }
   Tableau T(M, q, nullptr);
   const double vtol = 1e-13 * (1.0 + q.lpNorm<Eigen::Infinity>());
   while (true) {

@@ -2,10 +2,13 @@
 // bounded Dantzig / van de Panne-Whinston type as in Cottle, Pang & Stone 2009, sec. 4.2 and Baraff 1994):
 // indices are processed in order; the driving variable z_r moves toward w_r = 0 while the free set keeps
 // w_F = 0, and every blocking event (a free z hitting a bound, a bound's w reaching 0, r reaching w_r = 0 or
-// its bound) is one principal pivot. The inverse of M_FF is updated by rank-1 bordering formulas
-// (active_inverse.hpp: O(|F|^2) per pivot, refactorised every 64 changes) rather than LDL^T up/downdates.
+// its bound) is one principal pivot. Symmetric M: the LDL^T factors of M_FF are updated by rank-1 formulas
+// at every pivot (active_ldlt.hpp: bordering for an added index, a Gill-Golub-Murray-Saunders rank-1 update
+// for a removed one; O(|F|^2) per pivot, refactorised every 64 changes). Nonsymmetric M (LDL^T does not
+// apply): the inverse of M_FF by rank-1 bordering / Schur-complement formulas (active_inverse.hpp).
 // Warm start: unprocessed variables start from the given z (clamped to the box).
 #include "lcp/active_inverse.hpp"
+#include "lcp/active_ldlt.hpp"
 #include "lcp/solver.hpp"
 
 #include <cmath>
@@ -17,6 +20,17 @@ class Keller : public Solver {
 public:
   std::string name() const override { return "keller"; }
   Result run(const Problem& p, const SolverOptions& opt) const override {
+    if (isSymmetric(p)) {
+      ActiveLdlt f(p.M);
+      return pivot(p, opt, f);
+    }
+    ActiveInverse f(p.M);
+    return pivot(p, opt, f);
+  }
+
+private:
+  static constexpr int kRefresh = 16; // driving variables between fresh z_F, w (O(n |F| + n^2) each)
+  template <class Factor> static Result pivot(const Problem& p, const SolverOptions& opt, Factor& inv) {
     const int n = p.size();
     const long long cap = opt.max_iterations > 0 ? opt.max_iterations : 100LL * n + 1000;
     const double tol = signTolerance(p);
@@ -30,7 +44,6 @@ public:
     }
     std::vector<State> st(n, State::Free);
     std::vector<char> done(n, 0);
-    ActiveInverse inv(p.M);
     Vec w, x, dzF, dw(n);
     r.status = Status::Solved;
     auto refreshZF = [&]() { // z_F = -M_FF^{-1}(q_F + M_FN z_N), N = every index outside the free set
@@ -48,8 +61,10 @@ public:
       for (int a = 0; a < k; ++a) z[F[a]] = x[a];
     };
     for (int rr = 0; rr < n && r.status == Status::Solved; ++rr) {
-      refreshZF();
-      w = p.M * z + p.q;
+      if (rr % kRefresh == 0) { // recompute z_F and w from scratch against the drift of the updates below
+        refreshZF();
+        w.noalias() = p.M * z + p.q;
+      }
       while (true) {
         const double wr = w[rr];
         if (z[rr] <= p.l[rr] && wr >= -tol) {

@@ -38,7 +38,7 @@ Core lemkeCore(const Mat& M, const Vec& q, long long max_pivots) {
   const int n = static_cast<int>(q.size());
   Core out;
   out.z = Vec::Zero(n);
-  if (q.minCoeff() >= 0.0) {
+  if (n == 0 || q.minCoeff() >= 0.0) {
     out.status = Status::Solved;
     return out;
   }

@@ -1,0 +1,289 @@
+// lcpcompare: the suite's LCP solvers against Siconos numerics (lexicographic Lemke, PGS, FB-Newton; Acary &
+// Brogliato 2008) and Bullet's Dantzig box solver (btSolveDantzigLCP, from ODE: Baraff 1994 / Cottle-Dantzig
+// principal pivoting with bounds), timed on the same generated problems in the same run, one core.
+// Every answer, whoever computed it, is judged by the suite's acceptance rule (natural residual
+// <= rel_tol (1 + |q|_inf), problem.hpp); time = CPU seconds of the calling thread around the solver call
+// (Bullet's input copy excluded: it overwrites A and b). Box problems go to Siconos as relay problems
+// (relay_lexicolemke, relay_pgs; Siconos has no box FB-Newton: recorded as unsupported), standard LCPs as LCPs.
+// Bullet's Dantzig needs l <= 0 <= u (else unsupported); it runs with OpenBLAS-free code, Siconos with BLAS
+// (run with OPENBLAS_NUM_THREADS=1 for a one-core comparison; set here when the symbol is available).
+//
+// Example runs (only built when Siconos numerics / Bullet are installed, so not in tests/sample_runs.py):
+//   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_box -n 100 -count 200 -output compare.h5
+//   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_spd -n 50 -count 100 -ours bpp,lemke,pgs -output compare_spd.h5
+#include "core/log.hpp"
+#include "core/run_context.hpp"
+#include "io/h5_output.hpp"
+#include "lcp/generators.hpp"
+#include "lcp/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifdef LCPCOMPARE_SICONOS
+#define restrict __restrict
+#include "LCP_Solvers.h"
+#include "LinearComplementarityProblem.h"
+#include "NonSmoothDrivers.h"
+#include "NumericsMatrix.h"
+#include "RelayProblem.h"
+#include "Relay_Solvers.h"
+#include "SolverOptions.h"
+#include "lcp_cst.h"
+#include "relay_cst.h"
+#undef restrict
+#endif
+#ifdef LCPCOMPARE_BULLET
+#include <BulletDynamics/MLCPSolvers/btDantzigLCP.h>
+#endif
+
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+
+using namespace suite::lcp;
+
+namespace {
+
+double threadCpu() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+struct Outcome {
+  int status = 0; // Status codes of solver.hpp (4 = unsupported)
+  double cpu = 0.0, residual = kInf;
+};
+
+// Judges z by the suite's rule; solver_ok: the external solver's own success flag.
+Outcome judge(const Problem& p, const Vec& z, bool solver_ok, double cpu, double rel_tol) {
+  Outcome o;
+  o.cpu = cpu;
+  if (z.size() == p.size() && z.allFinite()) o.residual = naturalResidual(p, z, slack(p, z));
+  if (o.residual <= acceptanceTolerance(p, rel_tol))
+    o.status = 0;
+  else
+    o.status = static_cast<int>(solver_ok ? Status::NotAccepted : Status::Breakdown);
+  return o;
+}
+
+struct Entry {
+  std::string name;
+  std::function<Outcome(const Problem&)> run;
+};
+
+} // namespace
+
+static PetscErrorCode runCompare(const suite::RunContext& ctx) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = ctx.comm();
+  char family[64] = "random_box", ours[256] = "bpp,lemke,keller,pgs,fb_newton",
+       output[PETSC_MAX_PATH_LEN] = "";
+  PetscInt n = 100, count = 200, seed = 1, max_it = 0;
+  PetscReal cond = 1e4, qrange = 1e2, rel_tol = 1e-10;
+  PetscOptionsBegin(comm, "", "lcpcompare options", "");
+  PetscCall(PetscOptionsString("-family", "random_spd, random_box, pmatrix, psd, murty", "", family, family,
+                               sizeof family, nullptr));
+  PetscCall(PetscOptionsInt("-n", "Problem size", "", n, &n, nullptr));
+  PetscCall(PetscOptionsInt("-count", "Number of problems", "", count, &count, nullptr));
+  PetscCall(
+      PetscOptionsInt("-seed", "Generator seed (same problems as lcpbench -seed)", "", seed, &seed, nullptr));
+  PetscCall(PetscOptionsReal("-cond", "Condition number of M", "", cond, &cond, nullptr));
+  PetscCall(PetscOptionsReal("-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", "", qrange,
+                             &qrange, nullptr));
+  PetscCall(PetscOptionsString("-ours", "The suite's solvers to time", "", ours, ours, sizeof ours, nullptr));
+  PetscCall(PetscOptionsInt("-max_it", "Iteration cap of the iterative solvers (0: defaults)", "", max_it,
+                            &max_it, nullptr));
+  PetscCall(PetscOptionsReal("-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", "", rel_tol,
+                             &rel_tol, nullptr));
+  PetscCall(PetscOptionsString("-output", "HDF5 results file", "", output, output, sizeof output, nullptr));
+  PetscOptionsEnd();
+  PetscCall(ctx.checkUnusedOptions());
+  if (ctx.helpRequested()) PetscFunctionReturn(0);
+  PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
+  PetscCheck(isFamily(family), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown family '%s' (option -family)",
+             family);
+  PetscCheck(n >= 1 && count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
+  PetscCheck(output[0], comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
+  PetscCall(suite::checkOutputWritable(comm, output, "output"));
+  if (openblas_set_num_threads) openblas_set_num_threads(1);
+
+  GeneratorParams gp;
+  gp.n = static_cast<int>(n);
+  gp.cond = cond;
+  gp.qrange = qrange;
+  gp.lower = -qrange;
+  gp.upper = qrange;
+  gp.seed = static_cast<std::uint64_t>(seed);
+  suite::lcp::SolverOptions so;
+  so.rel_tol = rel_tol;
+  so.max_iterations = static_cast<int>(max_it);
+
+  std::vector<Entry> entries;
+  std::vector<std::unique_ptr<Solver>> keep;
+  for (const auto& s : split(ours)) {
+    auto sv = makeSolver(s);
+    PetscCheck(sv != nullptr, comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown solver '%s' (option -ours)",
+               s.c_str());
+    const Solver* raw = sv.get();
+    keep.push_back(std::move(sv));
+    entries.push_back({s, [raw, so](const Problem& p) {
+                         const Result r = solve(*raw, p, so);
+                         Outcome o;
+                         o.status = static_cast<int>(r.status);
+                         o.cpu = r.cpu_time;
+                         o.residual = r.residual;
+                         return o;
+                       }});
+  }
+#ifdef LCPCOMPARE_SICONOS
+  // Siconos: standard LCP -> lcp_* solvers; box -> relay_* (no box FB-Newton).
+  auto siconos = [&](int lcp_id, int relay_id) {
+    return [=](const Problem& p) -> Outcome {
+      const int m = p.size();
+      const bool box = !p.isStandard();
+      if (box && relay_id < 0) return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
+      NumericsMatrix* M = NM_create(NM_DENSE, m, m);
+      std::copy(p.M.data(), p.M.data() + static_cast<size_t>(m) * m, M->matrix0); // column-major both
+      std::vector<double> q(p.q.data(), p.q.data() + m), lb(p.l.data(), p.l.data() + m),
+          ub(p.u.data(), p.u.data() + m), z(m, 0.0), w(m, 0.0);
+      ::SolverOptions* opt = solver_options_create(box ? relay_id : lcp_id);
+      if (max_it > 0) opt->iparam[SICONOS_IPARAM_MAX_ITER] = static_cast<int>(max_it);
+      opt->dparam[SICONOS_DPARAM_TOL] = 1e-12;
+      int info = 0;
+      const double t0 = threadCpu();
+      if (box) {
+        RelayProblem rp{m, M, q.data(), lb.data(), ub.data()};
+        info = relay_driver(&rp, z.data(), w.data(), opt);
+      } else {
+        LinearComplementarityProblem lp{m, M, q.data()};
+        info = linearComplementarity_driver(&lp, z.data(), w.data(), opt);
+      }
+      const double cpu = threadCpu() - t0;
+      solver_options_delete(opt);
+      NM_free(M);
+      return judge(p, Eigen::Map<Vec>(z.data(), m), info == 0, cpu, rel_tol);
+    };
+  };
+  entries.push_back({"siconos_lemke", siconos(SICONOS_LCP_LEMKE, SICONOS_RELAY_LEMKE)});
+  entries.push_back({"siconos_pgs", siconos(SICONOS_LCP_PGS, SICONOS_RELAY_PGS)});
+  entries.push_back({"siconos_fb_newton", siconos(SICONOS_LCP_NEWTON_FB_FBLSA, -1)});
+#endif
+#ifdef LCPCOMPARE_BULLET
+  entries.push_back({"bullet_dantzig", [&](const Problem& p) -> Outcome {
+                       const int m = p.size();
+                       for (int i = 0; i < m; ++i)
+                         if (p.l[i] > 0.0 || p.u[i] < 0.0)
+                           return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
+                       // btSolveDantzigLCP: A x = b + w, lo <= x <= hi, A row-major n x n (overwritten), so b = -q.
+                       std::vector<btScalar> A(static_cast<size_t>(m) * m), b(m), x(m, 0.0), w(m, 0.0), lo(m),
+                           hi(m);
+                       std::vector<int> findex(m, -1);
+                       for (int i = 0; i < m; ++i) {
+                         for (int j = 0; j < m; ++j) A[static_cast<size_t>(i) * m + j] = p.M(i, j);
+                         b[i] = -p.q[i];
+                         lo[i] = std::isfinite(p.l[i]) ? p.l[i] : -BT_INFINITY;
+                         hi[i] = std::isfinite(p.u[i]) ? p.u[i] : BT_INFINITY;
+                       }
+                       btDantzigScratchMemory scratch;
+                       const double t0 = threadCpu();
+                       const bool ok = btSolveDantzigLCP(m, A.data(), x.data(), b.data(), w.data(), 0,
+                                                         lo.data(), hi.data(), findex.data(), scratch);
+                       const double cpu = threadCpu() - t0;
+                       Vec z(m);
+                       for (int i = 0; i < m; ++i) z[i] = x[i];
+                       return judge(p, z, ok, cpu, rel_tol);
+                     }});
+#endif
+
+  const int ne = static_cast<int>(entries.size());
+  std::vector<std::vector<int>> status(ne, std::vector<int>(count));
+  std::vector<std::vector<double>> cpu(ne, std::vector<double>(count)), resid(ne, std::vector<double>(count));
+  for (PetscInt k = 0; k < count; ++k) {
+    const Problem p = generate(family, gp, static_cast<std::uint64_t>(k));
+    for (int e = 0; e < ne; ++e) { // same problem, every solver, in turn
+      const Outcome o = entries[e].run(p);
+      status[e][k] = o.status;
+      cpu[e][k] = o.cpu;
+      resid[e][k] = o.residual;
+    }
+  }
+
+  suite::H5Output out;
+  PetscCall(out.open(comm, output));
+  PetscCall(out.writeProvenance(ctx));
+  PetscCall(out.writeAttribute("/", "family", family));
+  PetscCall(out.writeAttribute("/", "n", (long long)n));
+  PetscCall(out.writeAttribute("/", "count", (long long)count));
+  PetscCall(out.writeAttribute("/", "cond", (double)cond));
+  PetscCall(out.writeAttribute("/", "qrange", (double)qrange));
+  PetscCall(out.writeAttribute("/", "seed", (long long)seed));
+  PetscCall(out.writeAttribute("/", "timing", "CPU seconds of the calling thread around the solver call"));
+  const unsigned long long C = static_cast<unsigned long long>(count);
+  // reference for the ratio column: Bullet's Dantzig when present
+  int ref = -1;
+  for (int e = 0; e < ne; ++e)
+    if (entries[e].name == "bullet_dantzig") ref = e;
+  auto total = [&](int e) {
+    double s = 0.0;
+    for (double c : cpu[e]) s += c;
+    return s;
+  };
+  PetscCall(suite::logInfo(comm, ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core", family,
+                           (int)n, (int)count));
+  PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s", "solver", "solved",
+                           "failed", "unsupp", "median cpu [s]", "prob/cpu-s", "time/bullet"));
+  for (int e = 0; e < ne; ++e) {
+    const std::string g = "/results/" + entries[e].name;
+    PetscCall(out.writeReplicated(g + "/status", status[e].data(), {C}, ""));
+    PetscCall(out.writeReplicated(g + "/cpu_time", cpu[e].data(), {C}, "s"));
+    PetscCall(out.writeReplicated(g + "/residual", resid[e].data(), {C}, ""));
+    long long solved = 0, unsupported = 0;
+    std::vector<double> c;
+    for (PetscInt k = 0; k < count; ++k) {
+      if (status[e][k] == 0) {
+        ++solved;
+        c.push_back(cpu[e][k]);
+      }
+      if (status[e][k] == static_cast<int>(Status::Unsupported)) ++unsupported;
+    }
+    std::sort(c.begin(), c.end());
+    const double med = c.empty() ? std::nan("") : c[c.size() / 2];
+    const double tot = total(e);
+    const double rate = tot > 0 ? (count - unsupported) / tot : 0.0;
+    const double ratio = ref >= 0 && total(ref) > 0 && unsupported == 0 ? tot / total(ref) : std::nan("");
+    PetscCall(out.writeAttribute(g, "solved", solved));
+    PetscCall(out.writeAttribute(g, "unsupported", unsupported));
+    PetscCall(out.writeAttribute(g, "total_cpu_time", tot));
+    PetscCall(out.writeAttribute(g, "problems_per_cpu_second", rate));
+    PetscCall(out.writeAttribute(g, "cpu_time_over_bullet_dantzig", ratio));
+    PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-18s %7lld %7lld %7lld %14.4g %14.1f %12.2f",
+                             entries[e].name.c_str(), solved, count - solved - unsupported, unsupported, med,
+                             rate, ratio));
+  }
+  PetscCall(out.commit(&ctx));
+  PetscFunctionReturn(0);
+}
+
+static const char help[] =
+    "Times the suite's LCP solvers against Siconos numerics and Bullet's Dantzig solver.\n";
+
+int main(int argc, char** argv) {
+  suite::RunContext ctx(&argc, &argv, help, "lcpcompare");
+  if (ctx.initError()) return ctx.exitCode(ctx.initError());
+  return ctx.exitCode(runCompare(ctx));
+}
