@@ -423,6 +423,8 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
   PetscReal flush_seconds = 30.0, delay = 0.0;
   PetscBool strict = PETSC_FALSE, strict_set = PETSC_FALSE, refine = PETSC_TRUE, resume = PETSC_TRUE;
   PetscBool family_set = PETSC_FALSE;
+  static const char* const kFclibModels[] = {"box_friction", "normal"};
+  PetscInt fclib_model = 0;
   PetscOptionsBegin(comm, "", "lcpbench options", "");
   PetscCall(PetscOptionsString("-family", "Problem family: random_spd, random_box, pmatrix, psd, murty, file",
                                "", family, family, sizeof family, &family_set));
@@ -442,6 +444,11 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
   PetscCall(PetscOptionsString(
       "-file", "Problem files for -family file (comma-separated; .dat Siconos, .h5 suite, FCLib HDF5)", "",
       files, files, sizeof files, nullptr));
+  PetscCall(
+      PetscOptionsEList("-fclib_model",
+                        "FCLib frictional-contact files as: box_friction (all unknowns, tangential bounds "
+                        "+-mu times the frictionless normal force) or normal (the frictionless normal LCP)",
+                        "", kFclibModels, 2, kFclibModels[fclib_model], &fclib_model, nullptr));
   PetscCall(PetscOptionsString("-solvers", "Comma-separated solver names", "", solvers, solvers,
                                sizeof solvers, nullptr));
   PetscCall(PetscOptionsInt("-max_it", "Iteration / pivot cap of every solver (0: each solver's default)", "",
@@ -536,7 +543,8 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
         PetscCall(readProblemH5(comm, f, &p)); // collective: a malformed HDF5 file stops the run
       } else {
         try {
-          p = fclib ? readFclibLocal(f) : readSiconos(f);
+          p = fclib ? readFclibLocal(f, fclib_model == 0 ? FclibModel::BoxFriction : FclibModel::Normal)
+                    : readSiconos(f);
         } catch (const std::exception& e) {
           err = e.what();
         }
@@ -567,6 +575,7 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
                                                              {"refine", refine ? "1" : "0"}};
   if (b.family == "file") {
     header.push_back({"files", join(b.files)});
+    header.push_back({"fclib_model", kFclibModels[fclib_model]});
   } else {
     for (const auto& kv : std::vector<std::pair<std::string, std::string>>{{"n", std::to_string(n)},
                                                                            {"seed", std::to_string(seed)},

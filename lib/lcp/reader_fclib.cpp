@@ -14,7 +14,9 @@
 //   /fclib_local/V, /R, /vectors/s  (mixed problems: refused), /fclib_global (global problems: refused)
 #include "io/h5_append.hpp"
 #include "lcp/readers.hpp"
+#include "lcp/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -45,7 +47,30 @@ std::vector<T> readVector(H5AppendFile& f, const std::string& path, const std::s
 
 } // namespace
 
-Problem readFclibLocal(const std::string& path) {
+// Box friction (the "box" model of Lacoursiere 2003 and the contact app): the Coulomb cone |r_t| <= mu r_n is
+// replaced by the box |r_t,k| <= mu_c * rhat_c per tangent direction, rhat_c the normal force of the
+// frictionless problem (solved here with bpp). The result is a box LCP over all d * nc unknowns of W.
+static Problem boxFrictionProblem(const Problem& normal, const Mat& W, const std::vector<double>& q,
+                                  const std::vector<double>& mu, int d, const std::string& path) {
+  const auto bpp = makeSolver("bpp");
+  const Result rn = solve(*bpp, normal);
+  if (!rn.ok())
+    throw std::runtime_error(path +
+                             ": the frictionless normal problem that estimates the normal forces was not "
+                             "solved (" +
+                             statusName(rn.status) + ")");
+  const int m = static_cast<int>(W.rows()), nc = m / d;
+  Vec qq(m), l(m), u(m);
+  for (int i = 0; i < m; ++i) qq[i] = q[i];
+  for (int c = 0; c < nc; ++c) {
+    l[d * c] = 0.0, u[d * c] = kInf;
+    const double bound = mu[c] * std::max(rn.z[c], 0.0);
+    for (int k = 1; k < d; ++k) l[d * c + k] = -bound, u[d * c + k] = bound;
+  }
+  return makeBox(W, std::move(qq), std::move(l), std::move(u), path + " (box friction)");
+}
+
+Problem readFclibLocal(const std::string& path, FclibModel model) {
   H5AppendFile f;
   f.open(path, false); // throws "cannot open file" / "not a valid HDF5 file"
   if (f.exists("/fclib_global") && !f.exists("/fclib_local"))
@@ -76,14 +101,22 @@ Problem readFclibLocal(const std::string& path) {
   if (nzmax < 0 || nzmax > kMaxEntries || (nz >= 0 && nz > nzmax) || nz < -2)
     throw std::runtime_error(path + ": W has nz = " + std::to_string(nz) +
                              ", nzmax = " + std::to_string(nzmax) + " (malformed or too large)");
-  // Dense W is not formed: only the normal rows / columns (index d*c) are kept.
-  Mat Mn = Mat::Zero(nc, nc);
+  // Normal model: dense W is not formed, only the normal rows / columns (index d*c) are kept. Box friction:
+  // the whole W, dense (at most kMaxBoxRows rows).
+  const bool box = model == FclibModel::BoxFriction;
+  constexpr int kMaxBoxRows = 6144; // 288 MiB dense W
+  if (box && m > kMaxBoxRows)
+    throw std::runtime_error(path + ": " + std::to_string(m) +
+                             " unknowns exceed the dense box-friction limit of " +
+                             std::to_string(kMaxBoxRows) + " (use the normal model)");
+  Mat Mn = Mat::Zero(nc, nc), Wfull = box ? Mat::Zero(m, m) : Mat();
   auto put = [&](long long i, long long j, double x) {
     if (i < 0 || i >= m || j < 0 || j >= m)
       throw std::runtime_error(path + ": W index (" + std::to_string(i) + ", " + std::to_string(j) +
                                ") out of range");
     if (!std::isfinite(x)) throw std::runtime_error(path + ": W has a non-finite entry");
     if (i % d == 0 && j % d == 0) Mn(i / d, j / d) += x; // triplets may repeat an entry: summed
+    if (box) Wfull(i, j) += x;
   };
   const std::vector<double> x = readVector<double>(f, path, W + "x", static_cast<unsigned long long>(nzmax));
   if (nz >= 0) { // triplets: p = column, i = row (fclib / CSparse convention)
@@ -114,7 +147,8 @@ Problem readFclibLocal(const std::string& path) {
   Vec qn(nc);
   for (int c = 0; c < nc; ++c) qn[c] = q[static_cast<size_t>(c) * d];
   Problem prob = makeLcp(std::move(Mn), std::move(qn), path);
-  return prob;
+  if (!box) return prob;
+  return boxFrictionProblem(prob, Wfull, q, mu, d, path);
 }
 
 bool isFclibFile(const std::string& path) {

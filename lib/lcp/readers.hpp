@@ -41,7 +41,11 @@ Problem readSiconos(const std::string& path);
 Problem parseSiconos(const std::string& text, const std::string& name);
 
 // FCLib (serial, per rank): throws std::runtime_error("<file>: <what is wrong>"); at most 8192 contacts.
-Problem readFclibLocal(const std::string& path);
+// Normal: the frictionless normal-contact LCP (nc unknowns). BoxFriction: all spacedim * nc unknowns of W
+// as a box LCP, tangential bounds +-mu_c * rhat_c with rhat_c the normal forces of the frictionless problem
+// (the box-friction model of Lacoursiere 2003; at most 6144 unknowns, dense).
+enum class FclibModel { Normal, BoxFriction };
+Problem readFclibLocal(const std::string& path, FclibModel model = FclibModel::Normal);
 // True when path is an HDF5 file with an /fclib_local or /fclib_global group.
 bool isFclibFile(const std::string& path);
 

@@ -63,6 +63,43 @@ TEST(FclibReader, DenseTripletsThreeContacts) {
   }
 }
 
+// Box-friction model: all 9 unknowns of W, normal bounds [0, inf), tangential bounds +-mu_c rhat_c with rhat
+// the frictionless normal solution (here by enumeration); the box LCP is then solved and its tangential
+// forces respect the box, which is the Coulomb bound at the estimated normal force.
+TEST(FclibReader, BoxFrictionModel) {
+  const std::string file = dataDir() + "fclib_local_3contacts.hdf5";
+  const Problem normal = readFclibLocal(file);
+  const Vec rhat = enumerateLcp(normal.M, normal.q);
+  ASSERT_EQ(rhat.size(), 3);
+  const Problem p = readFclibLocal(file, FclibModel::BoxFriction);
+  ASSERT_EQ(p.size(), 9);
+  EXPECT_EQ(p.kind, Kind::Box);
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) EXPECT_NEAR(p.M(i, j), genW(i, j), 1e-15);
+  EXPECT_EQ(p.q[0], normal.q[0]);
+  EXPECT_EQ(p.q[3], normal.q[1]);
+  int nonzero_bounds = 0;
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(p.l[3 * c], 0.0);
+    EXPECT_EQ(p.u[3 * c], kInf);
+    for (int k = 1; k < 3; ++k) {
+      EXPECT_EQ(p.l[3 * c + k], -p.u[3 * c + k]);
+      EXPECT_GE(p.u[3 * c + k], 0.0);
+      nonzero_bounds += p.u[3 * c + k] > 0.0;
+    }
+  }
+  EXPECT_GT(nonzero_bounds, 0) << "some contact carries a normal force: its tangential box is not empty";
+  // mu_c = u / rhat_c must be the same for both tangent directions of a contact.
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(p.u[3 * c + 1], p.u[3 * c + 2]);
+  for (const char* s : {"bpp", "lemke"}) {
+    const Result r = solve(*makeSolver(s), p);
+    ASSERT_TRUE(r.ok()) << s;
+    EXPECT_LE(r.residual, 1e-10) << s;
+    for (int i = 0; i < 9; ++i)
+      EXPECT_TRUE(r.z[i] >= p.l[i] - 1e-12 && r.z[i] <= p.u[i] + 1e-12) << s << " " << i;
+  }
+}
+
 TEST(FclibReader, CscTwoDimensional) {
   const Problem p = readFclibLocal(dataDir() + "fclib_local_2d_csc.hdf5");
   ASSERT_EQ(p.size(), 3); // 6 rows, spacedim 2
