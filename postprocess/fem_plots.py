@@ -1,4 +1,4 @@
-"""FEM figures: femdyn energy / tip-deflection / per-step timing histories; Hz against DOF per ordering and solver
+"""FEM figures: femdyn energy / tip-deflection / per-step timing histories, haptic probe force history; Hz against DOF per ordering and solver
 (scripts/bench/fem-rate CSV); ordering metrics per matrix or mesh (scripts/bench/fem-orderings CSV)."""
 from __future__ import annotations
 
@@ -60,8 +60,35 @@ def plot_history(h5path, outdir):
     return [str(png)]
 
 
+def read_probe(path):
+    """Haptic probe output of a femdyn -probe run (dict of arrays, empty without a probe)."""
+    with h5py.File(path, "r") as f:
+        if "probe" not in f:
+            return {}
+        return {k: f["probe"][k][...] for k in f["probe"]}
+
+
+def plot_probe(h5path, outdir):
+    p = read_probe(h5path)
+    if not p:
+        return []
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.plot(p["haptic_time"], p["haptic_force"], "-", lw=0.8, label="haptic output (local model, 1 kHz)")
+    ax.plot(p["sync_time"], p["force_full"], "o", ms=3, label="full model (FEM steps)")
+    ax.plot(p["sync_time"][1:], p["force_predicted"][:-1], "x", ms=4, label="local model at the next step")
+    ax.set(xlabel="t", ylabel="probe force", title="haptic probe force")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / f"femdyn_{Path(h5path).stem}_probe.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
 def default_plot(h5path, outdir):
-    return plot_history(h5path, outdir)
+    return plot_history(h5path, outdir) + plot_probe(h5path, outdir)
 
 
 def read_csv(path):

@@ -105,6 +105,24 @@ PetscErrorCode FemdynRun::writeOutput() const {
     PetscCall(out.writeAttribute("/", "rate_hz_wall", wall > 0 ? (n - 1) / wall : 0.0));
     PetscCall(out.writeAttribute("/", "tip_deflection", res_.steps.back().tip_uy));
   }
+  const auto& pr = res_.probe;
+  if (!pr.sync_time.empty()) {
+    PetscCall(out.createGroup("/probe"));
+    PetscCall(out.writeAttribute("/probe", "node", (long long)pr.node));
+    PetscCall(out.writeAttribute("/probe", "stiffness", opt_.probe_stiffness));
+    PetscCall(out.writeAttribute("/probe", "haptic_rate", opt_.haptic_rate));
+    PetscCall(out.writeAttribute("/probe", "haptic_ticks", pr.ticks));
+    PetscCall(out.writeAttribute("/probe", "haptic_tick_cpu_seconds", pr.tick_seconds));
+    PetscCall(out.writeAttribute("/probe", "compliance_cpu_seconds", pr.compliance_seconds));
+    const ull ns = pr.sync_time.size(), nh = pr.haptic_time.size();
+    PetscCall(out.writeReplicated("/probe/sync_time", pr.sync_time.data(), {ns}, "s"));
+    PetscCall(out.writeReplicated("/probe/force_full", pr.force_full.data(), {ns}, "N"));
+    // force_predicted[i]: the local model's force at sync_time[i+1], made at sync_time[i].
+    PetscCall(out.writeReplicated("/probe/force_predicted", pr.force_predicted.data(), {ns}, "N"));
+    PetscCall(out.writeReplicated("/probe/compliance_yy", pr.compliance_yy.data(), {ns}, "m/N"));
+    PetscCall(out.writeReplicated("/probe/haptic_time", pr.haptic_time.data(), {nh}, "s"));
+    PetscCall(out.writeReplicated("/probe/haptic_force", pr.haptic_force.data(), {nh}, "N"));
+  }
   std::vector<suite::XdmfTetStep> xsteps;
   for (size_t k = 0; k < res_.snapshots.size(); ++k) {
     char name[64];

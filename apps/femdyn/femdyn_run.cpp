@@ -7,10 +7,13 @@
 #include "core/progress.hpp"
 #include "fem/cpu_timer.hpp"
 #include "fem/mesh.hpp"
+#include "fem/probe_contact.hpp"
 #include "io/h5_output.hpp"
 
 #include <petsctime.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -69,8 +72,10 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCall(PetscOptionsReal("-poisson", "Poisson ratio nu", "", opt_.poisson, &opt_.poisson, nullptr));
   PetscCall(PetscOptionsReal("-density", "Mass density", "", opt_.density, &opt_.density, nullptr));
   PetscCall(readString("-ordering", "Ordering: natural, cm, rcm, amd, metis, auto", &opt_.ordering));
-  PetscCall(
-      readString("-solver", "Sparse Cholesky: skyline (envelope) or cholmod (supernodal)", &opt_.solver));
+  PetscCall(readString(
+      "-solver",
+      "Linear solver: skyline (envelope), banded (LAPACK), cholmod (supernodal), petsc (MPIAIJ + KSP)",
+      &opt_.solver));
   PetscCall(readString("-dirichlet", "Clamped plane, e.g. x=0 (all DOFs of its nodes fixed), or none",
                        &opt_.dirichlet));
   PetscCall(PetscOptionsBool("-static", "Static solve K u = f (StVK: load stepping + Newton)", "",
@@ -83,6 +88,12 @@ PetscErrorCode FemdynRun::readOptions() {
                             nullptr));
   PetscCall(PetscOptionsReal("-dt", "Time step", "", opt_.dt, &opt_.dt, nullptr));
   PetscCall(PetscOptionsInt("-steps", "Number of time steps", "", opt_.steps, &opt_.steps, nullptr));
+  PetscCall(
+      readString("-time_scheme",
+                 "Time integrator: newmark (-newmark_beta/-newmark_gamma) or generalized_alpha (-rho_inf)",
+                 &opt_.time_scheme));
+  PetscCall(PetscOptionsReal("-rho_inf", "Generalized-alpha spectral radius at infinite omega dt, in [0, 1]",
+                             "", opt_.rho_inf, &opt_.rho_inf, nullptr));
   PetscCall(PetscOptionsReal("-newmark_beta", "Newmark beta", "", nm.beta, &nm.beta, nullptr));
   PetscCall(PetscOptionsReal("-newmark_gamma", "Newmark gamma", "", nm.gamma, &nm.gamma, nullptr));
   PetscCall(PetscOptionsInt("-newton_max_it", "Newton iterations per step (1: linearly implicit)", "",
@@ -104,7 +115,33 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCall(PetscOptionsInt("-snapshot_every", "Displacement/velocity snapshot every N steps (0: none)", "",
                             opt_.snapshot_every, &opt_.snapshot_every, nullptr));
   PetscCall(readString("-output", "HDF5 output file", &opt_.output));
+  PetscInt npt = 3;
+  PetscCall(PetscOptionsBool("-probe", "Haptic probe: a rigid point pressing on a surface node (penalty)", "",
+                             opt_.probe, &opt_.probe, nullptr));
+  PetscCall(PetscOptionsRealArray("-probe_point",
+                                  "Probe contact point x,y,z (nearest node; default: top of the "
+                                  "free end)",
+                                  "", opt_.probe_point, &npt, nullptr));
+  PetscCall(PetscOptionsReal("-probe_stiffness", "Probe penalty stiffness k (force per length)", "",
+                             opt_.probe_stiffness, &opt_.probe_stiffness, nullptr));
+  PetscCall(PetscOptionsReal("-probe_speed", "Probe indentation speed (along -y, from the node's height)", "",
+                             opt_.probe_speed, &opt_.probe_speed, nullptr));
+  PetscCall(PetscOptionsReal("-probe_depth", "Probe travel below the node's initial height, then it holds",
+                             "", opt_.probe_depth, &opt_.probe_depth, nullptr));
+  PetscCall(PetscOptionsReal("-haptic_rate", "Haptic force output rate in Hz (local model between FEM steps)",
+                             "", opt_.haptic_rate, &opt_.haptic_rate, nullptr));
   PetscOptionsEnd();
+  PetscCheck(
+      !opt_.probe || (opt_.probe_stiffness > 0 && opt_.probe_speed >= 0 && opt_.probe_depth >= 0 &&
+                      opt_.haptic_rate > 0),
+      comm, PETSC_ERR_ARG_OUTOFRANGE,
+      "-probe: -probe_stiffness %g and -haptic_rate %g must be > 0, -probe_speed %g and -probe_depth %g >= 0",
+      opt_.probe_stiffness, opt_.haptic_rate, opt_.probe_speed, opt_.probe_depth);
+  PetscCheck(!(opt_.probe && opt_.is_static), comm, PETSC_ERR_ARG_INCOMP,
+             "-probe needs a dynamic run (not -static)");
+  PetscCall(policy_.setFromOptions(comm, "femdyn"));
+  PetscCall(createLinearSolver(comm, opt_.solver, &solver_));
+  PetscCall(solver_->setFromOptions(comm)); // -solver petsc: -ksp_type, -pc_type, ...
   PetscCheck(opt_.order == 1 || opt_.order == 2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-order %d: must be 1 or 2",
              (int)opt_.order);
   PetscCheck(opt_.mesh == "beam" || opt_.mesh == "file", comm, PETSC_ERR_ARG_WRONG,
@@ -126,6 +163,12 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCheck(!opt_.output.empty() || ctx_.helpRequested(), comm, PETSC_ERR_ARG_WRONG,
              "-output FILE.h5 is required");
   nm.initial_jacobian = opt_.jacobian == "initial";
+  PetscCheck(opt_.time_scheme == "newmark" || opt_.time_scheme == "generalized_alpha", comm,
+             PETSC_ERR_ARG_WRONG, "-time_scheme %s: must be newmark or generalized_alpha",
+             opt_.time_scheme.c_str());
+  PetscCheck(opt_.rho_inf >= 0 && opt_.rho_inf <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-rho_inf %g: must be in [0, 1]", opt_.rho_inf);
+  if (opt_.time_scheme == "generalized_alpha") nm = suite::fem::generalizedAlpha(nm, opt_.rho_inf);
   PetscFunctionReturn(0);
 }
 
@@ -139,7 +182,6 @@ PetscErrorCode FemdynRun::setup() {
   PetscCall(createMaterial(comm, opt_.material, lame, &material_));
   OrderingFn order_fn;
   PetscCall(findOrdering(comm, opt_.ordering, &order_fn));
-  PetscCall(createLinearSolver(comm, opt_.solver, &solver_));
   if (opt_.mesh == "beam") {
     BeamSpec s;
     s.length = opt_.beam_length;
@@ -160,6 +202,12 @@ PetscErrorCode FemdynRun::setup() {
     }
   }
   if (opt_.order == 2 && mesh_.order() == 1) mesh_ = promoteToP2(mesh_);
+  if (opt_.poisson > 0.45 && mesh_.order() == 1)
+    PetscCall(suite::logInfo(
+        comm, false,
+        "femdyn: warning: -poisson %g with P1 tetrahedra: volumetric locking makes the response "
+        "far too stiff (use -order 2)",
+        opt_.poisson));
 
   int axis;
   double value;
@@ -204,7 +252,17 @@ PetscErrorCode FemdynRun::setup() {
   perm_ = expandToDofs(order_fn(model_.nodeGraphOf()), model_.eq(), model_.numFree());
   res_.ordering_time = threadCpuSeconds() - to;
   res_.metrics = computeMetrics(graphOfMatrix(model_.pattern()), perm_);
+  solver_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
   PetscCall(solver_->analyze(comm, model_.pattern(), perm_));
+  if (solver_->distributedAssembly()) {
+    // Each rank assembles the elements whose first corner node it owns (the solver's METIS node partition).
+    const auto& part = solver_->nodePartition();
+    std::vector<char> owned(mesh_.numElems(), 0);
+    for (int e = 0; e < mesh_.numElems(); ++e) owned[e] = part[mesh_.elem(e)[0]] == ctx_.rank();
+    model_.setOwnedElements(std::move(owned));
+    partial_ = true;
+    opt_.newmark.partial_sums = true;
+  }
   res_.factor = solver_->stats();
   res_.setup_time = now() - t0;
   PetscCall(suite::logInfo(comm, ctx_.quiet(),
@@ -213,7 +271,7 @@ PetscErrorCode FemdynRun::setup() {
                            mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
                            material_->name(), opt_.ordering.c_str(), 1e3 * res_.ordering_time,
                            res_.metrics.bandwidth, res_.metrics.profile, res_.metrics.nnz_L,
-                           res_.metrics.flops, solver_->name()));
+                           res_.metrics.flops, solver_->describe().c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -229,12 +287,38 @@ double FemdynRun::tipDeflection(const std::vector<double>& u) const {
   return tip_nodes_.empty() ? 0.0 : s / tip_nodes_.size();
 }
 
+double FemdynRun::probeTarget(double t) const {
+  return -std::min(opt_.probe_speed * t, opt_.probe_depth); // relative to the node's initial height
+}
+
+PetscErrorCode FemdynRun::findProbeNode(int* node) const {
+  PetscFunctionBeginUser;
+  std::array<double, 3> p = {opt_.probe_point[0], opt_.probe_point[1], opt_.probe_point[2]};
+  if (p[0] > 1e299) { // default: top of the free end, middle of z
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (const auto& x : mesh_.nodes)
+      for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], x[i]), hi[i] = std::max(hi[i], x[i]);
+    p = {hi[0], hi[1], 0.5 * (lo[2] + hi[2])};
+  }
+  double best = 1e300;
+  *node = -1;
+  for (int v = 0; v < mesh_.numNodes(); ++v) {
+    const auto& x = mesh_.nodes[v];
+    const double d =
+        (x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) + (x[2] - p[2]) * (x[2] - p[2]);
+    if (d < best) best = d, *node = v;
+  }
+  PetscCheck(*node >= 0 && model_.eq()[3 * *node + 1] >= 0, ctx_.comm(), PETSC_ERR_ARG_WRONG,
+             "-probe_point: the nearest node %d is fixed by -dirichlet %s", *node, opt_.dirichlet.c_str());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FemdynRun::solveStaticCase() {
   PetscFunctionBeginUser;
   std::vector<double> u;
   const double t0 = now();
   PetscCall(solveStatic(ctx_.comm(), &model_, solver_.get(), f_ext_, (int)opt_.load_steps,
-                        (int)opt_.newmark.newton_max_it, opt_.newmark.newton_rtol, &u, &res_.stat));
+                        (int)opt_.newmark.newton_max_it, opt_.newmark.newton_rtol, &u, &res_.stat, partial_));
   res_.loop_time = now() - t0;
   res_.u_full = fullDisplacement(u);
   res_.tip_deflection = tipDeflection(res_.u_full);
@@ -255,15 +339,26 @@ PetscErrorCode FemdynRun::solveDynamic() {
   PetscFunctionBeginUser;
   MPI_Comm comm = ctx_.comm();
   Newmark nm;
+  // Haptic probe: the elastic system plus the probe's penalty force.
+  SecondOrderSystem* sys = &model_;
+  std::unique_ptr<ProbeSystem> probe;
+  ProbeRecord& pr = res_.probe;
+  int pdofs[3] = {-1, -1, -1};
+  if (opt_.probe) {
+    PetscCall(findProbeNode(&pr.node));
+    for (int c = 0; c < 3; ++c) pdofs[c] = model_.eq()[3 * pr.node + c];
+    probe = std::make_unique<ProbeSystem>(&model_, pdofs[1], mesh_.nodes[pr.node][1], opt_.probe_stiffness,
+                                          !partial_ || ctx_.rank() == 0);
+    sys = probe.get();
+  }
   const double rho = opt_.density;
   auto mass = opt_.mass == "lumped" ? model_.lumpedMass(rho) : model_.consistentMass(rho);
   const std::vector<double>& fe = f_ext_;
-  PetscCall(nm.setup(comm, &model_, solver_.get(), std::move(mass), opt_.newmark,
+  PetscCall(nm.setup(comm, sys, solver_.get(), std::move(mass), opt_.newmark,
                      [&fe](double, double* f) { std::copy(fe.begin(), fe.end(), f); }));
   NewmarkState s;
   s.u.assign(model_.numFree(), 0.0);
   s.v.assign(model_.numFree(), 0.0);
-  PetscCall(nm.initialize(&s));
   suite::Progress progress(comm, ctx_.quiet(), ctx_.progressInterval(), opt_.steps * opt_.dt);
   auto record = [&](const StepTimings& tm, double total, double cpu) {
     StepRecord r{};
@@ -279,25 +374,70 @@ PetscErrorCode FemdynRun::solveDynamic() {
     r.tip_uy = tipDeflection(full);
     res_.steps.push_back(r);
   };
-  record(StepTimings(), 0.0, 0.0);
-  if (opt_.snapshot_every > 0) res_.snapshots.push_back({s.t, fullDisplacement(s.u)});
+  long long k0 = 0;
+  if (policy_.restartRequested()) {
+    PetscCall(readRestart(&s, &k0)); // u, v, a, t and the history so far
+  } else {
+    PetscCall(nm.initialize(&s));
+    record(StepTimings(), 0.0, 0.0);
+    if (opt_.snapshot_every > 0) res_.snapshots.push_back({s.t, fullDisplacement(s.u)});
+  }
   const double t0 = now();
   double stepping = 0, stepping_cpu = 0;
   int unconverged = 0;
-  for (PetscInt k = 1; k <= opt_.steps; ++k) {
+  for (PetscInt k = (PetscInt)k0 + 1; k <= opt_.steps; ++k) {
     StepTimings tm;
     const double ts = now(), tc = threadCpuSeconds();
+    if (probe) probe->setProbe(mesh_.nodes[pr.node][1] + probeTarget(s.t + opt_.dt));
     PetscCall(nm.step(&s, opt_.dt, &tm));
     const double dt_wall = now() - ts, dt_cpu = threadCpuSeconds() - tc;
     stepping += dt_wall;
     stepping_cpu += dt_cpu;
     if (!tm.converged && opt_.newmark.newton_max_it > 1) ++unconverged;
     record(tm, dt_wall, dt_cpu);
+    if (probe) {
+      // Synchronisation: the full-model probe force, then the local model for the ticks up to the next step
+      // (they would run concurrently with it): compliance of the probe node from the current factorisation.
+      const double f_full = probe->force(s.u.data());
+      pr.sync_time.push_back(s.t);
+      pr.force_full.push_back(f_full);
+      const double tc0 = threadCpuSeconds();
+      std::vector<double> e(model_.numFree(), 0.0), x(model_.numFree());
+      double C[3][3] = {{0}};
+      for (int a = 0; a < 3; ++a) {
+        if (pdofs[a] < 0) continue;
+        e[pdofs[a]] = 1.0;
+        PetscCall(solver_->solve(e.data(), x.data()));
+        e[pdofs[a]] = 0.0;
+        for (int b = 0; b < 3; ++b) C[b][a] = pdofs[b] >= 0 ? x[pdofs[b]] : 0.0;
+      }
+      pr.compliance_seconds += threadCpuSeconds() - tc0;
+      pr.compliance_yy.push_back(C[1][1]);
+      HapticLocalModel hm;
+      hm.t = s.t, hm.y = probe->position(s.u.data()), hm.v = s.v[pdofs[1]], hm.f = f_full, hm.c = C[1][1];
+      hm.k = opt_.probe_stiffness;
+      const double h = 1.0 / opt_.haptic_rate;
+      const int m = std::max(1, (int)std::lround(opt_.dt / h));
+      const double tt0 = threadCpuSeconds();
+      double fh = 0;
+      for (int j = 1; j <= m; ++j) {
+        const double t = s.t + j * (opt_.dt / m);
+        fh = hm.force(t, mesh_.nodes[pr.node][1] + probeTarget(t));
+        pr.haptic_time.push_back(t);
+        pr.haptic_force.push_back(fh);
+      }
+      pr.tick_seconds += threadCpuSeconds() - tt0;
+      pr.ticks += m;
+      pr.force_predicted.push_back(fh); // the local model's force at the next synchronisation time
+    }
     if (opt_.snapshot_every > 0 && k % opt_.snapshot_every == 0)
       res_.snapshots.push_back({s.t, fullDisplacement(s.u)});
     PetscCall(progress.update(k, s.t, opt_.dt));
-    bool stop;
+    bool due = false, stop = false;
+    if (policy_.enabled()) PetscCall(policy_.due(k, &due));
     PetscCall(ctx_.stopRequested(&stop));
+    // A stop request (SIGTERM/SIGUSR1/-max_walltime) writes a final checkpoint of the state reached.
+    if (due || (stop && policy_.enabled() && k < opt_.steps)) PetscCall(writeCheckpointAt(s, k));
     if (stop) {
       PetscCall(suite::logInfo(comm, ctx_.quiet(), "femdyn: stopping at step %d (%s)", (int)k,
                                ctx_.stopReason().c_str()));
@@ -306,10 +446,11 @@ PetscErrorCode FemdynRun::solveDynamic() {
   }
   res_.loop_time = now() - t0;
   res_.u_full = fullDisplacement(s.u);
-  const int n = (int)res_.steps.size() - 1;
+  // Rates over the steps of this run (a restarted run continues a history that it did not time).
+  const int n = (int)(res_.steps.size() - 1 - k0);
   double as = 0, fa = 0, so = 0;
   int newton = 0;
-  for (size_t i = 1; i < res_.steps.size(); ++i)
+  for (size_t i = 1 + k0; i < res_.steps.size(); ++i)
     as += res_.steps[i].assemble, fa += res_.steps[i].factor, so += res_.steps[i].solve,
         newton += res_.steps[i].newton;
   const auto& e0 = res_.steps.front();
@@ -323,6 +464,23 @@ PetscErrorCode FemdynRun::solveDynamic() {
       n ? 1e3 * stepping_cpu / n : 0.0, n ? 1e3 * as / n : 0.0, n ? 1e3 * fa / n : 0.0,
       n ? 1e3 * so / n : 0.0, n && stepping > 0 ? n / stepping : 0.0, e1.tip_uy, E0, E1,
       unconverged ? " (some steps did not converge: see /steps/converged)" : ""));
+  if (probe && pr.sync_time.size() > 1) {
+    double err = 0, fmax = 0;
+    for (size_t i = 1; i < pr.sync_time.size(); ++i) {
+      err = std::max(err, std::abs(pr.force_predicted[i - 1] - pr.force_full[i]));
+      fmax = std::max(fmax, std::abs(pr.force_full[i]));
+    }
+    PetscCall(suite::logInfo(comm, ctx_.quiet(),
+                             "femdyn probe: node %d, final force %.6g; haptic %lld ticks at %.0f Hz (model "
+                             "rate %.3g Hz cpu, %.3f ms/step "
+                             "for the compliance solves); local model vs full model at the synchronisations: "
+                             "max |df| %.3e (%.3e of max "
+                             "force %.4g)",
+                             pr.node, pr.force_full.back(), pr.ticks, opt_.haptic_rate,
+                             pr.tick_seconds > 0 ? pr.ticks / pr.tick_seconds : 0.0,
+                             1e3 * pr.compliance_seconds / pr.sync_time.size(), err,
+                             fmax > 0 ? err / fmax : 0.0, fmax));
+  }
   PetscFunctionReturn(0);
 }
 

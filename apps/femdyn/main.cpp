@@ -1,7 +1,10 @@
 // Sparse FEM elastodynamics on tetrahedral meshes: P1/P2, linear / St. Venant-Kirchhoff / corotational
-// material, Newmark + Newton, orderings natural|cm|rcm|amd|metis|auto, skyline or CHOLMOD Cholesky (after
-// Nilsson & Dieckmann, SIGRAD 2003). The computation is serial; at several ranks every rank runs it
-// identically and rank 0 writes.
+// material, Newmark or generalized-alpha + Newton, orderings natural|cm|rcm|amd|metis|auto, skyline, banded,
+// CHOLMOD or the distributed PETSc path (after Nilsson & Dieckmann, SIGRAD 2003). With skyline/banded/cholmod
+// the computation is serial and replicated on every rank; with -solver petsc each rank assembles its elements
+// of a METIS partition of the nodes into an MPIAIJ matrix solved with KSP (time-stepping state replicated).
+// Checkpoints
+// (-checkpoint_dir, -checkpoint_every, -restart latest) and stop requests (SIGTERM/SIGUSR1, -max_walltime).
 //
 // Sample runs (tests/sample_runs.py executes each line):
 //   femdyn -static -tip_load 1 -beam_cells 20,2,2 -order 2 -output cant.h5       # tip_deflection attribute
@@ -9,6 +12,9 @@
 //   femdyn -material linear -ordering rcm -solver skyline -gravity 0,-1,0 -steps 100 -output lin.h5
 //   femdyn -static -material stvk -tip_load 25 -load_steps 10 -output elastica.h5
 //   femdyn -options_file inputs/femdyn/default.yaml -output out/femdyn.h5
+//   femdyn -material stvk -time_scheme generalized_alpha -rho_inf 0.5 -steps 50 -tip_load 1 -output ga.h5
+//   mpiexec -n 2 femdyn -static -tip_load 1 -beam_cells 20,2,2 -solver petsc -ksp_type cg -pc_type gamg -output p.h5
+//   femdyn -material stvk -steps 200 -tip_load 1 -checkpoint_dir ckpt -checkpoint_every 50 -output c.h5
 #include "core/run_context.hpp"
 #include "femdyn_run.hpp"
 

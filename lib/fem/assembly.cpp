@@ -64,6 +64,18 @@ PetscErrorCode ElasticModel::setup(MPI_Comm comm, const TetMesh& mesh, const Mat
         s[p * nd + q] = static_cast<int>(std::lower_bound(b, en, r) - K_.rowind.begin());
       }
   }
+  // Compact scatter of the element tangent: for every element entry that lands in the global upper triangle,
+  // (index into the element's upper triangle, index into K values) -- at most nd (nd + 1) / 2 per element.
+  pair_off_.assign(ne + 1, 0);
+  pairs_.clear();
+  pairs_.reserve(static_cast<size_t>(ne) * nd * (nd + 1) / 2);
+  for (int e = 0; e < ne; ++e) {
+    const int* s = scatter_.data() + static_cast<size_t>(e) * nd * nd;
+    for (int p = 0; p < nd; ++p)
+      for (int q = 0; q < nd; ++q)
+        if (s[p * nd + q] >= 0) pairs_.push_back({p <= q ? p * nd + q : q * nd + p, s[p * nd + q]});
+    pair_off_[e + 1] = pairs_.size();
+  }
   K0_.clear();
   if (material.isLinear()) {
     std::vector<double> zero(3 * N, 0.0), f(nfree_);
@@ -83,6 +95,7 @@ AssemblyResult ElasticModel::assemble(const double* u, double* f, std::vector<do
   double ue[30 * 3], fe[30], ke[30 * 30];
   Mat3 F, P;
   for (int e = 0; e < ne; ++e) {
+    if (!owned_.empty() && !owned_[e]) continue;
     const int* t = mesh.elem(e);
     for (int a = 0; a < nen; ++a)
       for (int i = 0; i < 3; ++i) ue[3 * a + i] = u[3 * t[a] + i];
@@ -102,27 +115,23 @@ AssemblyResult ElasticModel::assemble(const double* u, double* f, std::vector<do
         continue;
       }
       double W;
-      material_->evaluate(F, &W, &P, nullptr);
+      if (K)
+        material_->evaluateWithTangent(F, g, nen, w, &W, &P, ke);
+      else
+        material_->evaluate(F, &W, &P, nullptr);
       res.energy += w * W;
       for (int a = 0; a < nen; ++a)
         for (int i = 0; i < 3; ++i)
           fe[3 * a + i] += w * (P(i, 0) * g[3 * a] + P(i, 1) * g[3 * a + 1] + P(i, 2) * g[3 * a + 2]);
-      if (K) material_->addElementTangent(F, g, nen, w, ke);
     }
     for (int p = 0; p < nd; ++p) {
       const int r = eq_[3 * t[p / 3] + p % 3];
       if (r >= 0) f[r] += fe[p];
     }
     if (!K) continue;
-    const int* s = scatter_.data() + static_cast<size_t>(e) * nd * nd;
     double* kv = K->data();
-    for (int p = 0; p < nd; ++p)
-      for (int qq = 0; qq < nd; ++qq) {
-        const int idx = s[p * nd + qq];
-        if (idx < 0) continue;
-        // (p,qq) maps to an upper global entry; take the element value from its upper triangle.
-        kv[idx] += p <= qq ? ke[p * nd + qq] : ke[qq * nd + p];
-      }
+    const size_t pe = pair_off_[e + 1];
+    for (size_t k = pair_off_[e]; k < pe; ++k) kv[pairs_[k].second] += ke[pairs_[k].first];
   }
   return res;
 }
@@ -151,6 +160,7 @@ std::vector<double> ElasticModel::consistentMass(double rho) const {
   const int nen = mesh_->nodes_per_elem, nd = 3 * nen;
   std::vector<double> m;
   for (int e = 0; e < mesh_->numElems(); ++e) {
+    if (!owned_.empty() && !owned_[e]) continue;
     elementMass(*mesh_, e, rho, rule, &m);
     const int* s = scatter_.data() + static_cast<size_t>(e) * nd * nd;
     for (int a = 0; a < nen; ++a)
@@ -169,6 +179,7 @@ std::vector<double> ElasticModel::lumpedMass(double rho) const {
   const int nen = mesh_->nodes_per_elem, nd = 3 * nen;
   std::vector<double> m;
   for (int e = 0; e < mesh_->numElems(); ++e) {
+    if (!owned_.empty() && !owned_[e]) continue;
     elementMass(*mesh_, e, rho, rule, &m);
     double total = 0, diag = 0;
     for (int a = 0; a < nen; ++a) {
@@ -240,6 +251,16 @@ bool ElasticModel::internalForce(const double* u, double* f, std::vector<double>
   last_ = assemble(u_full_.data(), f, K);
   if (energy) *energy = last_.energy;
   return last_.bad_elem < 0;
+}
+
+void ElasticModel::setOwnedElements(std::vector<char> owned) {
+  owned_ = std::move(owned);
+  if (material_->isLinear()) {
+    std::vector<double> zero(eq_.size(), 0.0), f(nfree_), K0;
+    K0_.clear();
+    assemble(zero.data(), f.data(), &K0);
+    K0_.swap(K0);
+  }
 }
 
 void ElasticModel::scatterFree(const double* free, double* full) const {

@@ -11,6 +11,7 @@
 #include "fem/sparse.hpp"
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace suite::fem {
@@ -54,6 +55,12 @@ public:
   // Result of the last internalForce call (admissibility, min det F).
   const AssemblyResult& lastAssembly() const { return last_; }
 
+  // Distributed assembly (-solver petsc at several ranks): only the elements with owned[e] != 0 are assembled
+  // (internal force, tangent, energy and mass are then this rank's partial sums; the linear stiffness is
+  // reassembled). Empty: all elements (replicated computation).
+  void setOwnedElements(std::vector<char> owned);
+  bool partial() const { return !owned_.empty(); }
+
   void scatterFree(const double* free, double* full) const; // full[fixed] untouched
   void gatherFree(const double* full, double* free) const;
 
@@ -65,9 +72,12 @@ private:
   std::vector<int> eq_;
   int nfree_ = 0;
   SymCsc K_;
-  std::vector<int> scatter_; // per element (3 nen)^2 entries: index into K values or -1
+  std::vector<int> scatter_;               // per element (3 nen)^2 entries: index into K values or -1
+  std::vector<std::pair<int, int>> pairs_; // compact tangent scatter (element upper index, K index)
+  std::vector<size_t> pair_off_;           // pairs_ of element e: [pair_off_[e], pair_off_[e+1])
   Graph node_graph_;
   std::vector<double> u_full_, K0_;
+  std::vector<char> owned_; // elements assembled by this rank (empty: all)
   AssemblyResult last_;
 };
 

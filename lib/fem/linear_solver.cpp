@@ -7,8 +7,10 @@ struct Entry {
   const char* name;
   std::unique_ptr<LinearSolver> (*make)();
 };
-const Entry kSolvers[] = {
-    {"skyline", makeSkylineSolver}, {"banded", makeBandedSolver}, {"cholmod", makeCholmodSolver}};
+const Entry kSolvers[] = {{"skyline", makeSkylineSolver},
+                          {"banded", makeBandedSolver},
+                          {"cholmod", makeCholmodSolver},
+                          {"petsc", makePetscSolver}};
 } // namespace
 
 std::vector<std::string> solverNames() {
@@ -25,7 +27,7 @@ PetscErrorCode createLinearSolver(MPI_Comm comm, const std::string& name,
       *out = e.make();
       PetscFunctionReturn(0);
     }
-  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -solver %s (valid: skyline|banded|cholmod)",
+  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -solver %s (valid: skyline|banded|cholmod|petsc)",
           name.c_str());
 }
 

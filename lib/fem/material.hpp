@@ -32,6 +32,12 @@ public:
   // element matrix ke (nd x nd, nd = 3 nen); g: nen x 3 physical gradients. The default goes through A;
   // linear and StVK override it with closed forms (no 9x9 tangent).
   virtual void addElementTangent(const Mat3& F, const double* g, int nen, double w, double* ke) const;
+  // evaluate(F, W, P) and addElementTangent in one call (overridden where they share work, e.g. StVK's S).
+  virtual void evaluateWithTangent(const Mat3& F, const double* g, int nen, double w, double* W, Mat3* P,
+                                   double* ke) const {
+    evaluate(F, W, P, nullptr);
+    addElementTangent(F, g, nen, w, ke);
+  }
   // True when the tangent is constant (linear): the stiffness need not be reassembled.
   virtual bool isLinear() const { return false; }
   const Lame& lame() const { return lame_; }

@@ -14,6 +14,15 @@ public:
     const Mat3 S = lame_.lambda * E.trace() * Mat3::Identity() + 2 * lame_.mu * E;
     addStVKElementTangent(F, S, lame_, g, nen, w, ke);
   }
+  void evaluateWithTangent(const Mat3& F, const double* g, int nen, double w, double* W, Mat3* P,
+                           double* ke) const override {
+    const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
+    const double tr = E.trace();
+    const Mat3 S = lame_.lambda * tr * Mat3::Identity() + 2 * lame_.mu * E;
+    *P = F * S;
+    *W = 0.5 * lame_.lambda * tr * tr + lame_.mu * E.squaredNorm();
+    addStVKElementTangent(F, S, lame_, g, nen, w, ke);
+  }
   void evaluate(const Mat3& F, double* W, Mat3* P, Tangent* A) const override {
     const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
     const double tr = E.trace();

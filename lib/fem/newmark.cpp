@@ -5,7 +5,9 @@
 
 #include "fem/cpu_timer.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace suite::fem {
 
@@ -20,6 +22,14 @@ double norm2(const std::vector<double>& x) {
 }
 } // namespace
 
+NewmarkParams generalizedAlpha(NewmarkParams p, double rho) {
+  p.alpha_m = (2 * rho - 1) / (rho + 1);
+  p.alpha_f = rho / (rho + 1);
+  p.gamma = 0.5 - p.alpha_m + p.alpha_f;
+  p.beta = 0.25 * (1 - p.alpha_m + p.alpha_f) * (1 - p.alpha_m + p.alpha_f);
+  return p;
+}
+
 bool LinearSecondOrderSystem::internalForce(const double* u, double* f, std::vector<double>* K,
                                             double* energy) {
   symMultiply(K_, K_.val, u, f);
@@ -32,11 +42,34 @@ bool LinearSecondOrderSystem::internalForce(const double* u, double* f, std::vec
   return true;
 }
 
+PetscErrorCode Newmark::sumResidual() {
+  PetscFunctionBeginUser;
+  if (p_.partial_sums)
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, r_.data(), (int)r_.size(), MPI_DOUBLE, MPI_SUM, comm_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Newmark::allAdmissible(bool* ok) const {
+  PetscFunctionBeginUser;
+  if (p_.partial_sums) {
+    int mine = *ok ? 1 : 0, all = 0;
+    PetscCallMPI(MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, comm_));
+    *ok = all == 1;
+  }
+  PetscFunctionReturn(0);
+}
+
+double Newmark::sumScalar(double x) const {
+  if (p_.partial_sums) MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_SUM, comm_);
+  return x;
+}
+
 PetscErrorCode Newmark::setup(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver,
                               std::vector<double> mass, const NewmarkParams& p,
                               std::function<void(double, double*)> f_ext) {
   PetscFunctionBeginUser;
   comm_ = comm;
+  MPI_Comm_rank(comm, &rank_);
   sys_ = sys;
   solver_ = solver;
   p_ = p;
@@ -45,6 +78,8 @@ PetscErrorCode Newmark::setup(MPI_Comm comm, SecondOrderSystem* sys, LinearSolve
   const int n = sys->pattern().n;
   PetscCheck(p.beta > 0 && p.gamma >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Newmark -newmark_beta %g must be > 0 (implicit) and -newmark_gamma %g >= 0", p.beta, p.gamma);
+  PetscCheck(p.alpha_m < 1 && p.alpha_f < 1 && p.alpha_f >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "generalized-alpha: alpha_m %g and alpha_f %g must be < 1 (alpha_f >= 0)", p.alpha_m, p.alpha_f);
   PetscCheck(p.newton_max_it >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-newton_max_it %d must be >= 1",
              p.newton_max_it);
   r_.assign(n, 0), du_.assign(n, 0), f_.assign(n, 0), fe_.assign(n, 0), tmp_.assign(n, 0), tmp2_.assign(n, 0);
@@ -63,11 +98,14 @@ PetscErrorCode Newmark::initialize(NewmarkState* s) {
   const int n = Keff_.n;
   s->u.resize(n, 0.0), s->v.resize(n, 0.0), s->a.assign(n, 0.0);
   double e;
-  PetscCheck(sys_->internalForce(s->u.data(), f_.data(), nullptr, &e), comm_, PETSC_ERR_ARG_WRONG,
-             "initial displacement inverts an element (det F <= 0)");
+  bool adm = sys_->internalForce(s->u.data(), f_.data(), nullptr, &e);
+  PetscCall(allAdmissible(&adm));
+  PetscCheck(adm, comm_, PETSC_ERR_ARG_WRONG, "initial displacement inverts an element (det F <= 0)");
   fext_(s->t, fe_.data());
+  if (p_.partial_sums && rank_ > 0) std::fill(fe_.begin(), fe_.end(), 0.0);
   symMultiply(Keff_, C_, s->v.data(), tmp_.data());
   for (int i = 0; i < n; ++i) r_[i] = fe_[i] - f_[i] - tmp_[i];
+  PetscCall(sumResidual());
   Keff_.val = M_;
   bool ok;
   PetscCall(solver_->factor(Keff_, &ok));
@@ -79,9 +117,11 @@ PetscErrorCode Newmark::initialize(NewmarkState* s) {
 
 PetscErrorCode Newmark::factorEffective(double dt, const std::vector<double>& Kt, StepTimings* tm, bool* ok) {
   PetscFunctionBeginUser;
-  const double c0 = 1.0 / (p_.beta * dt * dt), c1 = p_.gamma / (p_.beta * dt);
+  // d r / d u_{n+1} with r = M a_{n+1-am} + C v_{n+1-af} + f(u_{n+1-af}) (Newmark: am = af = 0).
+  const double c0 = (1 - p_.alpha_m) / (p_.beta * dt * dt), c1 = (1 - p_.alpha_f) * p_.gamma / (p_.beta * dt),
+               ck = 1 - p_.alpha_f;
   const double t0 = now();
-  for (size_t k = 0; k < M_.size(); ++k) Keff_.val[k] = c0 * M_[k] + c1 * C_[k] + Kt[k];
+  for (size_t k = 0; k < M_.size(); ++k) Keff_.val[k] = c0 * M_[k] + c1 * C_[k] + ck * Kt[k];
   PetscCall(solver_->factor(Keff_, ok));
   tm->factor += now() - t0;
   ++tm->factorizations;
@@ -93,13 +133,17 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
   const int n = Keff_.n;
   const double b = p_.beta, g = p_.gamma;
   const double c0 = 1.0 / (b * dt * dt);
+  const double am = p_.alpha_m, af = p_.alpha_f;
+  const bool alpha = am != 0 || af != 0; // generalized-alpha: evaluate at the intermediate point
   std::vector<double> up(n), vp(n), un(n), an(n), vn(n);
+  if (alpha) ua_.resize(n), va_.resize(n), aa_.resize(n);
   for (int i = 0; i < n; ++i) {
     up[i] = s->u[i] + dt * s->v[i] + dt * dt * (0.5 - b) * s->a[i];
     vp[i] = s->v[i] + dt * (1 - g) * s->a[i];
     un[i] = up[i] + b * dt * dt * s->a[i];
   }
-  fext_(s->t + dt, fe_.data());
+  fext_(alpha ? s->t + (1 - af) * dt : s->t + dt, fe_.data());
+  if (p_.partial_sums && rank_ > 0) std::fill(fe_.begin(), fe_.end(), 0.0);
   const bool reuse = sys_->isLinear() || p_.initial_jacobian;
   const bool exact_after_one = sys_->isLinear();
   double ref = 0;
@@ -110,16 +154,27 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
     double t0 = now();
     const bool need_tangent = !reuse;
     double e;
-    const bool admissible = sys_->internalForce(un.data(), f_.data(), need_tangent ? &Kt_ : nullptr, &e);
+    if (alpha)
+      for (int i = 0; i < n; ++i) {
+        ua_[i] = (1 - af) * un[i] + af * s->u[i];
+        va_[i] = (1 - af) * vn[i] + af * s->v[i];
+        aa_[i] = (1 - am) * an[i] + am * s->a[i];
+      }
+    const double* ueval = alpha ? ua_.data() : un.data();
+    // Force only: the tangent is assembled below only when another Newton iteration follows (the last
+    // residual evaluation of a converged step needs no tangent).
+    bool admissible = sys_->internalForce(ueval, f_.data(), nullptr, &e);
+    PetscCall(allAdmissible(&admissible));
     if (!admissible) {
       *ok = false;
       reject_reason_ = "an element inverts (det F <= 0) at Newton iteration " + std::to_string(it);
       tm->assemble += now() - t0;
       PetscFunctionReturn(0);
     }
-    symMultiply(Keff_, M_, an.data(), tmp_.data());
-    symMultiply(Keff_, C_, vn.data(), tmp2_.data());
+    symMultiply(Keff_, M_, alpha ? aa_.data() : an.data(), tmp_.data());
+    symMultiply(Keff_, C_, alpha ? va_.data() : vn.data(), tmp2_.data());
     for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + tmp2_[i] + f_[i] - fe_[i];
+    PetscCall(sumResidual());
     tm->assemble += now() - t0;
     const double rn = norm2(r_);
     tm->residual = rn;
@@ -128,9 +183,23 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
       tm->converged = true;
       break;
     }
-    if (it >= p_.newton_max_it)
-      break; // not converged within newton_max_it solves (linearly implicit: it = 1)
+    if (!std::isfinite(rn) || it >= p_.newton_max_it) {
+      // Not converged within newton_max_it solves: reject the step (the caller halves dt), never accept.
+      *ok = false;
+      char why[256];
+      std::snprintf(
+          why, sizeof why,
+          "Newton did not converge in %d iterations (residual %.3e, tolerance max(%.1e, %.1e * %.3e))", it,
+          rn, p_.newton_atol, p_.newton_rtol, ref);
+      reject_reason_ = why;
+      PetscFunctionReturn(0);
+    }
     bool fok = true;
+    if (need_tangent) {
+      t0 = now();
+      sys_->internalForce(ueval, tmp2_.data(), &Kt_, &e); // same point: admissible, same force
+      tm->assemble += now() - t0;
+    }
     if (!reuse || factored_dt_ != dt) {
       PetscCall(factorEffective(dt, reuse ? K0_ : Kt_, tm, &fok));
       factored_dt_ = (reuse && fok) ? dt : -1;
@@ -200,20 +269,22 @@ double Newmark::kineticEnergy(const NewmarkState& s) const {
   symMultiply(Keff_, M_, s.v.data(), mv.data());
   double e = 0;
   for (size_t i = 0; i < mv.size(); ++i) e += 0.5 * s.v[i] * mv[i];
-  return e;
+  return sumScalar(e);
 }
 
 double Newmark::strainEnergy(const NewmarkState& s) {
   double e = 0;
   sys_->internalForce(s.u.data(), f_.data(), nullptr, &e);
-  return e;
+  return sumScalar(e);
 }
 
 PetscErrorCode solveStatic(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver,
                            const std::vector<double>& f_ext, int nsteps, int newton_max_it, double rtol,
-                           std::vector<double>* u, StaticResult* res) {
+                           std::vector<double>* u, StaticResult* res, bool partial_sums) {
   PetscFunctionBeginUser;
   PetscCheck(nsteps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps %d must be >= 1", nsteps);
+  int rank = 0;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   SymCsc K = sys->pattern();
   const int n = K.n;
   u->assign(n, 0.0);
@@ -225,10 +296,17 @@ PetscErrorCode solveStatic(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* 
     const double lam = static_cast<double>(step) / nsteps;
     for (int it = 0;; ++it) {
       double e;
-      PetscCheck(sys->internalForce(u->data(), f.data(), &K.val, &e), comm, PETSC_ERR_NOT_CONVERGED,
+      int adm = sys->internalForce(u->data(), f.data(), &K.val, &e) ? 1 : 0;
+      const double ext = partial_sums && rank > 0 ? 0.0 : lam; // the external force counts once
+      for (int i = 0; i < n; ++i) r[i] = f[i] - ext * f_ext[i];
+      if (partial_sums) {
+        PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &adm, 1, MPI_INT, MPI_MIN, comm));
+        PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, r.data(), n, MPI_DOUBLE, MPI_SUM, comm));
+        PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &e, 1, MPI_DOUBLE, MPI_SUM, comm));
+      }
+      PetscCheck(adm, comm, PETSC_ERR_NOT_CONVERGED,
                  "static solve: an element inverts (det F <= 0) at load step %d/%d; increase -load_steps",
                  step, nsteps);
-      for (int i = 0; i < n; ++i) r[i] = f[i] - lam * f_ext[i];
       res->residual = norm2(r);
       res->energy = e;
       if (res->residual <= rtol * std::max(fnorm, 1e-300) || it >= max_it) break;

@@ -1,4 +1,5 @@
-// Newmark time integration (Newmark 1959, J. Eng. Mech. Div. 85; beta = 1/4, gamma = 1/2 by default) of
+// Newmark time integration (Newmark 1959, J. Eng. Mech. Div. 85; beta = 1/4, gamma = 1/2 by default) and
+// generalized-alpha (Chung & Hulbert 1993, J. Appl. Mech. 60:371, alpha_m/alpha_f weights) of
 // M a + C v + f_int(u) = f_ext(t) with a Newton loop on the effective tangent K_eff = M/(beta dt^2) +
 // gamma/(beta dt) C + K_T (newton_max_it = 1: the linearly implicit variant), Rayleigh damping C = alpha M +
 // beta K0, and step rejection with dt halving when an element inverts (det F <= 0) or Newton fails.
@@ -14,12 +15,23 @@ namespace suite::fem {
 
 struct NewmarkParams {
   double beta = 0.25, gamma = 0.5;
+  // Generalized-alpha (Chung & Hulbert 1993): equilibrium at t_{n+1-alpha_f} with the inertia at
+  // a_{n+1-alpha_m}; 0, 0 is Newmark. Set all four from rho_inf with generalizedAlpha().
+  double alpha_m = 0, alpha_f = 0;
   int newton_max_it = 10;
   double newton_rtol = 1e-9, newton_atol = 1e-12;
   double rayleigh_mass = 0, rayleigh_stiffness = 0; // C = a M + b K0
   int max_halvings = 10;
   bool initial_jacobian = false; // modified Newton: K_eff from K0 (factor once per dt)
+  // Distributed assembly: the system's force, tangent, energy and the mass are this rank's partial sums; the
+  // residual (and energies, admissibility) are summed over the ranks of comm; the external force counts once.
+  bool partial_sums = false;
 };
+
+// Chung & Hulbert (1993), J. Appl. Mech. 60:371, eqs. (25) and (17): alpha_m = (2 rho - 1)/(rho + 1),
+// alpha_f = rho/(rho + 1), gamma = 1/2 - alpha_m + alpha_f, beta = (1 - alpha_m + alpha_f)^2 / 4 for the
+// spectral radius rho = rho_inf in [0, 1] at omega dt -> infinity (second order, unconditionally stable).
+NewmarkParams generalizedAlpha(NewmarkParams p, double rho_inf);
 
 struct StepTimings { // CPU seconds of the calling thread (fem/cpu_timer.hpp)
   double assemble = 0, factor = 0, solve = 0;
@@ -49,8 +61,13 @@ public:
 private:
   PetscErrorCode attempt(NewmarkState* s, double dt, StepTimings* tm, bool* ok);
   PetscErrorCode factorEffective(double dt, const std::vector<double>& Kt, StepTimings* tm, bool* ok);
+  // Partial sums: sum r over the ranks, AND the admissibility, zero the external force on ranks > 0.
+  PetscErrorCode sumResidual();
+  PetscErrorCode allAdmissible(bool* ok) const;
+  double sumScalar(double x) const;
 
   MPI_Comm comm_ = MPI_COMM_SELF;
+  int rank_ = 0;
   SecondOrderSystem* sys_ = nullptr;
   LinearSolver* solver_ = nullptr;
   NewmarkParams p_;
@@ -59,7 +76,7 @@ private:
   SymCsc Keff_;
   std::string reject_reason_; // why the last attempt was rejected
   double factored_dt_ = -1; // dt of the current factorisation when it is reusable (linear / modified Newton)
-  std::vector<double> r_, du_, f_, fe_, tmp_, tmp2_;
+  std::vector<double> r_, du_, f_, fe_, tmp_, tmp2_, ua_, va_, aa_;
 };
 
 // Static equilibrium f_int(u) = f_ext with load stepping (nsteps increments) and Newton per increment.
@@ -69,6 +86,6 @@ struct StaticResult {
 };
 PetscErrorCode solveStatic(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* solver,
                            const std::vector<double>& f_ext, int nsteps, int newton_max_it, double rtol,
-                           std::vector<double>* u, StaticResult* res);
+                           std::vector<double>* u, StaticResult* res, bool partial_sums = false);
 
 } // namespace suite::fem

@@ -36,3 +36,12 @@ def test_rate_and_orderings_figures(tmp_path):
             w.writerow(["can_24", o, v, 2 * v])
     assert main(["fem-orderings", str(orders), "--outdir", str(tmp_path)]) == 0
     assert (tmp_path / "fem_orderings.png").stat().st_size > 1000 and np.isfinite(1.0)
+
+
+def test_femdyn_probe_plot(tmp_path, run_suite):
+    out = tmp_path / "probe.h5"
+    run_suite("femdyn", "-probe", "-probe_stiffness", 100, "-beam_cells", "6,2,2", "-steps", 5, "-output", out)
+    with h5py.File(out, "r") as f:
+        assert len(f["probe/haptic_force"]) == 10 * len(f["probe/sync_time"])
+    assert main(["plot", str(out), "--outdir", str(tmp_path)]) == 0
+    assert (tmp_path / "femdyn_probe_probe.png").stat().st_size > 1000

@@ -79,6 +79,23 @@ def main(exe):
         for u in finals[1:]:
             diff = np.max(np.abs(u - ref)) / np.max(np.abs(ref))
             check(diff < 1e-8, f"orderings/solvers agree: max relative difference {diff:.2e}")
+        # TetGen 10-node (.ele with 10 nodes per tet, midside nodes in a shuffled order) -> the same P2 mesh as the
+        # generator's -order 2 beam: the same static tip deflection to round-off.
+        mesh = os.path.join(os.path.dirname(os.path.abspath(__file__)), "meshes", "beam4_p2")
+        with run(exe, p("tg.h5"), "-static", "-tip_load", 1, "-mesh", "file", "-mesh_file", mesh) as f:
+            wt, order = f.attrs["tip_deflection"], f.attrs["element_order"]
+        with run(exe, p("gen.h5"), "-static", "-tip_load", 1, "-beam_cells", "4,1,1", "-beam_length", 4, "-order",
+                 2) as f:
+            wg = f.attrs["tip_deflection"]
+        check(order == 2 and abs(wt - wg) <= 1e-10 * abs(wg),
+              f"TetGen 10-node mesh: P2, tip deflection {wt:.12f} = generated P2 beam {wg:.12f}")
+        # Newton not converged within -newton_max_it: the step is rejected and redone with halved dt; every
+        # accepted step converged (never accepted silently).
+        with run(exe, p("nc.h5"), "-material", "stvk", "-beam_cells", "8,2,2", "-tip_load", 5, "-dt", 0.2, "-steps", 5,
+                 "-newton_max_it", 3, "-newton_rtol", 1e-10) as f:
+            rej, conv = f["steps/rejected"][1:], f["steps/converged"][1:]
+            check(rej.sum() > 0 and np.all(conv == 1),
+                  f"non-converged Newton steps rejected and halved ({rej.sum()} rejections), all accepted converged")
     print(f"{len(fails)} failure(s)")
     return 1 if fails else 0
 

@@ -9,6 +9,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <cstdio>
+
 using namespace suite::fem;
 
 namespace {
@@ -183,4 +185,168 @@ TEST(FemNewmark, InadmissibleStepIsRejectedAndDtHalved) {
   femtest::QuietErrors quiet;
   EXPECT_NE(nm2.step(&s2, 0.1, &tm), 0);
   EXPECT_EQ(s2.t, 0.0); // nothing accepted
+}
+
+namespace {
+// Hardening spring f(u) = u + c u^3: Newton needs more iterations the larger the step.
+class CubicSpring final : public SecondOrderSystem {
+public:
+  explicit CubicSpring(double c) : c_(c) { K_.n = 1, K_.colptr = {0, 1}, K_.rowind = {0}, K_.val = {1.0}; }
+  const SymCsc& pattern() const override { return K_; }
+  bool internalForce(const double* u, double* f, std::vector<double>* K, double* energy) override {
+    f[0] = u[0] + c_ * u[0] * u[0] * u[0];
+    if (K) *K = {1.0 + 3 * c_ * u[0] * u[0]};
+    if (energy) *energy = 0.5 * u[0] * u[0] + 0.25 * c_ * u[0] * u[0] * u[0] * u[0];
+    return true;
+  }
+
+private:
+  SymCsc K_;
+  double c_;
+};
+
+struct CubicRun {
+  CubicSpring sys{50.0};
+  std::unique_ptr<LinearSolver> solver = makeSkylineSolver();
+  Newmark nm;
+  NewmarkState s;
+  explicit CubicRun(NewmarkParams p) {
+    SymCsc K = sys.pattern();
+    EXPECT_EQ(solver->analyze(PETSC_COMM_SELF, K, {0}), 0);
+    EXPECT_EQ(nm.setup(PETSC_COMM_SELF, &sys, solver.get(), {1.0}, p, [](double, double* f) { f[0] = 0; }),
+              0);
+    s.u = {0.0}, s.v = {3.0};
+    EXPECT_EQ(nm.initialize(&s), 0);
+  }
+};
+} // namespace
+
+// A step whose Newton iteration does not converge within newton_max_it is rejected and redone as two halves
+// (bitwise the same as stepping with dt/2 directly); with no halvings left it is a clear error, never accepted.
+TEST(FemNewmark, NonConvergedNewtonIsRejectedAndDtHalved) {
+  NewmarkParams p;
+  p.newton_max_it = 3;
+  p.newton_rtol = 1e-12;
+  p.newton_atol = 0;
+  // From u = 0, v = 3 Newton needs 4 iterations at dt = 0.2 (rejected with newton_max_it = 3) and <= 3 at
+  // dt = 0.1: exactly one rejection, then two accepted halves.
+  const double dt = 0.2;
+  CubicRun big(p);
+  StepTimings tm;
+  ASSERT_EQ(big.nm.step(&big.s, dt, &tm), 0);
+  EXPECT_EQ(tm.rejected, 1);
+  EXPECT_TRUE(tm.converged);
+  // Reference: the two halves taken directly.
+  CubicRun ref(p);
+  StepTimings tr;
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_EQ(ref.nm.step(&ref.s, dt / 2, &tr), 0);
+    EXPECT_EQ(tr.rejected, 0);
+  }
+  EXPECT_EQ(big.s.u[0], ref.s.u[0]);
+  EXPECT_EQ(big.s.v[0], ref.s.v[0]);
+  EXPECT_NEAR(big.s.t, dt, 1e-15);
+  // No halvings allowed: the non-converged step is an error and the state is unchanged.
+  p.max_halvings = 0;
+  CubicRun none(p);
+  femtest::QuietErrors quiet;
+  EXPECT_NE(none.nm.step(&none.s, dt, &tm), 0);
+  EXPECT_EQ(none.s.t, 0.0);
+  EXPECT_EQ(none.s.u[0], 0.0);
+}
+
+// Generalized-alpha (Chung & Hulbert 1993): second order on the undamped 1-DOF oscillator for several
+// rho_inf, and the spectral radius of the one-step amplification matrix at omega dt = 1e6 equals rho_inf
+// (the analytic limit; the O((omega dt)^-2) remainder is ~1e-12).
+TEST(FemGeneralizedAlpha, SecondOrderOnOscillator) {
+  const double w = 2.0, T = 5.0;
+  for (double rho : {0.0, 0.5, 0.8, 1.0}) {
+    double err[3];
+    for (int r = 0; r < 3; ++r) {
+      const int nsteps = 200 << r;
+      const double dt = T / nsteps;
+      SymCsc K;
+      K.n = 1, K.colptr = {0, 1}, K.rowind = {0}, K.val = {w * w};
+      LinearSecondOrderSystem sys(K);
+      auto solver = makeSkylineSolver();
+      ASSERT_EQ(solver->analyze(PETSC_COMM_SELF, K, {0}), 0);
+      Newmark nm;
+      ASSERT_EQ(nm.setup(PETSC_COMM_SELF, &sys, solver.get(), {1.0}, generalizedAlpha(NewmarkParams(), rho),
+                         [](double, double* f) { f[0] = 0; }),
+                0);
+      NewmarkState s;
+      s.u = {1.0}, s.v = {0.0};
+      ASSERT_EQ(nm.initialize(&s), 0);
+      StepTimings tm;
+      for (int k = 0; k < nsteps; ++k) ASSERT_EQ(nm.step(&s, dt, &tm), 0);
+      err[r] = std::hypot(s.u[0] - std::cos(w * T), (s.v[0] + w * std::sin(w * T)) / w);
+    }
+    const double p1 = std::log2(err[0] / err[1]), p2 = std::log2(err[1] / err[2]);
+    EXPECT_GE(p1, 1.95) << "rho_inf " << rho << " errors " << err[0] << " " << err[1];
+    EXPECT_GE(p2, 1.95) << "rho_inf " << rho << " errors " << err[1] << " " << err[2];
+    std::printf("generalized-alpha rho_inf %.1f: errors %.3e %.3e %.3e, observed order %.4f %.4f\n", rho,
+                err[0], err[1], err[2], p1, p2);
+  }
+}
+
+namespace {
+// Amplification matrix of generalized-alpha for u'' + w^2 u = 0 on the scaled state (u, dt v, dt^2 a), written
+// out from the scheme's three equations (Chung & Hulbert 1993, eqs. 3-5) independently of the Newmark class.
+Eigen::Matrix3d analyticAmplification(const NewmarkParams& p, double W) {
+  const double am = p.alpha_m, af = p.alpha_f, b = p.beta, g = p.gamma;
+  Eigen::Matrix3d A;
+  for (int j = 0; j < 3; ++j) {
+    const double x0 = j == 0, x1 = j == 1, x2 = j == 2;
+    const double a1 = -(am * x2 + W * W * x0 + W * W * (1 - af) * (x1 + (0.5 - b) * x2)) /
+                      ((1 - am) + W * W * (1 - af) * b);
+    A(0, j) = x0 + x1 + (0.5 - b) * x2 + b * a1;
+    A(1, j) = x1 + (1 - g) * x2 + g * a1;
+    A(2, j) = a1;
+  }
+  return A;
+}
+} // namespace
+
+// The one-step amplification matrix measured from Newmark::step (three unit states) equals the analytic one,
+// and its spectral radius (the numerical dissipation per step) matches the analytic spectral radius to 1e-6 at
+// large omega dt; the analytic radius tends to rho_inf (checked at omega dt = 1e6, to 5e-4: the approach is
+// O((omega dt)^-1), slower for rho_inf = 0 where the roots coalesce at 0).
+TEST(FemGeneralizedAlpha, SpectralRadiusAtLargeOmegaDt) {
+  for (double rho : {0.0, 0.3, 0.5, 0.8, 1.0}) {
+    const NewmarkParams p = generalizedAlpha(NewmarkParams(), rho);
+    for (double W : {10.0, 100.0, 1000.0}) {
+      const double dt = 1.0, w = W / dt;
+      SymCsc K;
+      K.n = 1, K.colptr = {0, 1}, K.rowind = {0}, K.val = {w * w};
+      LinearSecondOrderSystem sys(K);
+      auto solver = makeSkylineSolver();
+      ASSERT_EQ(solver->analyze(PETSC_COMM_SELF, K, {0}), 0);
+      Newmark nm;
+      ASSERT_EQ(nm.setup(PETSC_COMM_SELF, &sys, solver.get(), {1.0}, p, [](double, double* f) { f[0] = 0; }),
+                0);
+      Eigen::Matrix3d A;
+      for (int j = 0; j < 3; ++j) {
+        NewmarkState s;
+        s.u = {0.0}, s.v = {0.0}, s.a = {0.0};
+        ASSERT_EQ(nm.initialize(&s), 0);
+        s.u[0] = j == 0 ? 1.0 : 0.0;
+        s.v[0] = j == 1 ? 1.0 / dt : 0.0;
+        s.a[0] = j == 2 ? 1.0 / (dt * dt) : 0.0;
+        StepTimings tm;
+        ASSERT_EQ(nm.step(&s, dt, &tm), 0);
+        A(0, j) = s.u[0], A(1, j) = dt * s.v[0], A(2, j) = dt * dt * s.a[0];
+      }
+      const Eigen::Matrix3d Aa = analyticAmplification(p, W);
+      EXPECT_LT((A - Aa).cwiseAbs().maxCoeff(), 1e-12) << "rho_inf " << rho << " omega dt " << W;
+      const double radius = A.eigenvalues().cwiseAbs().maxCoeff();
+      const double analytic = Aa.eigenvalues().cwiseAbs().maxCoeff();
+      EXPECT_NEAR(radius, analytic, 1e-6) << "rho_inf " << rho << " omega dt " << W;
+      std::printf("generalized-alpha rho_inf %.1f, omega dt %g: spectral radius %.9f (analytic %.9f)\n", rho,
+                  W, radius, analytic);
+    }
+    const double limit = analyticAmplification(p, 1e6).eigenvalues().cwiseAbs().maxCoeff();
+    EXPECT_NEAR(limit, rho, 5e-4) << "rho_inf " << rho;
+    std::printf("generalized-alpha rho_inf %.1f: analytic spectral radius at omega dt = 1e6: %.6f\n", rho,
+                limit);
+  }
 }

@@ -1,0 +1,109 @@
+// FEM kernel benchmark (not a test): CPU time of the calling thread per call of the pieces of a full Newton
+// step -- internal force only, force + tangent, numeric factorisation per solver, one solve -- on the benchmark
+// meshes of scripts/bench/fem-rate, and the RCM ordering time against DOFs (node graph, expanded to DOFs).
+// Run with OPENBLAS_NUM_THREADS=1 for one-core numbers.
+// Usage: bench_fem [beam5k|block|beam1k|rcm|all]
+#include "fem/assembly.hpp"
+#include "fem/cpu_timer.hpp"
+#include "fem/linear_solver.hpp"
+#include "fem/material.hpp"
+#include "fem/mesh.hpp"
+#include "fem/ordering.hpp"
+
+#include <petscsys.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+
+using namespace suite::fem;
+
+namespace {
+
+// Minimum CPU time of one call over repetitions for 0.5 s (on a loaded machine the minimum is the least
+// disturbed measurement), in ms.
+double timeit(const std::function<void()>& f) {
+  f(); // warm up
+  double best = 1e300;
+  const double t0 = threadCpuSeconds();
+  do {
+    const double t = threadCpuSeconds();
+    f();
+    best = std::min(best, threadCpuSeconds() - t);
+  } while (threadCpuSeconds() - t0 < 0.5);
+  return 1e3 * best;
+}
+
+void kernels(const char* label, std::array<int, 3> cells, double length) {
+  BeamSpec s;
+  s.length = length;
+  s.cells = cells;
+  const TetMesh mesh = makeBeam(s);
+  Lame lame;
+  lameFromYoung(PETSC_COMM_SELF, 1000, 0.3, &lame);
+  auto mat = makeStVenantKirchhoff(lame);
+  std::vector<char> fixed(3 * mesh.numNodes(), 0);
+  for (int v : nodesOnPlane(mesh, 0, 0.0))
+    for (int c = 0; c < 3; ++c) fixed[3 * v + c] = 1;
+  ElasticModel model;
+  model.setup(PETSC_COMM_SELF, mesh, *mat, fixed);
+  const int n = model.numFree();
+  std::vector<double> u(n), f(n), K;
+  for (int i = 0; i < n; ++i) u[i] = 1e-3 * std::sin(0.1 * i);
+  const double tf = timeit([&] { model.internalForce(u.data(), f.data(), nullptr, nullptr); });
+  const double tk = timeit([&] { model.internalForce(u.data(), f.data(), &K, nullptr); });
+  std::printf("%s: %d tets, %d DOFs: internal force %.3f ms, force + tangent %.3f ms\n", label,
+              mesh.numElems(), n, tf, tk);
+  const auto M = model.consistentMass(1.0);
+  SymCsc A = model.pattern();
+  for (size_t k = 0; k < A.val.size(); ++k) A.val[k] = K[k] + 1e4 * M[k];
+  for (const auto& [ord, solver] :
+       {std::make_pair("rcm", "banded"), std::make_pair("rcm", "skyline"), std::make_pair("rcm", "cholmod"),
+        std::make_pair("amd", "cholmod"), std::make_pair("metis", "cholmod")}) {
+    OrderingFn fn;
+    findOrdering(PETSC_COMM_SELF, ord, &fn);
+    const auto perm = expandToDofs(fn(model.nodeGraphOf()), model.eq(), n);
+    std::unique_ptr<LinearSolver> ls;
+    createLinearSolver(PETSC_COMM_SELF, solver, &ls);
+    ls->analyze(PETSC_COMM_SELF, A, perm);
+    bool ok;
+    const double tfac = timeit([&] { ls->factor(A, &ok); });
+    std::vector<double> x(n);
+    const double tsol = timeit([&] { ls->solve(f.data(), x.data()); });
+    std::printf("  %s/%s: factor %.3f ms, solve %.3f ms (nnz(L) %lld, %.3g flops: %.1f GFlop/s)\n", ord,
+                solver, tfac, tsol, ls->stats().nnz_L, ls->stats().flops, ls->stats().flops / tfac * 1e-6);
+  }
+}
+
+void rcmScaling() {
+  for (const auto& c : {std::array<int, 3>{55, 5, 5}, std::array<int, 3>{110, 10, 10},
+                        std::array<int, 3>{23, 23, 23}, std::array<int, 3>{220, 14, 14}}) {
+    BeamSpec s;
+    s.cells = c;
+    const TetMesh mesh = makeBeam(s);
+    Graph g;
+    nodeGraph(mesh, &g.xadj, &g.adj);
+    g.n = mesh.numNodes();
+    std::vector<int> eq(3 * g.n);
+    for (int i = 0; i < 3 * g.n; ++i) eq[i] = i;
+    const double t = timeit([&] { expandToDofs(orderReverseCuthillMcKee(g), eq, 3 * g.n); });
+    std::printf("RCM %dx%dx%d: %d DOFs, node graph nnz %zu: %.3f ms (node graph, expanded to DOFs)\n", c[0],
+                c[1], c[2], 3 * g.n, g.adj.size(), t);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  PetscInitializeNoArguments();
+  const std::string what = argc > 1 ? argv[1] : "all";
+  if (what == "beam1k" || what == "all") kernels("beam-1k 37x2x2", {37, 2, 2}, 18.5);
+  if (what == "beam5k" || what == "all") kernels("beam-5k 104x3x3", {104, 3, 3}, 104 / 3.0);
+  if (what == "block" || what == "all") kernels("block-5k 20x8x8", {20, 8, 8}, 2.5);
+  if (what == "rcm" || what == "all") rcmScaling();
+  PetscFinalize();
+  return 0;
+}
