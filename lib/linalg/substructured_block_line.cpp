@@ -10,7 +10,7 @@
 namespace suite::linalg {
 namespace {
 
-// LU with partial pivoting of one bs x bs block; solve() applies its inverse to a bs x m row-major block.
+// LU with partial pivoting of one bs x bs block; solve() applies its inverse to a bs x ncols row-major block.
 template <int BS> struct SmallLU {
   double lu[BS * BS];
   int piv[BS];
@@ -36,52 +36,32 @@ template <int BS> struct SmallLU {
     }
     return true;
   }
-  // Fixed column count NC (unrolled), row stride `stride`.
-  template <int NC> void solveN(double* X, int stride) const {
+  // Applies the inverse to a bs x ncols block with row stride `stride`; NC > 0 fixes the column count at
+  // compile time (unrolled kernels), NC = 0 takes ncols.
+  template <int NC = 0> void solve(double* X, int stride, int ncols = NC) const {
+    const int nc = NC > 0 ? NC : ncols;
     for (int k = 0; k < BS; ++k)
       if (piv[k] != k)
-        for (int c = 0; c < NC; ++c) std::swap(X[k * stride + c], X[piv[k] * stride + c]);
+        for (int c = 0; c < nc; ++c) std::swap(X[k * stride + c], X[piv[k] * stride + c]);
     for (int i = 1; i < BS; ++i)
       for (int k = 0; k < i; ++k)
-        for (int c = 0; c < NC; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
+        for (int c = 0; c < nc; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
     for (int i = BS - 1; i >= 0; --i) {
       for (int k = i + 1; k < BS; ++k)
-        for (int c = 0; c < NC; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
-      const double inv = 1.0 / lu[i * BS + i];
-      for (int c = 0; c < NC; ++c) X[i * stride + c] *= inv;
-    }
-  }
-  void solve(double* X, int m) const {
-    for (int k = 0; k < BS; ++k)
-      if (piv[k] != k)
-        for (int c = 0; c < m; ++c) std::swap(X[k * m + c], X[piv[k] * m + c]);
-    for (int i = 1; i < BS; ++i)
-      for (int k = 0; k < i; ++k)
-        for (int c = 0; c < m; ++c) X[i * m + c] -= lu[i * BS + k] * X[k * m + c];
-    for (int i = BS - 1; i >= 0; --i) {
-      for (int k = i + 1; k < BS; ++k)
-        for (int c = 0; c < m; ++c) X[i * m + c] -= lu[i * BS + k] * X[k * m + c];
-      for (int c = 0; c < m; ++c) X[i * m + c] /= lu[i * BS + i];
+        for (int c = 0; c < nc; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
+      for (int c = 0; c < nc; ++c) X[i * stride + c] /= lu[i * BS + i];
     }
   }
 };
 
-// Y (bs x m) -= M (bs x bs) * X (bs x m), row-major with row strides m.
-template <int BS> inline void subtractProduct(const double* M, const double* X, int m, double* Y) {
+// Y (bs x ncols) -= M (bs x bs) * X (bs x ncols), rows of X and Y `stride` apart; NC > 0 fixes ncols.
+template <int BS, int NC = 0>
+inline void subtractProduct(const double* M, const double* X, int stride, double* Y, int ncols = NC) {
+  const int nc = NC > 0 ? NC : ncols;
   for (int a = 0; a < BS; ++a)
     for (int b = 0; b < BS; ++b) {
       const double v = M[a * BS + b];
-      for (int c = 0; c < m; ++c) Y[a * m + c] -= v * X[b * m + c];
-    }
-}
-
-// Y (bs x NC) -= M (bs x bs) * X (bs x NC), rows of X and Y `stride` apart.
-template <int BS, int NC>
-inline void subtractProductN(const double* M, const double* X, int stride, double* Y) {
-  for (int a = 0; a < BS; ++a)
-    for (int b = 0; b < BS; ++b) {
-      const double v = M[a * BS + b];
-      for (int c = 0; c < NC; ++c) Y[a * stride + c] -= v * X[b * stride + c];
+      for (int c = 0; c < nc; ++c) Y[a * stride + c] -= v * X[b * stride + c];
     }
 }
 
@@ -107,24 +87,24 @@ bool eliminateFixed(int n, const double* A, const double* B, const double* C, in
     for (int e = 0; e < bb; ++e) Bh[e] = B[(size_t)i * bb + e];
     double* Ri = R + (size_t)i * rs;
     if (i > 0) {
-      subtractProductN<BS, BS>(A + (size_t)i * bb, G + (size_t)(i - 1) * bb, BS, Bh);
-      subtractProductN<BS, NF>(A + (size_t)i * bb, Ri - rs, NB, Ri);
+      subtractProduct<BS, BS>(A + (size_t)i * bb, G + (size_t)(i - 1) * bb, BS, Bh);
+      subtractProduct<BS, NF>(A + (size_t)i * bb, Ri - rs, NB, Ri);
     }
     SmallLU<BS> lu;
     if (!lu.factor(Bh)) return false;
-    lu.template solveN<NF>(Ri, NB);
+    lu.template solve<NF>(Ri, NB);
     flushSpikes<BS>(Ri, nrhs, NF, NB);
     if constexpr (NB > NF) {
-      if (i + 1 == n) lu.template solveN<NB - NF>(Ri + NF, NB);
+      if (i + 1 == n) lu.template solve<NB - NF>(Ri + NF, NB);
     }
     if (i + 1 < n) {
       double* Gi = G + (size_t)i * bb;
       for (int e = 0; e < bb; ++e) Gi[e] = C[(size_t)i * bb + e];
-      lu.template solveN<BS>(Gi, BS);
+      lu.template solve<BS>(Gi, BS);
     }
   }
   for (int i = n - 2; i >= 0; --i) {
-    subtractProductN<BS, NB>(G + (size_t)i * bb, R + (size_t)(i + 1) * rs, NB, R + (size_t)i * rs);
+    subtractProduct<BS, NB>(G + (size_t)i * bb, R + (size_t)(i + 1) * rs, NB, R + (size_t)i * rs);
     flushSpikes<BS>(R + (size_t)i * rs, nrhs, NB, NB);
   }
   return true;
@@ -150,8 +130,8 @@ bool SubstructuredBlockLine::eliminate(int n, const double* A, const double* B, 
   } else {
     SUITE_FIXED(3, 3)
     SUITE_FIXED(4, 4)
-    SUITE_FIXED(3, 4) SUITE_FIXED(4, 5) SUITE_FIXED(1, 1) SUITE_FIXED(2, 2) SUITE_FIXED(1, 2)
-        SUITE_FIXED(2, 3)
+    SUITE_FIXED(3, 4)
+    SUITE_FIXED(4, 5) SUITE_FIXED(1, 1) SUITE_FIXED(2, 2) SUITE_FIXED(1, 2) SUITE_FIXED(2, 3)
   }
 #undef SUITE_FIXED
   const int rs = BS * m; // stride of one block row of R
@@ -160,21 +140,21 @@ bool SubstructuredBlockLine::eliminate(int n, const double* A, const double* B, 
     for (int e = 0; e < bb; ++e) Bh[e] = B[(size_t)i * bb + e];
     double* Ri = R + (size_t)i * rs;
     if (i > 0) {
-      subtractProduct<BS>(A + (size_t)i * bb, G_.data() + (size_t)(i - 1) * bb, BS, Bh);
-      subtractProduct<BS>(A + (size_t)i * bb, Ri - rs, m, Ri);
+      subtractProduct<BS>(A + (size_t)i * bb, G_.data() + (size_t)(i - 1) * bb, BS, Bh, BS);
+      subtractProduct<BS>(A + (size_t)i * bb, Ri - rs, m, Ri, m);
     }
     SmallLU<BS> lu;
     if (!lu.factor(Bh)) return false;
-    lu.solve(Ri, m);
+    lu.solve(Ri, m, m);
     flushSpikes<BS>(Ri, nrhs, m, m);
     if (i + 1 < n) {
       double* Gi = G_.data() + (size_t)i * bb;
       for (int e = 0; e < bb; ++e) Gi[e] = C[(size_t)i * bb + e];
-      lu.solve(Gi, BS);
+      lu.solve(Gi, BS, BS);
     }
   }
   for (int i = n - 2; i >= 0; --i) {
-    subtractProduct<BS>(G_.data() + (size_t)i * bb, R + (size_t)(i + 1) * rs, m, R + (size_t)i * rs);
+    subtractProduct<BS>(G_.data() + (size_t)i * bb, R + (size_t)(i + 1) * rs, m, R + (size_t)i * rs, m);
     flushSpikes<BS>(R + (size_t)i * rs, nrhs, m, m);
   }
   return true;

@@ -111,6 +111,9 @@ TEST(SubstructuredBlockLine, ScalarRowsWithThreeRightHandSides) {
     long long fb = -1;
     EXPECT_LE(check(1, 3, periodic, 0.6, &fb), 1e-12) << (periodic ? "periodic" : "open");
     EXPECT_EQ(fb, 0);
+    // 5 right-hand sides: a column count without an unrolled kernel (the generic elimination)
+    EXPECT_LE(check(1, 5, periodic, 0.6, &fb), 1e-12) << (periodic ? "periodic" : "open") << ", 5 rhs";
+    EXPECT_EQ(fb, 0);
   }
 }
 
