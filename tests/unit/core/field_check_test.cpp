@@ -1,4 +1,5 @@
 // Collective field checks: the first offending global index is found and reported as an error.
+#include "../test_helpers.hpp"
 #include "core/field_check.hpp"
 
 #include <gtest/gtest.h>
@@ -8,12 +9,8 @@
 
 namespace {
 
-template <typename F> PetscErrorCode quietly(F f) {
-  PetscPushErrorHandler(PetscIgnoreErrorHandler, nullptr);
-  PetscErrorCode ierr = f();
-  PetscPopErrorHandler();
-  return ierr;
-}
+using suite_test::fileExists;
+using suite_test::quietly;
 
 TEST(FieldCheck, FiniteDataPasses) {
   std::vector<double> d{1.0, 2.0, -3.0};

@@ -1,5 +1,6 @@
 // CheckpointPolicy: option checks, due() by step count, file naming, pruning to -checkpoint_keep, and
 // -restart latest picking the highest complete step (a .tmp left by a killed write is ignored).
+#include "../test_helpers.hpp"
 #include "io/checkpoint.hpp"
 #include "io/checkpoint_policy.hpp"
 
@@ -12,16 +13,8 @@
 
 namespace {
 
-bool fileExists(const std::string& p) {
-  return access(p.c_str(), F_OK) == 0;
-}
-
-template <typename F> PetscErrorCode quietly(F f) {
-  PetscPushErrorHandler(PetscIgnoreErrorHandler, nullptr);
-  PetscErrorCode ierr = f();
-  PetscPopErrorHandler();
-  return ierr;
-}
+using suite_test::fileExists;
+using suite_test::quietly;
 
 void setOptions(const char* text) {
   PetscOptionsClear(nullptr);

@@ -1,4 +1,5 @@
 // HDF5 writer/reader round trips, atomic commit, XDMF text, checkpoint header validation.
+#include "../test_helpers.hpp"
 #include "io/checkpoint.hpp"
 #include "io/h5_input.hpp"
 #include "io/h5_output.hpp"
@@ -12,17 +13,8 @@
 
 namespace {
 
-bool fileExists(const std::string& p) {
-  return access(p.c_str(), F_OK) == 0;
-}
-
-// Runs f with PETSc errors silenced (for expected failures) and returns its error code.
-template <typename F> PetscErrorCode quietly(F f) {
-  PetscPushErrorHandler(PetscIgnoreErrorHandler, nullptr);
-  PetscErrorCode ierr = f();
-  PetscPopErrorHandler();
-  return ierr;
-}
+using suite_test::fileExists;
+using suite_test::quietly;
 
 TEST(H5Output, RoundTripAttributesAndDatasets) {
   const std::string path = "unit_roundtrip.h5";

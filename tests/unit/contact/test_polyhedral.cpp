@@ -1,0 +1,116 @@
+// Polyhedral friction (Stewart & Trinkle 1996; Anitescu & Potra 1997; Lacoursiere SIGRAD 2003, Eq. 6):
+// every step's LCP of a small log heap is solved by Lemke itself (no fallback) and verified here on the
+// unscaled problem; the friction of each contact stays inside the polygon; on the incline the force ratio
+// reproduces min(tan th, mu) within the polygon's approximation error mu (1 - cos(pi / d)).
+#include "contact/scenes.hpp"
+#include "contact/stepper.hpp"
+#include "lcp/solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace suite::contact;
+namespace lcp = suite::lcp;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+// The LCP matrix: structure of Eq. 6 and the gamma compliance making it strictly copositive.
+TEST(ContactPolyhedral, LcpStructure) {
+  const int nc = 2, d = 4;
+  lcp::Mat A = lcp::Mat::Identity(nc * (1 + d), nc * (1 + d));
+  lcp::Vec b = lcp::Vec::Constant(nc * (1 + d), -1.0);
+  lcp::Problem p = polyhedralLcp(A, b, nc, d, 0.3);
+  ASSERT_EQ(p.size(), nc * (2 + d));
+  const int k = nc * (1 + d);
+  EXPECT_EQ(p.M(k + 1, 1), 0.3);                  // mu lambda_n
+  EXPECT_EQ(p.M(k + 1, nc + d + 2), -1.0);        // - e^T beta
+  EXPECT_EQ(p.M(nc + d + 2, k + 1), 1.0);         // D^T v + e gamma
+  EXPECT_EQ(p.M(nc + 2, k + 1), 0.0);             // other contact
+  EXPECT_EQ(p.q[k], 0.0);                         // cone rows have q = 0
+  const lcp::Vec s = polyhedralScaling(p, nc, d); // A = I: all ones
+  for (int i = 0; i < p.size(); ++i) EXPECT_DOUBLE_EQ(s[i], 1.0);
+}
+
+TEST(ContactPolyhedral, SmallLogHeapEveryStepVerified) {
+  SceneParams sp;
+  sp.scene = "log_heap";
+  sp.n_logs = 15;
+  auto bodies = buildScene(sp);
+  StepperOptions o;
+  o.friction = FrictionModel::Polyhedral;
+  o.mu = 0.4;
+  o.polyhedral_directions = 4;
+  Stepper stepper(o);
+  stepper.keepProblems(true);
+  int max_rows = 0, lemke_steps = 0, with_contacts = 0, fallbacks = 0;
+  double worst = 0.0, worst_cone = 0.0;
+  for (int s = 0; s < 150; ++s) {
+    StepStats st = stepper.step(&bodies);
+    ASSERT_FALSE(st.failed) << "step " << s + 1 << ": " << st.message;
+    if (st.contacts == 0) continue;
+    ++with_contacts;
+    ASSERT_EQ(stepper.lastProblems().size(), 1u);
+    const lcp::Problem& p = stepper.lastProblems().back();
+    const lcp::Vec& z = stepper.lastSolution();
+    ASSERT_EQ(z.size(), p.size());
+    const lcp::Vec w = lcp::slack(p, z);
+    const double r = lcp::naturalResidual(p, z, w);
+    EXPECT_LE(r, o.lcp_tol * (1 + p.q.lpNorm<Eigen::Infinity>())) << "step " << s + 1;
+    worst = std::max(worst, r / (1 + p.q.lpNorm<Eigen::Infinity>()));
+    EXPECT_GE(z.minCoeff(), -o.lcp_tol * (1 + p.q.lpNorm<Eigen::Infinity>()));
+    lemke_steps += st.solver == "lemke" || st.solver == "lemke_rf";
+    fallbacks += st.fallbacks;
+    max_rows = std::max(max_rows, p.size());
+    // friction inside the (slightly compliant) polygon: sum_j beta_ij <= mu lambda_n,i
+    const int nc = st.contacts, d = o.polyhedral_directions;
+    for (int i = 0; i < nc; ++i) {
+      double sb = 0.0;
+      for (int j = 0; j < d; ++j) sb += z[nc + i * d + j];
+      worst_cone = std::max(worst_cone, sb - o.mu * z[i]);
+    }
+  }
+  std::printf(
+      "polyhedral heap: %d steps with contacts, %d solved by Lemke (%d failed attempts before), largest "
+      "LCP %d, worst relative residual %.2e, worst cone excess %.2e N s\n",
+      with_contacts, lemke_steps, fallbacks, max_rows, worst, worst_cone);
+  EXPECT_GT(with_contacts, 100);
+  EXPECT_GT(max_rows, 100);              // a real heap, not a few isolated contacts
+  EXPECT_EQ(lemke_steps, with_contacts); // a pivoting method (the reference) solved every step
+  EXPECT_LE(worst_cone, 1e-6);
+}
+
+// Force ratio on the incline against min(tan th, mu): sticking is exact (the polygon contains the needed
+// force), sliding lies between the inscribed polygon's mu cos(pi / d) and mu.
+TEST(ContactPolyhedral, InclineForceRatio) {
+  const double mu = 0.5;
+  for (int d : {4, 8}) {
+    const double err = mu * (1 - std::cos(kPi / d));
+    for (double th : {10.0, 20.0, 25.0, 30.0, 40.0}) {
+      SceneParams sp;
+      sp.scene = "incline";
+      sp.theta_deg = th;
+      auto b = buildScene(sp);
+      StepperOptions o;
+      o.friction = FrictionModel::Polyhedral;
+      o.mu = mu;
+      o.polyhedral_directions = d;
+      Stepper stepper(o);
+      StepStats st;
+      for (int k = 0; k < 50; ++k) {
+        st = stepper.step(&b);
+        ASSERT_FALSE(st.failed) << st.message;
+      }
+      const double exact = std::min(std::tan(th * kPi / 180), mu);
+      std::printf("polyhedral d=%d theta %4.1f: ratio %.8f exact %.8f (bound %.4f)\n", d, th, st.force_ratio,
+                  exact, err);
+      if (std::tan(th * kPi / 180) <= mu * std::cos(kPi / d))
+        EXPECT_NEAR(st.force_ratio, exact, 1e-6) << "stick, d " << d << " theta " << th;
+      else
+        EXPECT_NEAR(st.force_ratio, exact, err + 1e-6) << "slide, d " << d << " theta " << th;
+      EXPECT_LE(st.force_ratio, mu + 1e-6);
+    }
+  }
+}
