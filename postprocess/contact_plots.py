@@ -135,6 +135,152 @@ def plot_incline(path, outdir):
     return [str(png)]
 
 
+# ---- log-heap experiments (Lacoursiere 2003, Figs. 5, 6, 8) ----
+
+PIVOT_SOLVERS = ("lemke", "keller", "cottle_dantzig", "murty", "bpp")
+NEWTON_SOLVERS = ("fb_newton", "smoothed_newton")
+
+
+def heap_histogram_stats(path):
+    """Per solver of an lcpbench result file (the heap's dumped problems replayed): dict with solved count,
+    failures, median and 90th percentile of pivots / n (pivoting) or iterations (Newton)."""
+    from .lcp_plots import read_batch
+
+    solvers, sizes, res = read_batch(path)
+    out = {}
+    for s in solvers:
+        r = res[s]
+        ok = r["status"] == 0
+        pivoting = s in PIVOT_SOLVERS and s != "bpp"
+        x = (r["pivots"] / sizes) if pivoting else r["iterations"].astype(float)
+        x = x[ok]
+        out[s] = {"solved": int(ok.sum()), "failed": int((~ok).sum()), "unit": "pivots/n" if pivoting else "iterations",
+                  "median": float(np.median(x)) if x.size else float("nan"),
+                  "p90": float(np.percentile(x, 90)) if x.size else float("nan"), "values": x,
+                  "median_n": float(np.median(sizes))}
+    return out
+
+
+def plot_heap_histograms(path, outdir):
+    """Iteration histograms of the pivoting (pivots / n) and Newton (iterations) solvers on the log heap's
+    dumped problems (an lcpbench -file result), as the paper's Figs. 5, 6."""
+    st = heap_histogram_stats(path)
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    plt = _plt()
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    for s, d in st.items():
+        ax = a1 if d["unit"] == "pivots/n" else a2
+        if d["values"].size:
+            ax.hist(d["values"], bins=30, histtype="step", lw=1.2,
+                    label=f"{s} (median {d['median']:.3g}, {d['failed']} failed)")
+    a1.set(xlabel="pivots / n", ylabel="problems", title="pivoting solvers")
+    a2.set(xlabel="iterations", ylabel="problems", title="Newton / block pivoting solvers")
+    for ax in (a1, a2):
+        if ax.has_data():
+            ax.legend(fontsize=7)
+    n = next(iter(st.values()))["median_n"] if st else 0
+    fig.suptitle(f"log heap: {Path(path).stem}, median problem size {n:.0f}")
+    fig.tight_layout()
+    png = Path(outdir) / f"contact_heap_histograms_{Path(path).stem}.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    for s, d in st.items():
+        print(f"{s}: {d['solved']} solved, {d['failed']} failed, median {d['median']:.4g} {d['unit']}, "
+              f"90% {d['p90']:.4g}")
+    return [str(png)]
+
+
+def splitting_convergence_stats(h5path, stagnation=0.9):
+    """Splitting error between iterates per pass over all steps of a run: median/max error per pass, and
+    per step the pass where it stagnates (error no longer shrinks by the factor `stagnation`) and the error
+    there."""
+    steps, _, attrs, _, split = read_run(h5path)
+    if not split:
+        raise ValueError(f"{h5path}: no splitting history (run with -friction splitting)")
+    off = split["offset"]
+    errs = [split["error"][off[s] + 1:off[s + 1]] for s in range(len(off) - 1)]  # pass 2.. (pass 1: |lambda|)
+    errs = [e for e in errs if len(e)]
+    kmax = max((len(e) for e in errs), default=0)
+    med = np.array([np.median([e[k] for e in errs if len(e) > k]) for k in range(kmax)])
+    mx = np.array([np.max([e[k] for e in errs if len(e) > k]) for k in range(kmax)])
+    stag_pass, stag_err = [], []
+    for e in errs:
+        k = next((i for i in range(1, len(e)) if e[i] > stagnation * e[i - 1]), None)
+        if k is not None:
+            stag_pass.append(k + 2)  # e[0] is the change at pass 2
+            stag_err.append(e[k])
+    return {"errors": errs, "median": med, "max": mx, "stag_pass": np.array(stag_pass),
+            "stag_err": np.array(stag_err), "steps": len(errs), "attrs": attrs}
+
+
+def plot_splitting_convergence(h5path, outdir):
+    """Error norm between splitting iterates against the iteration for every step of a run (log heap: the
+    paper's Fig. 8), the median curve, and where the iteration stagnates."""
+    d = splitting_convergence_stats(h5path)
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    top = max(float(d["max"].max()) if len(d["max"]) else 1.0, 1e-300)
+    floor = 1e-12 * top  # exact zeros (converged steps) are drawn at the floor
+    for e in d["errors"]:
+        ax.semilogy(np.arange(2, len(e) + 2), np.maximum(e, floor), color="0.6", lw=0.4, alpha=0.5)
+    k = np.arange(2, len(d["median"]) + 2)
+    ax.semilogy(k, np.maximum(d["median"], floor), "k-", lw=2, label="median over steps")
+    ax.semilogy(k, np.maximum(d["max"], floor), "r--", lw=1, label="max over steps")
+    ax.set_ylim(0.5 * floor, 2 * top)
+    if d["stag_pass"].size:
+        ax.axhline(np.median(d["stag_err"]), color="b", ls=":", lw=1,
+                   label=f"stagnation: median pass {np.median(d['stag_pass']):.0f}, level "
+                         f"{np.median(d['stag_err']):.2g}")
+    ax.set(xlabel="splitting iteration", ylabel="max |lambda_n^(k) - lambda_n^(k-1)| (N s)",
+           title=f"{d['attrs'].get('scene', '')}: splitting convergence, {d['steps']} steps")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    png = Path(outdir) / f"contact_{Path(h5path).stem}_split_convergence.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    print("pass  median_error  max_error")
+    for i, (a, b) in enumerate(zip(d["median"], d["max"])):
+        print(f"{i + 2:4d}  {a:.3e}  {b:.3e}")
+    if d["stag_pass"].size:
+        print(f"stagnation in {d['stag_pass'].size}/{d['steps']} steps: median pass {np.median(d['stag_pass']):.0f},"
+              f" median level {np.median(d['stag_err']):.3e}")
+    return [str(png)]
+
+
+def read_speed_accuracy(path):
+    """scripts/bench/contact-logheap --h5 output: /cases/<name>/ with attributes model, step_ms (median wall
+    per step), cpu_ms, cone_violation (mean relative), failed."""
+    rows = []
+    with h5py.File(path, "r") as f:
+        for name in f["cases"]:
+            a = f["cases"][name].attrs
+            rows.append({"name": name, **{k: _attr(v) for k, v in a.items()}})
+    return rows
+
+
+def plot_speed_accuracy(path, outdir):
+    """Wall time per step against the Coulomb-cone violation per friction model on the log heap."""
+    rows = [r for r in read_speed_accuracy(path) if not int(r.get("failed", 0))]
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for r in rows:
+        v = max(float(r["cone_violation"]), 1e-16)
+        ax.loglog(float(r["step_ms"]), v, "o")
+        ax.annotate(r["name"], (float(r["step_ms"]), v), fontsize=7, xytext=(4, 2), textcoords="offset points")
+    ax.set(xlabel="time per step (ms, median)", ylabel="cone violation sum max(0,|l_t|-mu l_n) / sum l_n",
+           title=f"log heap: speed against accuracy")
+    fig.tight_layout()
+    png = Path(outdir) / f"contact_speed_accuracy_{Path(path).stem}.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    print("case  step_ms  cone_violation")
+    for r in rows:
+        print(f"{r['name']}  {float(r['step_ms']):.3f}  {float(r['cone_violation']):.3e}")
+    return [str(png)]
+
+
 def register(sub):
     p = sub.add_parser("contact-incline", help="force ratio against tan(theta), splitting from zero/infinite "
                        "friction (scripts/bench/contact-incline output)")
@@ -145,6 +291,21 @@ def register(sub):
     p.add_argument("file")
     p.add_argument("--outdir", default="out")
     p.set_defaults(func=lambda a: _report(plot_splitting(a.file, a.outdir)))
+    p = sub.add_parser("contact-heap-histograms", help="iteration histograms of pivoting and Newton solvers on "
+                       "the log heap's dumped problems (lcpbench -file ... result file)")
+    p.add_argument("file")
+    p.add_argument("--outdir", default="out")
+    p.set_defaults(func=lambda a: _report(plot_heap_histograms(a.file, a.outdir)))
+    p = sub.add_parser("contact-split-convergence", help="error between splitting iterates against the "
+                       "iteration over all steps of a contact run, and where it stagnates")
+    p.add_argument("file")
+    p.add_argument("--outdir", default="out")
+    p.set_defaults(func=lambda a: _report(plot_splitting_convergence(a.file, a.outdir)))
+    p = sub.add_parser("contact-speed-accuracy", help="time per step against cone violation per friction "
+                       "model (scripts/bench/contact-logheap --h5 output)")
+    p.add_argument("file")
+    p.add_argument("--outdir", default="out")
+    p.set_defaults(func=lambda a: _report(plot_speed_accuracy(a.file, a.outdir)))
 
 
 def _report(pngs):

@@ -1,6 +1,7 @@
 // Options of the contact app (see contact_options.hpp).
 #include "contact_options.hpp"
 
+#include "contact/lemke_rf.hpp"
 #include "lcp/solver.hpp"
 
 #include <cmath>
@@ -22,11 +23,15 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   SceneParams& s = o->scene;
   StepperOptions& t = o->step;
   char scene[64] = "incline", friction[64] = "splitting", solver[64] = "", start[64] = "previous",
-       fallback[256] = "", drop_body[64] = "sphere", file[PETSC_MAX_PATH_LEN] = "";
+       fallback[256] = "", poly_solvers[256] = "", drop_body[64] = "sphere", file[PETSC_MAX_PATH_LEN] = "";
   PetscCall(PetscStrncpy(solver, t.lcp_solver.c_str(), sizeof solver));
   std::string fb;
   for (auto& f : t.fallback_solvers) fb += (fb.empty() ? "" : ",") + f;
   PetscCall(PetscStrncpy(fallback, fb.c_str(), sizeof fallback));
+  std::string ps;
+  for (auto& f : t.polyhedral_solvers) ps += (ps.empty() ? "" : ",") + f;
+  PetscCall(PetscStrncpy(poly_solvers, ps.c_str(), sizeof poly_solvers));
+  PetscBool poly_scaling = t.polyhedral_scaling ? PETSC_TRUE : PETSC_FALSE;
   PetscReal g = 9.81;
   PetscInt stack = s.stack_height, base = s.pyramid_base, nlogs = s.n_logs, seed = (PetscInt)s.seed,
            dirs = t.polyhedral_directions, split_it = t.splitting_max_it, lcp_it = t.lcp_max_iterations;
@@ -88,6 +93,13 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
                              nullptr, t.splitting_tol, &t.splitting_tol, nullptr));
   PetscCall(PetscOptionsInt("-polyhedral_directions", "Polyhedral: friction directions per contact", nullptr,
                             dirs, &dirs, nullptr));
+  PetscCall(PetscOptionsString("-polyhedral_solvers",
+                               "Polyhedral: solver chain, first the reference (each answer verified)",
+                               nullptr, poly_solvers, poly_solvers, sizeof poly_solvers, nullptr));
+  PetscCall(PetscOptionsReal("-polyhedral_gamma_reg", "Polyhedral: compliance of the cone rows (x 1/A_tt)",
+                             nullptr, t.polyhedral_gamma_reg, &t.polyhedral_gamma_reg, nullptr));
+  PetscCall(PetscOptionsBool("-polyhedral_scaling", "Polyhedral: equilibrate the LCP before solving", nullptr,
+                             poly_scaling, &poly_scaling, nullptr));
   PetscBool sleep = t.sleep ? PETSC_TRUE : PETSC_FALSE;
   PetscInt sleep_steps = t.sleep_steps;
   PetscCall(PetscOptionsBool("-sleep",
@@ -123,6 +135,8 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   t.fallback_solvers = splitList(fallback);
   t.lcp_max_iterations = (int)lcp_it;
   t.polyhedral_directions = (int)dirs;
+  t.polyhedral_solvers = splitList(poly_solvers);
+  t.polyhedral_scaling = poly_scaling;
   t.splitting_max_it = (int)split_it;
   PetscCheck(frictionFromName(friction, &t.friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model (none, box, scaled_box, splitting, polyhedral)", friction);
@@ -131,11 +145,16 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   std::string names;
   for (auto& n : suite::lcp::solverNames()) names += (names.empty() ? "" : ", ") + n;
   for (const auto& n : std::vector<std::string>{t.lcp_solver}) {
-    PetscCheck(suite::lcp::makeSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    PetscCheck(makeContactSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-lcp_solver %s: unknown solver (%s)", n.c_str(), names.c_str());
   }
+  PetscCheck(!t.polyhedral_solvers.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-polyhedral_solvers: needs at least one solver");
+  for (const auto& n : t.polyhedral_solvers)
+    PetscCheck(makeContactSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-polyhedral_solvers: unknown solver %s (%s, lemke_rf)", n.c_str(), names.c_str());
   for (const auto& n : t.fallback_solvers)
-    PetscCheck(suite::lcp::makeSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    PetscCheck(makeContactSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-fallback_solvers: unknown solver %s (%s)", n.c_str(), names.c_str());
   PetscCheck(t.lcp_tol > 0 && t.lcp_tol < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-lcp_tol %g: must be in (0, 1)",
              (double)t.lcp_tol);

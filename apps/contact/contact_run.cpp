@@ -1,6 +1,7 @@
 // The contact app's run (see contact_run.hpp).
 #include "contact_run.hpp"
 
+#include "contact_checkpoint.hpp"
 #include "contact_options.hpp"
 #include "contact_output.hpp"
 
@@ -8,6 +9,7 @@
 #include "core/log_stages.hpp"
 #include "core/progress.hpp"
 #include "core/run_context.hpp"
+#include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/readers.hpp"
 #include "lcp/solver.hpp"
@@ -25,6 +27,8 @@ PetscErrorCode run(suite::RunContext& ctx) {
   PetscCall(PetscLogStagePush(stages.setup));
   AppOptions o;
   PetscCall(readOptions(ctx.comm(), &o));
+  suite::CheckpointPolicy policy;
+  PetscCall(policy.setFromOptions(ctx.comm(), "contact"));
   PetscCall(ctx.checkUnusedOptions());
   if (ctx.helpRequested()) {
     PetscCall(PetscLogStagePop());
@@ -55,6 +59,18 @@ PetscErrorCode run(suite::RunContext& ctx) {
   PetscCall(PetscLogStagePush(stages.solve));
   Stepper stepper(o.step);
   stepper.keepProblems(o.dump[0] != 0);
+  const std::string scheme = checkpointScheme(o.scene.scene, o.step.friction);
+  long long s0 = 0;
+  double t = 0.0;
+  if (policy.restartRequested()) {
+    std::string path;
+    PetscCall(policy.restartPath(&path));
+    PetscCall(readContactCheckpoint(ctx.comm(), path, scheme, o.step.dt, &bodies, &stepper, &s0, &t));
+    PetscCheck(s0 <= o.steps, ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE,
+               "restart %s: checkpoint at step %lld is past -steps %d", path.c_str(), s0, (int)o.steps);
+    PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "restarted from %s at step %lld (t = %g)", path.c_str(),
+                             s0, t));
+  }
   Recorder rec;
   OutputInfo info{o.scene.scene,
                   frictionName(o.step.friction),
@@ -67,16 +83,21 @@ PetscErrorCode run(suite::RunContext& ctx) {
                   (long long)o.steps,
                   0};
   info.simplifications = simplifications(o, bodies);
-  rec.frame(bodies, 0, 0.0);
+  rec.frame(bodies, s0, t);
   suite::Progress progress(ctx.comm(), ctx.quiet(), ctx.progressInterval(), o.steps * o.step.dt);
-  double t = 0.0;
   long long dumped = 0;
   std::string failure;
-  PetscInt s = 0;
+  PetscInt s = (PetscInt)s0;
   for (; s < o.steps; ++s) {
     bool stop = false;
     PetscCall(ctx.stopRequested(&stop));
     if (stop) {
+      if (policy.enabled()) {
+        PetscCall(writeContactCheckpoint(ctx.comm(), policy.pathForStep(s), scheme, s, t, o.step.dt, bodies,
+                                         stepper));
+        PetscCall(policy.written(s));
+        PetscCall(suite::logInfo(ctx.comm(), false, "final checkpoint %s", policy.pathForStep(s).c_str()));
+      }
       info.status = "stopped at step " + std::to_string(s) + " (" + ctx.stopReason() + ")";
       PetscCall(suite::logInfo(ctx.comm(), false, "stop requested (%s) at step %d", ctx.stopReason().c_str(),
                                (int)s));
@@ -106,6 +127,13 @@ PetscErrorCode run(suite::RunContext& ctx) {
     t += o.step.dt;
     rec.step(st, t, mechanicalEnergy(bodies, o.step.gravity), wall);
     if ((s + 1) % o.output_every == 0 || s + 1 == o.steps) rec.frame(bodies, s + 1, t);
+    bool due = false;
+    PetscCall(policy.due(s + 1, &due));
+    if (due) {
+      PetscCall(writeContactCheckpoint(ctx.comm(), policy.pathForStep(s + 1), scheme, s + 1, t, o.step.dt,
+                                       bodies, stepper));
+      PetscCall(policy.written(s + 1));
+    }
     PetscCall(progress.update(s + 1, t, o.step.dt));
   }
   info.steps_done = s;

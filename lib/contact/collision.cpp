@@ -186,7 +186,8 @@ void sphereBox(int a, const Vec3& c, double r, const Body& B, int b, double marg
   push(out, a, b, c - r * n, n, -best - r, feature);
 }
 
-// Box-box: separating axis over the six face axes, then the incident face clipped by the reference face.
+// Box-box: separating axis over the six face axes and the nine edge-edge axes; a face axis gives the incident
+// face clipped by the reference face (up to 4 points), an edge-edge axis one point between the two edges.
 void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) {
   const Mat3 Ra = A.R(), Rb = B.R();
   const Vec3 d = B.x - A.x;
@@ -206,7 +207,45 @@ void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) 
       if (s > best + bias) best = s, owner = o, axis = k;
     }
   }
-  if (best >= margin) return;
+  // the nine edge-edge axes (Gottschalk, Lin & Manocha 1996): taken only when clearly better than every face
+  // axis, so that face contacts (several points) are kept for resting and stacked boxes
+  const double scale = A.shape.half.norm() + B.shape.half.norm();
+  int ei = -1, ej = -1;
+  double ebest = best;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Vec3 L = Ra.col(i).cross(Rb.col(j));
+      const double ln = L.norm();
+      if (ln < 1e-6) continue; // parallel edges: a face axis separates as well
+      L /= ln;
+      double ra = 0, rb = 0;
+      for (int k = 0; k < 3; ++k) {
+        ra += A.shape.half[k] * std::abs(L.dot(Ra.col(k)));
+        rb += B.shape.half[k] * std::abs(L.dot(Rb.col(k)));
+      }
+      const double s = std::abs(d.dot(L)) - ra - rb;
+      if (s > ebest + 1e-4 * scale) ebest = s, ei = i, ej = j;
+    }
+  if (std::max(best, ebest) >= margin) return;
+  if (ei >= 0) {
+    Vec3 L = Ra.col(ei).cross(Rb.col(ej)).normalized();
+    if (L.dot(d) < 0) L = -L; // from A towards B
+    Vec3 pa = A.x, pb = B.x;  // centres of the nearest edges
+    for (int k = 0; k < 3; ++k) {
+      if (k != ei) pa += (L.dot(Ra.col(k)) > 0 ? 1.0 : -1.0) * A.shape.half[k] * Ra.col(k);
+      if (k != ej) pb -= (L.dot(Rb.col(k)) > 0 ? 1.0 : -1.0) * B.shape.half[k] * Rb.col(k);
+    }
+    // closest points of the two edge lines pa + s ua, pb + t ub, clamped to the edges
+    const Vec3 ua = Ra.col(ei), ub = Rb.col(ej), w = pa - pb;
+    const double bb = ua.dot(ub), dd = ua.dot(w), ee = ub.dot(w), den = 1.0 - bb * bb;
+    double sa = den > 1e-12 ? (bb * ee - dd) / den : 0.0;
+    sa = std::clamp(sa, -A.shape.half[ei], A.shape.half[ei]);
+    double tb = std::clamp(ee + bb * sa, -B.shape.half[ej], B.shape.half[ej]);
+    sa = std::clamp(bb * tb - dd, -A.shape.half[ei], A.shape.half[ei]);
+    const Vec3 ca = pa + sa * ua, cb = pb + tb * ub;
+    push(out, a, b, 0.5 * (ca + cb), -L, (cb - ca).dot(L), 0); // normal from b into a
+    return;
+  }
   const Body& Rf = owner == 0 ? A : B;
   const Body& In = owner == 0 ? B : A;
   const Mat3& Rr = owner == 0 ? Ra : Rb;

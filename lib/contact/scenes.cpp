@@ -171,13 +171,29 @@ Vec3 parseVec(const std::string& where, const std::string& key, const std::strin
 } // namespace
 
 std::vector<Body> readSceneFile(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   require((bool)in, "scene file " + path + ": cannot open");
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  require(size >= 0 && size <= kMaxSceneBytes,
+          "scene file " + path + ": larger than " + std::to_string(kMaxSceneBytes) + " bytes");
+  in.seekg(0);
+  std::string text((size_t)size, '\0');
+  in.read(&text[0], size);
+  return parseScene(text, path);
+}
+
+std::vector<Body> parseScene(const std::string& text, const std::string& path) {
+  require(text.size() <= (size_t)kMaxSceneBytes,
+          "scene file " + path + ": larger than " + std::to_string(kMaxSceneBytes) + " bytes");
+  std::istringstream in(text);
   std::vector<Body> bodies;
   std::string line;
   int lineno = 0;
   while (std::getline(in, line)) {
     ++lineno;
+    require(bodies.size() < (size_t)kMaxSceneBodies, path + ":" + std::to_string(lineno) + ": more than " +
+                                                         std::to_string(kMaxSceneBodies) + " bodies");
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
     std::stringstream ss(line);

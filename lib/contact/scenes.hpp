@@ -39,6 +39,11 @@ std::vector<std::string> sceneNames();
 // Throws SceneError with a one-line message for bad parameters or an unknown scene.
 std::vector<Body> buildScene(const SceneParams& p);
 std::vector<Body> readSceneFile(const std::string& path);
+// The parser itself, MPI- and PETSc-free, on the file content (path names the errors): throws SceneError
+// (a std::runtime_error) on any bad input; memory is bounded by the limits below.
+constexpr long long kMaxSceneBytes = 64LL << 20;
+constexpr int kMaxSceneBodies = 1000000;
+std::vector<Body> parseScene(const std::string& text, const std::string& path = "scene");
 // Throws SceneError if two static bodies (other than planes) overlap by more than tol.
 void validateScene(const std::vector<Body>& bodies, double tol);
 // A static plane with world normal n through point.

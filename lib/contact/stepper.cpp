@@ -3,11 +3,13 @@
 // (box MLCP, Eq. 6 linearised cone, operator splitting). See stepper.hpp for the formulation.
 #include "contact/stepper.hpp"
 
+#include "contact/lemke_rf.hpp"
 #include "lcp/solver.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace suite::contact {
 
@@ -177,6 +179,69 @@ void forceMeasures(const std::vector<Contact>& cs, const std::vector<Vec3>& lam,
 
 } // namespace
 
+lcp::Problem polyhedralLcp(const lcp::Mat& A, const lcp::Vec& b, int nc, int d, double mu) {
+  const int m = nc * (2 + d), k = nc * (1 + d);
+  Mat M = Mat::Zero(m, m);
+  LVec q = LVec::Zero(m);
+  M.topLeftCorner(k, k) = A;
+  q.head(k) = b;
+  for (int i = 0; i < nc; ++i) {
+    M(k + i, i) = mu;
+    for (int j = 0; j < d; ++j) {
+      M(nc + i * d + j, k + i) = 1.0;
+      M(k + i, nc + i * d + j) = -1.0;
+    }
+  }
+  return lcp::makeLcp(M, q, "polyhedral");
+}
+
+lcp::Vec polyhedralScaling(const lcp::Problem& p, int nc, int d) {
+  const int k = nc * (1 + d);
+  LVec s(p.size());
+  for (int r = 0; r < k; ++r) s[r] = p.M(r, r) > 0 ? 1.0 / std::sqrt(p.M(r, r)) : 1.0;
+  for (int i = 0; i < nc; ++i) {
+    double a = 0.0; // gamma_i couples to beta_ij with unit entries: scale it by the mean sqrt(A_bb)
+    for (int j = 0; j < d; ++j) a += 1.0 / s[nc + i * d + j];
+    s[k + i] = a / d;
+  }
+  return s;
+}
+
+void Stepper::exportState(int nb, std::vector<double>* bs, std::vector<double>* cs) const {
+  bs->assign(2 * (size_t)nb, 0.0);
+  for (int i = 0; i < nb && i < (int)still_.size(); ++i) (*bs)[2 * i] = still_[i];
+  for (int i = 0; i < nb && i < (int)asleep_.size(); ++i) (*bs)[2 * i + 1] = asleep_[i];
+  cs->clear();
+  for (size_t i = 0; i < prev_contacts_.size(); ++i) {
+    const Contact& c = prev_contacts_[i];
+    const Vec3& l = prev_impulses_[i];
+    cs->insert(cs->end(), {(double)c.a, (double)c.b, c.p.x(), c.p.y(), c.p.z(), l.x(), l.y(), l.z()});
+  }
+}
+
+void Stepper::importState(int nb, const std::vector<double>& bs, const std::vector<double>& cs) {
+  if (bs.size() != 2 * (size_t)nb || cs.size() % 8 != 0)
+    throw std::runtime_error("stepper state: inconsistent sizes");
+  still_.assign(nb, 0);
+  asleep_.assign(nb, 0);
+  for (int i = 0; i < nb; ++i) {
+    still_[i] = (int)bs[2 * i];
+    asleep_[i] = bs[2 * i + 1] != 0.0;
+  }
+  prev_contacts_.clear();
+  prev_impulses_.clear();
+  for (size_t k = 0; k < cs.size(); k += 8) {
+    Contact c;
+    c.a = (int)cs[k];
+    c.b = (int)cs[k + 1];
+    if (c.a < 0 || c.a >= nb || c.b < 0 || c.b >= nb || c.a != cs[k] || c.b != cs[k + 1])
+      throw std::runtime_error("stepper state: contact body index out of range");
+    c.p = Vec3(cs[k + 2], cs[k + 3], cs[k + 4]);
+    prev_contacts_.push_back(c);
+    prev_impulses_.push_back(Vec3(cs[k + 5], cs[k + 6], cs[k + 7]));
+  }
+}
+
 StepStats Stepper::step(std::vector<Body>* bodies_ptr) {
   if (!o_.sleep) return stepBodies(bodies_ptr);
   std::vector<Body>& real = *bodies_ptr;
@@ -215,6 +280,7 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   std::vector<Body>& bodies = *bodies_ptr;
   StepStats st;
   problems_.clear();
+  solution_.resize(0);
   const int nb = (int)bodies.size();
   contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt);
   const std::vector<Contact>& cs = contacts_;
@@ -250,44 +316,85 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
     return k ? o_.gravity.norm() * o_.dt * e / k : 0.0;
   };
 
-  auto solveOne = [&](const lcp::Problem& p, const LVec* warm, lcp::Result* res) -> bool {
+  // Tries the solvers in turn on p (or on its scaled form diag(scale) M diag(scale), diag(scale) q when
+  // scale is given: z = diag(scale) z'); an answer is accepted when its natural-map residual on the
+  // ORIGINAL problem meets lcp_tol, after at most two active-set refinements (exact solves on the index sets
+  // read off the answer, which repair the round-off a long pivot sequence leaves).
+  auto solveWith = [&](const lcp::Problem& p, const std::vector<std::string>& names, const LVec* scale,
+                       const LVec* warm, lcp::Result* res) -> bool {
     if (keep_problems_ || problems_.empty())
       problems_.push_back(p);
     else
       problems_.back() = p; // always keep the last one (dumped on failure)
-    std::vector<std::string> names{o_.lcp_solver};
-    for (const auto& f : o_.fallback_solvers)
-      if (f != o_.lcp_solver) names.push_back(f);
+    lcp::Problem ps;
+    if (scale) {
+      ps = p;
+      ps.M = scale->asDiagonal() * p.M * scale->asDiagonal();
+      ps.q = scale->cwiseProduct(p.q);
+      ps.l = p.l.cwiseQuotient(*scale);
+      ps.u = p.u.cwiseQuotient(*scale);
+    }
+    const double tol = lcp::acceptanceTolerance(p, o_.lcp_tol);
     std::ostringstream why;
-    for (size_t k = 0; k < names.size(); ++k) {
-      auto s = lcp::makeSolver(names[k]);
+    // each solver on the scaled problem, then (if that failed) on the original one
+    for (size_t att = 0; att < names.size() * (scale ? 2 : 1); ++att) {
+      const size_t k = scale ? att / 2 : att;
+      const LVec* sc = scale && att % 2 == 0 ? scale : nullptr;
+      const lcp::Problem& solved = sc ? ps : p;
+      auto s = makeContactSolver(names[k]);
       if (!s) {
         why << names[k] << ": unknown solver; ";
         continue;
       }
       lcp::SolverOptions so;
-      so.rel_tol = o_.lcp_tol;
+      // the natural-map residual is not scale invariant: the scaled problem is solved 1000x tighter so that
+      // the unscaled answer meets lcp_tol (the methods converge fast near a solution; verified below)
+      so.rel_tol = sc ? 1e-3 * o_.lcp_tol : o_.lcp_tol;
       if (k == 0) so.max_iterations = o_.lcp_max_iterations; // the cap is for the primary solver only
-      if (o_.warm_start && warm && warm->size() == p.size() && warm->allFinite()) so.warm_start = warm;
-      *res = lcp::solve(*s, p, so);
+      LVec warm_s;
+      if (o_.warm_start && warm && warm->size() == p.size() && warm->allFinite()) {
+        warm_s = sc ? LVec(warm->cwiseQuotient(*sc)) : *warm;
+        so.warm_start = &warm_s;
+      }
+      *res = lcp::solve(*s, solved, so);
       st.iterations += res->iterations;
       st.pivots += res->pivots;
-      // Adapter: a z whose verified natural-map residual meets the library's acceptance rule is a solution
-      // even when the method reported another status (seen: Lemke 'ray_termination' with residual 1e-14).
-      const bool verified = res->z.size() == p.size() && res->z.allFinite() &&
-                            res->residual <= lcp::acceptanceTolerance(p, so.rel_tol);
-      if ((res->ok() && res->z.allFinite()) || verified) {
+      const lcp::Status status = res->status;
+      if (res->z.size() == p.size() && res->z.allFinite()) {
+        if (sc) res->z = sc->cwiseProduct(res->z);
+        lcp::evaluate(p, res); // residual on the original problem
+        for (int r = 0; r < 2 && !(res->residual <= tol); ++r) {
+          lcp::Result t = *res;
+          if (!lcp::solveStates(p, lcp::statesFromSolution(p, res->z, res->w), &t.z)) break;
+          lcp::evaluate(p, &t);
+          if (!(t.residual < res->residual)) break;
+          *res = t;
+          ++st.refinements;
+        }
+      }
+      // Adapter: a z whose verified natural-map residual meets the acceptance rule is a solution even when
+      // the method reported another status (seen: Lemke 'ray_termination' with residual 1e-14).
+      const bool verified = res->z.size() == p.size() && res->z.allFinite() && res->residual <= tol;
+      if (verified) {
+        res->status = lcp::Status::Solved;
+        solution_ = res->z;
         st.solver = names[k];
         st.residual = std::max(st.residual, res->residual);
         return true;
       }
       ++st.fallbacks;
-      why << names[k] << ": " << lcp::statusName(res->status) << " (residual " << res->residual
-          << (res->message.empty() ? "" : ", " + res->message) << "); ";
+      why << names[k] << (scale ? (sc ? " (scaled)" : " (unscaled)") : "") << ": " << lcp::statusName(status)
+          << " (residual " << res->residual << (res->message.empty() ? "" : ", " + res->message) << "); ";
     }
     st.failed = true;
     st.message = "contact problem of size " + std::to_string(p.size()) + " not solved: " + why.str();
     return false;
+  };
+  auto solveOne = [&](const lcp::Problem& p, const LVec* warm, lcp::Result* res) -> bool {
+    std::vector<std::string> names{o_.lcp_solver};
+    for (const auto& f : o_.fallback_solvers)
+      if (f != o_.lcp_solver) names.push_back(f);
+    return solveWith(p, names, nullptr, warm, res);
   };
 
   if (nc > 0 && o_.friction == FrictionModel::Polyhedral && friction) {
@@ -296,7 +403,6 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
     std::vector<std::pair<int, Vec3>> dirs;
     std::vector<bool> isn;
     for (int i = 0; i < nc; ++i) dirs.push_back({i, cs[i].n}), isn.push_back(true);
-    std::vector<Vec3> dvec;
     for (int i = 0; i < nc; ++i)
       for (int j = 0; j < d; ++j) {
         const double a = 2 * M_PI * j / d;
@@ -305,24 +411,19 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
       }
     System sys = buildSystem(bodies, inv_i, vstar, cs, dirs, isn, o_);
     const int m = nc * (2 + d), k = nc * (1 + d);
-    Mat M = Mat::Zero(m, m);
-    LVec q = LVec::Zero(m);
-    M.topLeftCorner(k, k) = sys.A;
-    q.head(k) = sys.b;
-    for (int i = 0; i < nc; ++i) {
-      M(k + i, i) = o_.mu;
-      for (int j = 0; j < d; ++j) {
-        M(nc + i * d + j, k + i) = 1.0;
-        M(k + i, nc + i * d + j) = -1.0;
+    lcp::Problem p = polyhedralLcp(sys.A, sys.b, nc, d, o_.mu);
+    if (o_.polyhedral_gamma_reg > 0)
+      for (int i = 0; i < nc; ++i) {
+        double abb = 0.0;
+        for (int j = 0; j < d; ++j) abb += sys.A(nc + i * d + j, nc + i * d + j) / d;
+        p.M(k + i, k + i) = o_.polyhedral_gamma_reg / abb;
       }
-    }
-    lcp::Problem p = lcp::makeLcp(M, q, "polyhedral");
     lcp::Result res;
-    const std::string keep = o_.lcp_solver;
-    o_.lcp_solver = "lemke";
-    const bool ok = solveOne(p, nullptr, &res);
-    o_.lcp_solver = keep;
-    if (!ok) return st;
+    std::vector<std::string> names = o_.polyhedral_solvers;
+    if (names.empty()) names = {o_.lcp_solver};
+    LVec scale;
+    if (o_.polyhedral_scaling) scale = polyhedralScaling(p, nc, d);
+    if (!solveWith(p, names, o_.polyhedral_scaling ? &scale : nullptr, nullptr, &res)) return st;
     st.rows = m;
     for (int i = 0; i < nc; ++i) {
       lam[i][0] = res.z[i];

@@ -18,7 +18,9 @@
 //               step's normal impulses (paper, sec. 4);
 //   polyhedral  the linearised cone LCP (paper, Eq. 6; Stewart & Trinkle 1996) with d directions per contact:
 //               [lambda_n, beta, gamma], D^T v + e gamma >= 0 _|_ beta >= 0, mu lambda_n - e^T beta >= 0 _|_
-//               gamma >= 0, solved by Lemke.
+//               gamma >= 0, with a compliance eps gamma on the cone rows (strictly copositive matrix), equilibrated
+//               by a diagonal scaling, solved by Lemke (then lemke_rf, the Newton methods; every answer
+//               verified on the unscaled problem).
 // Tangent rows with zero bound (mu = 0, or zero estimated normal force) are left out of the problem.
 #pragma once
 
@@ -63,6 +65,18 @@ struct StepperOptions {
   int splitting_max_it = 50;
   double splitting_tol = 1e-8; // relative; the load distribution is resolved to ~1e-9
   int polyhedral_directions = 8;
+  // Polyhedral: solver chain (Lemke, the accurate reference, first; the Newton methods when round-off in a
+  // long pivot sequence ends Lemke on a false secondary ray) and the symmetric diagonal scaling of the LCP
+  // (lambda_n, beta rows by 1/sqrt(A_ii), gamma rows by the mean sqrt(A_bb) of their contact) that
+  // equilibrates it before pivoting. Every answer is verified on the unscaled problem.
+  std::vector<std::string> polyhedral_solvers = {"lemke", "lemke_rf", "smoothed_newton", "fb_newton"};
+  bool polyhedral_scaling = true;
+  // Compliance eps_i = polyhedral_gamma_reg / mean(A_bb) on the diagonal of the cone rows: w_gamma = mu
+  // lambda_n - e^T beta + eps gamma, which makes the LCP matrix strictly copositive (z^T M z = x^T A x + mu
+  // gamma^T lambda_n + eps |gamma|^2 > 0 for z >= 0, z != 0), so Lemke cannot end on a secondary ray in exact
+  // arithmetic for any q; without it, round-off ended Lemke on false rays on the log heap. It lets the friction
+  // exceed the polygon by eps * slip speed (relative cone violation ~ 0.3 eps on the log heap).
+  double polyhedral_gamma_reg = 1e-8;
   bool warm_start = true;
   // Sleeping (off by default): a dynamic body whose |v| + |w| r stays below sleep_velocity for sleep_steps
   // steps sleeps: it is not integrated and acts as a static body in the contacts of awake bodies; contacts
@@ -84,6 +98,7 @@ struct StepStats {
   int fallbacks = 0;           // failed attempts before the accepted one
   int iterations = 0;          // solver iterations (summed over splitting passes)
   long long pivots = 0;
+  int refinements = 0;   // active-set refinements of solver answers (contact side, after the solver)
   double residual = 0.0; // natural-map residual (max over passes)
   int splitting_iterations = 0;
   double splitting_error = 0.0;     // last max|delta lambda_n|
@@ -108,6 +123,15 @@ public:
   // last one solved or attempted.
   const std::vector<lcp::Problem>& lastProblems() const { return problems_; }
   void keepProblems(bool on) { keep_problems_ = on; }
+  // Everything of the stepper that the next step depends on, for checkpoint/restart (bitwise): per body
+  // [still steps, asleep] (nb x 2) and per contact of the last step [a, b, p (3), impulse (3)] (nc x 8),
+  // whose impulses warm-start the solvers and give scaled_box / splitting their estimates.
+  void exportState(int nbodies, std::vector<double>* body_state, std::vector<double>* contact_state) const;
+  // Throws std::runtime_error on inconsistent sizes or body indices.
+  void importState(int nbodies, const std::vector<double>& body_state,
+                   const std::vector<double>& contact_state);
+  // The accepted solution z of the last problem solved (lastProblems().back() when the step succeeded).
+  const lcp::Vec& lastSolution() const { return solution_; }
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
@@ -119,8 +143,17 @@ private:
   std::vector<Contact> prev_contacts_;
   std::vector<Vec3> prev_impulses_;
   std::vector<lcp::Problem> problems_;
+  lcp::Vec solution_;
   bool keep_problems_ = false;
 };
+
+// The Stewart-Trinkle / Anitescu-Potra LCP (paper, Eq. 6) of nc contacts with d friction directions from
+// the Delassus matrix A and right-hand side b ordered [normals (nc), directions (nc d, contact-major)]:
+// unknowns [lambda_n (nc), beta (nc d), gamma (nc)],
+//   M = [A_nn A_nD 0; A_Dn A_DD E; mu I -E^T 0],  q = [b_n; b_D; 0]  (E: one 1 per direction of a contact).
+lcp::Problem polyhedralLcp(const lcp::Mat& A, const lcp::Vec& b, int nc, int d, double mu);
+// Diagonal scaling s (z = diag(s) z') that equilibrates polyhedralLcp's matrix (see StepperOptions).
+lcp::Vec polyhedralScaling(const lcp::Problem& p, int nc, int d);
 
 // Total mechanical energy sum(0.5 m v^2 + 0.5 w^T I w - m g.x) of the dynamic bodies.
 double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity);

@@ -1,0 +1,115 @@
+// Checkpoint/restart of the contact app (see contact_checkpoint.hpp).
+#include "contact_checkpoint.hpp"
+
+#include "io/checkpoint.hpp"
+#include "io/h5_input.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace contact_app {
+
+using namespace suite::contact;
+
+std::string checkpointScheme(const std::string& scene, FrictionModel f) {
+  return "scene=" + scene + " friction=" + frictionName(f);
+}
+
+namespace {
+
+constexpr int kBody = 13; // x (3), q (x, y, z, w), v (3), w (3)
+
+// Replicated array of shape {rows, cols}: rank 0 owns all of it.
+suite::CheckpointField field(MPI_Comm comm, const std::string& name, unsigned long long rows,
+                             unsigned long long cols, double* data) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  const unsigned long long own = rank == 0 ? rows : 0;
+  return suite::CheckpointField{name, {rows, cols}, {0, 0}, {own, cols}, data};
+}
+
+} // namespace
+
+PetscErrorCode writeContactCheckpoint(MPI_Comm comm, const std::string& path, const std::string& scheme,
+                                      long long step, double time, double dt, const std::vector<Body>& bodies,
+                                      const Stepper& stepper) {
+  PetscFunctionBeginUser;
+  const int nb = (int)bodies.size();
+  std::vector<double> b(std::max(1, nb * kBody)), sleep, contacts;
+  for (int i = 0; i < nb; ++i) {
+    const Body& B = bodies[i];
+    double* r = &b[i * kBody];
+    const double v[kBody] = {B.x.x(), B.x.y(), B.x.z(), B.q.x(), B.q.y(), B.q.z(), B.q.w(),
+                             B.v.x(), B.v.y(), B.v.z(), B.w.x(), B.w.y(), B.w.z()};
+    std::copy(v, v + kBody, r);
+  }
+  stepper.exportState(nb, &sleep, &contacts);
+  const unsigned long long nc = contacts.size() / 8;
+  contacts.insert(contacts.begin(), 8, 0.0);
+  contacts[0] = (double)nc;
+  suite::CheckpointHeader h{"contact", scheme, step, time, dt, {(long long)nb}};
+  PetscCall(suite::writeCheckpoint(comm, path, h,
+                                   {field(comm, "bodies", nb, kBody, b.data()),
+                                    field(comm, "sleep", nb, 2, sleep.data()),
+                                    field(comm, "contacts", nc + 1, 8, contacts.data())}));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readContactCheckpoint(MPI_Comm comm, const std::string& path, const std::string& scheme,
+                                     double dt, std::vector<Body>* bodies, Stepper* stepper, long long* step,
+                                     double* time) {
+  PetscFunctionBeginUser;
+  const int nb = (int)bodies->size();
+  unsigned long long rows = 0;
+  {
+    suite::H5Input in;
+    PetscCall(in.open(comm, path));
+    bool has = false;
+    PetscCall(in.hasObject("/fields/contacts", &has));
+    PetscCheck(has, comm, PETSC_ERR_FILE_UNEXPECTED,
+               "restart %s: no /fields/contacts (not a contact checkpoint)", path.c_str());
+    suite::Dims d;
+    PetscCall(in.datasetDims("/fields/contacts", &d));
+    PetscCheck(d.size() == 2 && d[0] >= 1 && d[1] == 8 && d[0] <= 100000000ULL, comm,
+               PETSC_ERR_FILE_UNEXPECTED, "restart %s: /fields/contacts has a bad shape", path.c_str());
+    rows = d[0];
+    PetscCall(in.close());
+  }
+  std::vector<double> b(nb * kBody), sleep(2 * nb), contacts(rows * 8);
+  suite::CheckpointHeader expected{"contact", scheme, 0, 0.0, dt, {(long long)nb}}, found;
+  PetscCall(suite::readCheckpoint(comm, path, expected, &found,
+                                  {field(comm, "bodies", nb, kBody, b.data()),
+                                   field(comm, "sleep", nb, 2, sleep.data()),
+                                   field(comm, "contacts", rows, 8, contacts.data())}));
+  PetscCallMPI(MPI_Bcast(b.data(), (int)b.size(), MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(sleep.data(), (int)sleep.size(), MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(contacts.data(), (int)contacts.size(), MPI_DOUBLE, 0, comm));
+  PetscCheck(found.dt == dt, comm, PETSC_ERR_ARG_INCOMP, "restart %s: written with -dt %g, this run has %g",
+             path.c_str(), found.dt, dt);
+  PetscCheck(contacts[0] == (double)(rows - 1), comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart %s: contact count %g does not match the table (%llu rows)", path.c_str(), contacts[0],
+             rows - 1);
+  bool finite = true;
+  for (double v : b) finite = finite && std::isfinite(v);
+  PetscCheck(finite, comm, PETSC_ERR_FILE_UNEXPECTED, "restart %s: non-finite body state", path.c_str());
+  for (int i = 0; i < nb; ++i) {
+    Body& B = (*bodies)[i];
+    const double* r = &b[i * kBody];
+    B.x = Vec3(r[0], r[1], r[2]);
+    B.q = Quat(r[6], r[3], r[4], r[5]); // Eigen: (w, x, y, z)
+    B.v = Vec3(r[7], r[8], r[9]);
+    B.w = Vec3(r[10], r[11], r[12]);
+  }
+  std::string err;
+  try {
+    stepper->importState(nb, sleep, std::vector<double>(contacts.begin() + 8, contacts.end()));
+  } catch (const std::exception& e) {
+    err = e.what();
+  }
+  PetscCheck(err.empty(), comm, PETSC_ERR_FILE_UNEXPECTED, "restart %s: %s", path.c_str(), err.c_str());
+  *step = found.step;
+  *time = found.time;
+  PetscFunctionReturn(0);
+}
+
+} // namespace contact_app
