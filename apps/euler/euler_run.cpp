@@ -456,6 +456,9 @@ PetscErrorCode EulerRun::postStep() {
     PetscCall(VecRestoreArrayRead(U, &a));
     spacetime_t_.push_back(t);
   }
+  PetscReal dt;
+  PetscCall(TSGetTimeStep(ts_, &dt));
+  if (progress_) PetscCall(progress_->update(steps_, t, dt));
   bool stop = false, due = false;
   PetscCall(ctx_.stopRequested(&stop));
   PetscCall(ckpt_.due(steps_, &due));
@@ -484,6 +487,8 @@ PetscErrorCode EulerRun::solve() {
       ctx_.comm(), ctx_.quiet(),
       "euler: problem %s, scheme %s, time %s, nx %" PetscInt_FMT ", t_final %g, %d rank(s)",
       opt_.problem.c_str(), opt_.scheme.c_str(), opt_.time.c_str(), opt_.nx, opt_.t_final, ctx_.size()));
+  progress_ =
+      std::make_unique<suite::Progress>(ctx_.comm(), ctx_.quiet(), ctx_.progressInterval(), opt_.t_final);
   const double w0 = MPI_Wtime(), c0 = cpuSeconds();
   PetscCall(TSSolve(ts_, U_));
   wall_solve_ = MPI_Wtime() - w0;

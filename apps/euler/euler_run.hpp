@@ -2,6 +2,7 @@
 // dt, collective checks, snapshots and the final HDF5 output.
 #pragma once
 
+#include "core/progress.hpp"
 #include "core/run_context.hpp"
 #include "euler/line_operator.hpp"
 #include "euler/problem.hpp"
@@ -85,6 +86,7 @@ private:
   std::vector<double> spacetime_rho_, spacetime_t_;
   Vec3 totals0_{};
   suite::CheckpointPolicy ckpt_;
+  std::unique_ptr<suite::Progress> progress_; // progress line every -progress_interval seconds
   PetscInt last_checkpoint_step_ = -1;
   struct ErrorSet {
     double l1[3], l2[3], linf[3];

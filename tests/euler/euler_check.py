@@ -133,10 +133,18 @@ def restart():
         ck2 = os.path.join(d, "ck2")
         big = base + ["-nx", 4000, "-t_final", 0.2]
         cmd = [os.path.join(BIN, "euler")] + [str(a) for a in big + ["-checkpoint_dir", ck2]]  # singleton MPI
-        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        time.sleep(1.5)
+        p = subprocess.Popen(cmd + ["-progress_interval", "0.05"], stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True)
+        head = ""  # signal once the run is stepping (handlers installed), not after a fixed sleep
+        while " step " not in head:
+            line = p.stdout.readline()
+            head += line
+            if not line:
+                break
+        time.sleep(0.3)
         p.send_signal(signal.SIGTERM)
         out, _ = p.communicate(timeout=120)
+        out = head + out
         print(out)
         m = re.search(r"stopping at step (\d+)", out)
         check(p.returncode == 0 and m is not None, f"SIGTERM: clean stop (exit {p.returncode})")

@@ -71,13 +71,19 @@ def test_restart_other_rank_count():
 def test_signal_stop_and_resume():
     nsteps = 100000
     run(2, "-n", "64", "-steps", "300", "-output", "ref300.h5")
-    cmd = MPI + ["2", DRV, "-quiet", "-n", "64", "-steps", str(nsteps), "-sleep_per_step", "0.005",
-                 "-output", "sig.h5", "-checkpoint", "sig_ckpt.h5"]
+    cmd = MPI + ["2", DRV, "-progress_interval", "0.05", "-n", "64", "-steps", str(nsteps), "-sleep_per_step",
+                 "0.005", "-output", "sig.h5", "-checkpoint", "sig_ckpt.h5"]
     p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-    time.sleep(1.5)
+    # Signal only once the job is stepping (its handlers are installed): a fixed sleep raced with a slow
+    # start (ASan build), where the signal's default action killed the ranks.
+    first = b""
+    while b" step " not in first:
+        first = p.stdout.readline()
+        if not first:
+            break
     p.send_signal(signal.SIGUSR1)
     out, _ = p.communicate(timeout=60)
-    out = out.decode(errors="replace")
+    out = (first + out).decode(errors="replace")
     expect(p.returncode == 0, f"SIGUSR1 gives a clean exit (rc {p.returncode})")
     expect(out.count("stop requested (signal)") == 1, "one stop message for the whole job")
     _, steps = final_u("sig.h5")
