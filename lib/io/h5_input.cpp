@@ -4,6 +4,8 @@
 #include "io/h5_util.hpp"
 
 #include <hdf5.h>
+
+#include <algorithm>
 #include <unistd.h>
 
 namespace suite {
@@ -227,10 +229,32 @@ PetscErrorCode H5Input::readBlock(const std::string& ds, const Dims& start, cons
   return readBlockT(ds, start, count, local);
 }
 
+PetscErrorCode H5Input::checkPlausibleSize(const std::string& dataset, const Dims& dims,
+                                           size_t element_bytes) const {
+  PetscFunctionBeginUser;
+  long double need = (long double)element_bytes;
+  for (auto d : dims) need *= (long double)d;
+  hid_t d = H5Dopen2((hid_t)file_, dataset.c_str(), H5P_DEFAULT);
+  PetscCheck(d >= 0, comm_, PETSC_ERR_FILE_UNEXPECTED, "%s: missing dataset %s", path_.c_str(),
+             dataset.c_str());
+  const long double stored = (long double)H5Dget_storage_size(d);
+  hid_t dcpl = H5Dget_create_plist(d);
+  const int filters = dcpl >= 0 ? H5Pget_nfilters(dcpl) : 0;
+  if (dcpl >= 0) H5Pclose(dcpl);
+  H5Dclose(d);
+  const long double limit = filters > 0 ? 1024.0L * stored + 1048576.0L : std::max(stored, 1048576.0L);
+  PetscCheck(
+      need <= limit, comm_, PETSC_ERR_FILE_UNEXPECTED,
+      "%s: dataset %s claims %.3Lg bytes but the file stores %.3Lg for it (corrupted or truncated file)",
+      path_.c_str(), dataset.c_str(), need, stored);
+  PetscFunctionReturn(0);
+}
+
 template <typename T>
 static PetscErrorCode readAllT(const H5Input& in, const std::string& ds, std::vector<T>* data, Dims* dims) {
   PetscFunctionBeginUser;
   PetscCall(in.datasetDims(ds, dims));
+  PetscCall(in.checkPlausibleSize(ds, *dims, sizeof(T)));
   size_t n = 1;
   for (auto d : *dims) n *= d;
   data->assign(n, T());

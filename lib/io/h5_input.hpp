@@ -28,6 +28,10 @@ public:
   PetscErrorCode readAttribute(const std::string& object, const std::string& name,
                                std::vector<double>* value) const;
   PetscErrorCode datasetDims(const std::string& dataset, Dims* dims) const;
+  // Collective: errors when a dataset claims more elements than its stored bytes can hold (a corrupted or
+  // hostile header), before anything that size is allocated. Unfiltered data must be stored in full (or be
+  // under 1 MiB); filtered (compressed) data may expand at most 1024 times.
+  PetscErrorCode checkPlausibleSize(const std::string& dataset, const Dims& dims, size_t element_bytes) const;
   // Reads the block start..start+count of a dataset (converted to double / long long).
   PetscErrorCode readBlock(const std::string& dataset, const Dims& start, const Dims& count,
                            double* local) const;
