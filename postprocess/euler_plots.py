@@ -147,6 +147,11 @@ def plot_convergence(path, outdir, problem="density_wave"):
 def default_plot(h5path, outdir):
     with h5py.File(h5path, "r") as f:
         has_st = "spacetime" in f
+        dim = int(f.attrs.get("dim", 1))
+    if dim >= 2:  # 2D/3D runs: density and schlieren images (euler_nd_plots)
+        from .euler_nd_plots import default_plot as nd_plot
+
+        return nd_plot(h5path, outdir)
     out = plot_profiles(h5path, outdir)
     if has_st:
         out += plot_pulse(h5path, outdir)

@@ -542,8 +542,19 @@ PetscErrorCode EulerRun::totals(Vec U, Vec3* sum) const {
 }
 
 PetscErrorCode runEuler(const suite::RunContext& ctx) {
-  EulerRun run(ctx);
+  PetscInt dim = 1;
   PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx.comm(), "", "Euler dimension", "");
+  PetscCall(PetscOptionsInt("-dim", "Spatial dimension: 1, 2 or 3 (2/3: -nx -ny -nz, DMDA process grid)", "",
+                            dim, &dim, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(dim >= 1 && dim <= 3, ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -dim %" PetscInt_FMT ": 1, 2 or 3", dim);
+  if (dim > 1) {
+    PetscCall(runEulerND(ctx, (int)dim));
+    PetscFunctionReturn(0);
+  }
+  EulerRun run(ctx);
   PetscCall(run.readOptions());
   if (ctx.helpRequested()) {
     PetscCall(ctx.checkUnusedOptions());

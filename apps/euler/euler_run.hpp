@@ -100,5 +100,7 @@ private:
 };
 
 PetscErrorCode runEuler(const suite::RunContext& ctx);
+// -dim 2|3 (euler_nd_run.cpp)
+PetscErrorCode runEulerND(const suite::RunContext& ctx, int dim);
 
 } // namespace euler_app

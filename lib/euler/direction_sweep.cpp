@@ -1,0 +1,298 @@
+// Interface fluxes of all lines of one grid direction (see direction_sweep.hpp for the method and
+// references).
+#include "euler/direction_sweep.hpp"
+
+#include "euler/enopade6.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace suite::euler {
+
+namespace {
+inline bool boundaryFace(bool periodic, long long iface, long long n) {
+  return !periodic && (iface == 0 || iface == n);
+}
+} // namespace
+
+template <int NV> void DirectionSweep<NV>::prepareLine(const V* q, int xm, double alpha_global) {
+  using G = LineGas<NV>;
+  const double g = opt_.gamma;
+  const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  f_.resize(ncell);
+  speed_.resize(ncell);
+  rho_.resize(ncell);
+  p_.resize(ncell);
+  for (int m = 0; m < ncell; ++m) {
+    f_[m] = G::flux(q[m], g);
+    speed_[m] = G::maxSpeed(q[m], g);
+    rho_[m] = q[m][0];
+    p_[m] = G::pressure(q[m], g);
+  }
+  alpha_.resize(nface);
+  for (int k = 0; k < nface; ++k) {
+    double a = alpha_global;
+    if (opt_.local_lf && !scheme_->compact) {
+      a = 0.0;
+      for (int m = 0; m < 6; ++m) a = std::max(a, speed_[k + m]);
+      a *= 1.0 + 1e-12;
+    }
+    alpha_[k] = a;
+  }
+}
+
+// Characteristic (or component-wise) rows of the split fluxes at face k: rows[0][c] for f+ (left-biased),
+// rows[1][c] for f- (right-biased).
+template <int NV>
+static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
+                      RowFunction fn, bool characteristic, double g, typename LineGas<NV>::Eigen* e,
+                      Row rows[2][NV]) {
+  using G = LineGas<NV>;
+  if (characteristic) *e = G::roe(qs[2], qs[3], g);
+  double wp[NV][6], wm[NV][6];
+  for (int m = 0; m < 6; ++m) {
+    typename G::V fp, fm;
+    for (int c = 0; c < NV; ++c) {
+      fp[c] = 0.5 * (fs[m][c] + a * qs[m][c]);
+      fm[c] = 0.5 * (fs[m][c] - a * qs[m][c]);
+    }
+    if (characteristic) {
+      fp = G::mul(e->L, fp);
+      fm = G::mul(e->L, fm);
+    }
+    for (int c = 0; c < NV; ++c) {
+      wp[c][m] = fp[c];
+      wm[c][m] = fm[c];
+    }
+  }
+  for (int c = 0; c < NV; ++c) {
+    rows[0][c] = fn(wp[c]);
+    rows[1][c] = mirrorRow(fn, wm[c]);
+  }
+}
+
+template <int NV>
+void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic,
+                                      double alpha, V* h) {
+  using G = LineGas<NV>;
+  const double g = opt_.gamma;
+  prepareLine(q, xm, alpha);
+  for (int k = 0; k <= xm; ++k) {
+    if (scheme_->state_riemann) {
+      h[k] = G::muscl2(q + k + 1, g);
+      continue;
+    }
+    const bool boundary = boundaryFace(periodic, xs + k, n);
+    const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
+    typename G::Eigen e;
+    Row rows[2][NV];
+    splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows);
+    V hc;
+    for (int c = 0; c < NV; ++c) hc[c] = rows[0][c].r / rows[0][c].b + rows[1][c].r / rows[1][c].b;
+    h[k] = opt_.characteristic ? G::mul(e.R, hc) : hc;
+  }
+}
+
+template <int NV>
+bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic) {
+  using G = LineGas<NV>;
+  if (!scheme_->hybrid) return true; // CRWENO rows everywhere
+  const int ncell = nown + 2 * kGhost;
+  rho_.resize(ncell);
+  p_.resize(ncell);
+  for (int m = 0; m < ncell; ++m) {
+    rho_[m] = q[m][0];
+    p_[m] = G::pressure(q[m], opt_.gamma);
+  }
+  for (int k = 0; k < nown; ++k)
+    if (!boundaryFace(periodic, xs + k, n) &&
+        enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold))
+      return true;
+  return false;
+}
+
+template <int NV>
+void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
+                                         bool periodic, double alpha, bool blocks, double* abc, double* rhs,
+                                         double* A[2], double* B[2], double* C[2], double* d[2]) {
+  using G = LineGas<NV>;
+  constexpr int NN = NV * NV;
+  const double g = opt_.gamma;
+  prepareLine(q, xm, alpha);
+  if (blocks)
+    for (int s = 0; s < 2; ++s) {
+      std::fill(A[s], A[s] + NN * nown, 0.0);
+      std::fill(B[s], B[s] + NN * nown, 0.0);
+      std::fill(C[s], C[s] + NN * nown, 0.0);
+    }
+  for (int k = 0; k < nown; ++k) {
+    const bool boundary = boundaryFace(periodic, xs + k, n);
+    const V* qs = q + k;
+    const V* fs = f_.data() + k;
+    const double a = alpha_[k];
+    bool shock = !scheme_->hybrid;
+    if (scheme_->hybrid && !boundary) {
+      shock = enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold);
+      if (shock) ++stats_.shock_rows;
+    }
+    const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
+                                    : (shock ? scheme_->shock_row : scheme_->smooth_row);
+    if (!shock && !boundary) { // Pade row: central, so the split cancels; conserved-space right-hand side
+      for (int c = 0; c < NV; ++c) {
+        double r[2];
+        for (int s = 0; s < 2; ++s) {
+          double v[6];
+          for (int m = 0; m < 6; ++m) v[m] = 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
+          r[s] = fn(v).r;
+        }
+        if (blocks) {
+          for (int s = 0; s < 2; ++s) {
+            A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+            B[s][NN * k + (NV + 1) * c] = 1.0;
+            C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+            d[s][NV * k + c] = r[s];
+          }
+        } else {
+          rhs[NV * k + c] = r[0] + r[1];
+        }
+      }
+      if (!blocks) abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
+      continue;
+    }
+    typename G::Eigen e;
+    Row rows[2][NV];
+    splitRows<NV>(qs, fs, a, fn, opt_.characteristic, g, &e, rows);
+    bool explicit_row = true;
+    for (int s = 0; s < 2; ++s)
+      for (int c = 0; c < NV; ++c)
+        explicit_row = explicit_row && rows[s][c].a == 0.0 && rows[s][c].c == 0.0 && rows[s][c].b == 1.0;
+    for (int s = 0; s < 2; ++s) {
+      V rs;
+      for (int c = 0; c < NV; ++c) rs[c] = rows[s][c].r;
+      const V dr = opt_.characteristic ? G::mul(e.R, rs) : rs;
+      for (int r = 0; r < NV; ++r) {
+        if (!blocks) { // only explicit rows reach here on a scalar line
+          if (!explicit_row) throw std::logic_error("DirectionSweep: compact shock row on a scalar line");
+          if (s == 0) rhs[NV * k + r] = 0.0;
+          rhs[NV * k + r] += dr[r];
+          continue;
+        }
+        d[s][NV * k + r] = dr[r];
+        if (explicit_row) {
+          B[s][NN * k + (NV + 1) * r] = 1.0;
+          continue;
+        }
+        for (int cc = 0; cc < NV; ++cc) {
+          double sa = 0, sb = 0, sc = 0;
+          if (opt_.characteristic) {
+            for (int c = 0; c < NV; ++c) {
+              const double rl = e.R[NV * r + c] * e.L[NV * c + cc];
+              sa += rl * rows[s][c].a;
+              sb += rl * rows[s][c].b;
+              sc += rl * rows[s][c].c;
+            }
+          } else if (r == cc) {
+            sa = rows[s][r].a, sb = rows[s][r].b, sc = rows[s][r].c;
+          }
+          A[s][NN * k + NV * r + cc] = sa;
+          B[s][NN * k + NV * r + cc] = sb;
+          C[s][NN * k + NV * r + cc] = sc;
+        }
+      }
+    }
+    if (!blocks) abc[3 * k] = 0.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 0.0;
+  }
+}
+
+template <int NV>
+void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm,
+                                    bool periodic, double alpha, double lambda, V* h) {
+  using G = LineGas<NV>;
+  constexpr int NN = NV * NV;
+  ++stats_.evaluations;
+  const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  if (!scheme_->compact) {
+    for (int l = 0; l < nlines; ++l)
+      lineExplicit(q + (size_t)l * ncell, n, xs, xm, periodic, alpha, h + (size_t)l * nface);
+  } else {
+    const int nown = xm + ((!periodic && xs + xm == n) ? 1 : 0);
+    flag_.resize(nlines);
+    for (int l = 0; l < nlines; ++l) flag_[l] = lineNeedsBlocks(q + (size_t)l * ncell, n, xs, nown, periodic);
+    int size = 1;
+    MPI_Comm_size(comm, &size);
+    if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flag_.data(), nlines, MPI_INT, MPI_LOR, comm);
+    int nb = 0;
+    for (int l = 0; l < nlines; ++l) nb += flag_[l] ? 1 : 0;
+    const int ns = nlines - nb;
+    sabc_.resize((size_t)3 * nown * ns);
+    srhs_.resize((size_t)NV * nown * ns);
+    bA_.resize((size_t)2 * nb * nown * NN);
+    bB_.resize(bA_.size());
+    bC_.resize(bA_.size());
+    bd_.resize((size_t)2 * nb * nown * NV);
+    int is = 0, ib = 0;
+    for (int l = 0; l < nlines; ++l) {
+      const V* ql = q + (size_t)l * ncell;
+      if (flag_[l]) {
+        double* A[2] = {&bA_[(size_t)(2 * ib) * nown * NN], &bA_[(size_t)(2 * ib + 1) * nown * NN]};
+        double* B[2] = {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]};
+        double* C[2] = {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]};
+        double* d[2] = {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]};
+        lineCompactRows(ql, n, xs, xm, nown, periodic, alpha, true, nullptr, nullptr, A, B, C, d);
+        ++ib;
+      } else {
+        double* none[2] = {nullptr, nullptr};
+        lineCompactRows(ql, n, xs, xm, nown, periodic, alpha, false, &sabc_[(size_t)3 * nown * is],
+                        &srhs_[(size_t)NV * nown * is], none, none, none, none);
+        ++is;
+      }
+    }
+    sx_.resize((size_t)ns * nface * NV);
+    bx_.resize((size_t)2 * nb * nface * NV);
+    if (ns > 0)
+      lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
+    if (nb > 0)
+      lines_.solve(comm, NV, 2 * nb, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
+                   nface, bx_.data());
+    is = ib = 0;
+    for (int l = 0; l < nlines; ++l) {
+      V* hl = h + (size_t)l * nface;
+      if (flag_[l]) {
+        const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
+        const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
+        for (int k = 0; k < nface; ++k)
+          for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
+        ++ib;
+      } else {
+        const double* x = &sx_[(size_t)is * nface * NV];
+        for (int k = 0; k < nface; ++k)
+          for (int c = 0; c < NV; ++c) hl[k][c] = x[NV * k + c];
+        ++is;
+      }
+    }
+  }
+  if (opt_.positivity && lambda > 0.0) {
+    const double g = opt_.gamma;
+    for (int l = 0; l < nlines; ++l) {
+      const V* ql = q + (size_t)l * ncell;
+      V* hl = h + (size_t)l * nface;
+      for (int k = 0; k < nface; ++k) {
+        double a = alpha;
+        if (opt_.local_lf && !scheme_->compact) {
+          a = 0.0;
+          for (int m = 0; m < 6; ++m) a = std::max(a, G::maxSpeed(ql[k + m], g));
+          a *= 1.0 + 1e-12;
+        }
+        a = std::max(std::max(G::maxSpeed(ql[k + 2], g), G::maxSpeed(ql[k + 3], g)) * (1.0 + 1e-12), a);
+        if (G::limitPositivity(ql[k + 2], ql[k + 3], a, lambda, g, &hl[k]) < 1.0) ++stats_.limited_faces;
+      }
+    }
+  }
+}
+
+template class DirectionSweep<3>;
+template class DirectionSweep<4>;
+template class DirectionSweep<5>;
+
+} // namespace suite::euler

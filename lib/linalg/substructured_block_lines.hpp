@@ -1,0 +1,74 @@
+// Exact parallel solve of MANY independent block-tridiagonal lines that share one communicator (all lines of
+// one direction of a distributed grid), by substructuring (partition method: H. H. Wang, ACM TOMS 7 (1981)
+// 170; block rows: Mattor, Williams & Hewett, Parallel Computing 21 (1995) 1769), batched so that the number
+// of messages per solve does not depend on the number of lines:
+//   1. every rank eliminates its rows of every line locally (block Thomas);
+//   2. the end rows of ALL lines go to every rank of the line communicator in ONE MPI_Allgather;
+//   3. every rank solves the reduced systems of all lines and finishes its rows (re-solving locally with the
+//      coupling values known, so no per-row spike columns are stored: memory O(one line), not O(all lines));
+//   4. one MPI_Allreduce of the per-line residuals of the global systems; lines whose residual exceeds
+//      `tolerance` or that met a tiny pivot (the same lines on every rank; rare: rows far from diagonally
+//      dominant) are solved again exactly: their rows are gathered to every rank in ONE MPI_Allgatherv (plus
+//      one MPI_Allgather of the row counts) and each such global line is solved by band LU with partial
+//      pivoting (LAPACK dgbsv; periodic lines in the folded order 0, N-1, 1, N-2, ... that keeps the
+//      wrap-around couplings inside a band of 3 bs - 1).
+// Per solve, whatever the number of lines: 1 MPI_Allgather + 1 MPI_Allreduce (+ 2 collectives when some line
+// falls back). Results differ from a serial solve by round-off only.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace suite::linalg {
+
+class SubstructuredBlockLines {
+public:
+  struct Stats {
+    long long solves = 0, lines = 0, fallbacks = 0;
+  };
+  // comm: the ranks that share the lines, ranked in line order (rank r holds the rows after rank r-1's).
+  // Every rank passes the same nlines lines; this rank holds nloc >= 2 consecutive block rows of each,
+  // global rows first .. first + nloc - 1 (first: this rank's offset on the line, same for all lines).
+  // Line l's rows are stored contiguously: block row i of line l at A + (l * nloc + i) * bs * bs (row-major
+  // bs x bs, bs in 1..5), right-hand side at d + (l * nloc + i) * bs. A of a line's global first row and C
+  // of its global last row couple the two ends when periodic and are ignored otherwise.
+  // count = nloc or nloc + 1: the solution rows returned, x + (l * count + i) * bs; row nloc (count = nloc + 1)
+  // is the first row of the next rank (on the last rank: the global first row when periodic; not allowed
+  // when not periodic). x must not overlap d. Collective on comm.
+  void solve(MPI_Comm comm, int bs, int nlines, int nloc, const double* A, const double* B, const double* C,
+             const double* d, bool periodic, long long first, int count, double* x);
+  // Scalar rows shared by nrhs right-hand sides: abc + 3 (l * nloc + i) = (a, b, c) of row i of line l,
+  // d + (l * nloc + i) * nrhs; x + (l * count + i) * nrhs. Same contract otherwise.
+  void solveScalar(MPI_Comm comm, int nlines, int nloc, const double* abc, int nrhs, const double* d,
+                   bool periodic, long long first, int count, double* x);
+  const Stats& stats() const { return stats_; }
+  // Relative residual (max |T x - d| / max |d| over a whole global line) above which a line is re-solved by
+  // the exact fallback.
+  double tolerance = 1e-10;
+  // Reduced systems (2 P bs unknowns per line, P = communicator size) of at most this many unknowns are
+  // solved by dense LU, larger ones by band LU (periodic lines: band LU of the open system plus a rank-2 bs
+  // Woodbury correction for the wrap-around couplings). 0 forces the band path (tests).
+  int reduced_dense_max = 48;
+
+private:
+  template <int BS, int NR>
+  void solveImpl(MPI_Comm comm, int nlines, int nloc, const double* A, const double* B, const double* C,
+                 int ms, const double* d, int nrhs, bool periodic, int count, double* x);
+  template <int BS>
+  bool reducedSolve(int P, int nrhs, bool periodic, const double* ends, std::size_t rank_stride, int E,
+                    double* z);
+
+  // Exact solve of the lines in fail_ (see 4. above); throws std::runtime_error (on every rank) if one of
+  // them is singular.
+  void fallbackLines(MPI_Comm comm, int bs, int nrhs, int nloc, const double* A, const double* B,
+                     const double* C, int ms, const double* d, bool periodic, int count, double* x);
+
+  Stats stats_;
+  std::vector<double> ends_, all_ends_, res_, G_, work_, red_, z_, zu_, s_, send_, recv_, band_, rhs_;
+  std::vector<int> ipiv_, counts_, displs_, nlocs_;
+  std::vector<int> fail_; // lines to re-solve by the fallback (identical on every rank), increasing
+};
+
+} // namespace suite::linalg
