@@ -4,6 +4,8 @@
 
 #include "euler/enopade6.hpp"
 
+#include <petsclog.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -11,6 +13,20 @@
 namespace suite::euler {
 
 namespace {
+// -log_view stage of the compact line solves (nested inside the app's per-direction stages).
+PetscLogStage lineSolveStage() {
+  static PetscLogStage stage = -1;
+  if (stage < 0 && PetscLogStageRegister("Euler line solves", &stage)) stage = -1;
+  return stage;
+}
+struct StageScope {
+  bool on;
+  StageScope() : on(lineSolveStage() >= 0 && !PetscLogStagePush(lineSolveStage())) {}
+  ~StageScope() {
+    if (on) (void)PetscLogStagePop();
+  }
+};
+
 inline bool boundaryFace(bool periodic, long long iface, long long n) {
   return !periodic && (iface == 0 || iface == n);
 }
@@ -222,53 +238,63 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
     int size = 1;
     MPI_Comm_size(comm, &size);
     if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flag_.data(), nlines, MPI_INT, MPI_LOR, comm);
-    int nb = 0;
-    for (int l = 0; l < nlines; ++l) nb += flag_[l] ? 1 : 0;
-    const int ns = nlines - nb;
+    blocks_.clear();
+    for (int l = 0; l < nlines; ++l)
+      if (flag_[l]) blocks_.push_back(l);
+    const int nb = (int)blocks_.size(), ns = nlines - nb;
+    // Scalar lines: all in one batched solve.
     sabc_.resize((size_t)3 * nown * ns);
     srhs_.resize((size_t)NV * nown * ns);
-    bA_.resize((size_t)2 * nb * nown * NN);
-    bB_.resize(bA_.size());
-    bC_.resize(bA_.size());
-    bd_.resize((size_t)2 * nb * nown * NV);
-    int is = 0, ib = 0;
-    for (int l = 0; l < nlines; ++l) {
-      const V* ql = q + (size_t)l * ncell;
-      if (flag_[l]) {
+    int is = 0;
+    for (int l = 0; l < nlines; ++l)
+      if (!flag_[l]) {
+        double* none[2] = {nullptr, nullptr};
+        lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, false,
+                        &sabc_[(size_t)3 * nown * is], &srhs_[(size_t)NV * nown * is], none, none, none,
+                        none);
+        ++is;
+      }
+    sx_.resize((size_t)ns * nface * NV);
+    if (ns > 0) {
+      StageScope stage;
+      lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
+    }
+    is = 0;
+    for (int l = 0; l < nlines; ++l)
+      if (!flag_[l]) {
+        const double* x = &sx_[(size_t)is++ * nface * NV];
+        V* hl = h + (size_t)l * nface;
+        for (int k = 0; k < nface; ++k)
+          for (int c = 0; c < NV; ++c) hl[k][c] = x[NV * k + c];
+      }
+    // Block lines (two NV x NV systems each), in batches of at most opt_.batch_bytes of rows: the same batches
+    // on every rank of the line, so the message count is ceil(block rows / budget), independent of how the
+    // lines are split over the ranks, and memory stays bounded whatever the number of shocked lines.
+    const size_t line_bytes = sizeof(double) * 2 * (size_t)nown * (3 * NN + NV);
+    const int chunk = (int)std::max<size_t>(1, opt_.batch_bytes / std::max<size_t>(line_bytes, 1));
+    for (int c0 = 0; c0 < nb; c0 += chunk) {
+      const int cn = std::min(chunk, nb - c0);
+      bA_.resize((size_t)2 * cn * nown * NN);
+      bB_.resize(bA_.size());
+      bC_.resize(bA_.size());
+      bd_.resize((size_t)2 * cn * nown * NV);
+      for (int ib = 0; ib < cn; ++ib) {
         double* A[2] = {&bA_[(size_t)(2 * ib) * nown * NN], &bA_[(size_t)(2 * ib + 1) * nown * NN]};
         double* B[2] = {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]};
         double* C[2] = {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]};
         double* d[2] = {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]};
-        lineCompactRows(ql, n, xs, xm, nown, periodic, alpha, true, nullptr, nullptr, A, B, C, d);
-        ++ib;
-      } else {
-        double* none[2] = {nullptr, nullptr};
-        lineCompactRows(ql, n, xs, xm, nown, periodic, alpha, false, &sabc_[(size_t)3 * nown * is],
-                        &srhs_[(size_t)NV * nown * is], none, none, none, none);
-        ++is;
+        lineCompactRows(q + (size_t)blocks_[c0 + ib] * ncell, n, xs, xm, nown, periodic, alpha, true, nullptr,
+                        nullptr, A, B, C, d);
       }
-    }
-    sx_.resize((size_t)ns * nface * NV);
-    bx_.resize((size_t)2 * nb * nface * NV);
-    if (ns > 0)
-      lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
-    if (nb > 0)
-      lines_.solve(comm, NV, 2 * nb, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
+      bx_.resize((size_t)2 * cn * nface * NV);
+      lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
                    nface, bx_.data());
-    is = ib = 0;
-    for (int l = 0; l < nlines; ++l) {
-      V* hl = h + (size_t)l * nface;
-      if (flag_[l]) {
+      for (int ib = 0; ib < cn; ++ib) {
         const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
         const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
+        V* hl = h + (size_t)blocks_[c0 + ib] * nface;
         for (int k = 0; k < nface; ++k)
           for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
-        ++ib;
-      } else {
-        const double* x = &sx_[(size_t)is * nface * NV];
-        for (int k = 0; k < nface; ++k)
-          for (int c = 0; c < NV; ++c) hl[k][c] = x[NV * k + c];
-        ++is;
       }
     }
   }

@@ -5,7 +5,8 @@
 // (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve with NV
 // right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). The decision is reduced over
 // the ranks that share a line, so per call the messages are O(1) in the number of lines: one Allreduce of the
-// line flags, and for each of the two batches one Allgather and one Allreduce.
+// line flags, and for each batch one Allgather and one Allreduce: one scalar batch, and block batches of at most
+// LineOptions::batch_bytes of rows each (256 MiB: one batch for a 64^3 block even if every line is shocked).
 // References: as line_operator.hpp (Shu 1997; Ghosh & Baeder 2012; Lele 1992); dimension-by-dimension
 // finite-difference form: Shu, ICASE report 97-65, sec. 2.3.2 (the 1D flux derivative applied along each
 // direction, the eigenvectors of that direction's flux Jacobian).
@@ -56,7 +57,7 @@ private:
   linalg::SubstructuredBlockLines lines_;
   std::vector<V> f_;
   std::vector<double> speed_, rho_, p_, alpha_;
-  std::vector<int> flag_;
+  std::vector<int> flag_, blocks_;
   std::vector<double> sabc_, srhs_, sx_, bA_, bB_, bC_, bd_, bx_;
 };
 

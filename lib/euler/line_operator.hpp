@@ -19,6 +19,7 @@
 
 #include <mpi.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace suite::euler {
@@ -30,6 +31,7 @@ struct LineOptions {
   double shock_threshold = 0.02;
   bool positivity = true;
   bool gather_lines = false; // true: gather each line to every rank (DistributedTridiag), for comparison
+  size_t batch_bytes = size_t(256) << 20; // 2D/3D: memory of one batch of block lines (DirectionSweep)
 };
 
 struct LineStats {
