@@ -110,10 +110,16 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
   }
 }
 
+// Marks the shock rows of a line (shock[k] for its nown owned rows; boundary rows are explicit closures, never
+// shock rows here) and returns whether any is a compact shock row, i.e. the line needs the block solve.
 template <int NV>
-bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic) {
+bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic,
+                                         char* shock) {
   using G = LineGas<NV>;
-  if (!scheme_->hybrid) return true; // CRWENO rows everywhere
+  if (!scheme_->hybrid) { // CRWENO rows everywhere
+    for (int k = 0; k < nown; ++k) shock[k] = !boundaryFace(periodic, xs + k, n);
+    return true;
+  }
   const int ncell = nown + 2 * kGhost;
   rho_.resize(ncell);
   p_.resize(ncell);
@@ -121,17 +127,20 @@ bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, long long n, long long xs, 
     rho_[m] = q[m][0];
     p_[m] = G::pressure(q[m], opt_.gamma);
   }
-  for (int k = 0; k < nown; ++k)
-    if (!boundaryFace(periodic, xs + k, n) &&
-        enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold))
-      return true;
-  return false;
+  bool any = false;
+  for (int k = 0; k < nown; ++k) {
+    shock[k] = !boundaryFace(periodic, xs + k, n) &&
+               enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold);
+    if (shock[k]) ++stats_.shock_rows, any = true;
+  }
+  return any;
 }
 
 template <int NV>
 void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
-                                         bool periodic, double alpha, bool blocks, double* abc, double* rhs,
-                                         double* A[2], double* B[2], double* C[2], double* d[2]) {
+                                         bool periodic, double alpha, const char* shocks, bool blocks,
+                                         double* abc, double* rhs, double* A[2], double* B[2], double* C[2],
+                                         double* d[2]) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
   const double g = opt_.gamma;
@@ -147,30 +156,28 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     const V* qs = q + k;
     const V* fs = f_.data() + k;
     const double a = alpha_[k];
-    bool shock = !scheme_->hybrid;
-    if (scheme_->hybrid && !boundary) {
-      shock = enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold);
-      if (shock) ++stats_.shock_rows;
-    }
+    const bool shock = boundary ? !scheme_->hybrid : shocks[k] != 0;
     const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
                                     : (shock ? scheme_->shock_row : scheme_->smooth_row);
     if (!shock && !boundary) { // Pade row: central, so the split cancels; conserved-space right-hand side
       for (int c = 0; c < NV; ++c) {
+        if (!blocks) { // the row is linear: the rows of f+ and f- add up to the row of f
+          double v[6];
+          for (int m = 0; m < 6; ++m) v[m] = fs[m][c];
+          rhs[NV * k + c] = fn(v).r;
+          continue;
+        }
         double r[2];
         for (int s = 0; s < 2; ++s) {
           double v[6];
           for (int m = 0; m < 6; ++m) v[m] = 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
           r[s] = fn(v).r;
         }
-        if (blocks) {
-          for (int s = 0; s < 2; ++s) {
-            A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
-            B[s][NN * k + (NV + 1) * c] = 1.0;
-            C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
-            d[s][NV * k + c] = r[s];
-          }
-        } else {
-          rhs[NV * k + c] = r[0] + r[1];
+        for (int s = 0; s < 2; ++s) {
+          A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+          B[s][NN * k + (NV + 1) * c] = 1.0;
+          C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+          d[s][NV * k + c] = r[s];
         }
       }
       if (!blocks) abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
@@ -234,7 +241,9 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
   } else {
     const int nown = xm + ((!periodic && xs + xm == n) ? 1 : 0);
     flag_.resize(nlines);
-    for (int l = 0; l < nlines; ++l) flag_[l] = lineNeedsBlocks(q + (size_t)l * ncell, n, xs, nown, periodic);
+    shock_.resize((size_t)nlines * nown);
+    for (int l = 0; l < nlines; ++l)
+      flag_[l] = lineNeedsBlocks(q + (size_t)l * ncell, n, xs, nown, periodic, &shock_[(size_t)l * nown]);
     int size = 1;
     MPI_Comm_size(comm, &size);
     if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flag_.data(), nlines, MPI_INT, MPI_LOR, comm);
@@ -249,9 +258,9 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
     for (int l = 0; l < nlines; ++l)
       if (!flag_[l]) {
         double* none[2] = {nullptr, nullptr};
-        lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, false,
-                        &sabc_[(size_t)3 * nown * is], &srhs_[(size_t)NV * nown * is], none, none, none,
-                        none);
+        lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown],
+                        false, &sabc_[(size_t)3 * nown * is], &srhs_[(size_t)NV * nown * is], none, none,
+                        none, none);
         ++is;
       }
     sx_.resize((size_t)ns * nface * NV);
@@ -283,8 +292,9 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
         double* B[2] = {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]};
         double* C[2] = {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]};
         double* d[2] = {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]};
-        lineCompactRows(q + (size_t)blocks_[c0 + ib] * ncell, n, xs, xm, nown, periodic, alpha, true, nullptr,
-                        nullptr, A, B, C, d);
+        const int l = blocks_[c0 + ib];
+        lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown],
+                        true, nullptr, nullptr, A, B, C, d);
       }
       bx_.resize((size_t)2 * cn * nface * NV);
       lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
@@ -304,6 +314,7 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
       const V* ql = q + (size_t)l * ncell;
       V* hl = h + (size_t)l * nface;
       for (int k = 0; k < nface; ++k) {
+        if (G::sidesPositive(ql[k + 2], ql[k + 3], lambda, g, hl[k])) continue; // the limiter would keep h
         double a = alpha;
         if (opt_.local_lf && !scheme_->compact) {
           a = 0.0;

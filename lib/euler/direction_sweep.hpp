@@ -45,10 +45,10 @@ public:
 private:
   struct LineWork; // per-line scratch (defined in the .cpp)
   void lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, V* h);
-  bool lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic);
+  bool lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic, char* shock);
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
-                       bool blocks, double* abc, double* rhs, double* A[2], double* B[2], double* C[2],
-                       double* d[2]);
+                       const char* shocks, bool blocks, double* abc, double* rhs, double* A[2], double* B[2],
+                       double* C[2], double* d[2]);
   void prepareLine(const V* q, int xm, double alpha_global);
 
   const SchemeInfo* scheme_;
@@ -58,6 +58,7 @@ private:
   std::vector<V> f_;
   std::vector<double> speed_, rho_, p_, alpha_;
   std::vector<int> flag_, blocks_;
+  std::vector<char> shock_; // per line and owned row: ENO-Pade shock row
   std::vector<double> sabc_, srhs_, sx_, bA_, bB_, bC_, bd_, bx_;
 };
 

@@ -153,6 +153,17 @@ template <int NV> struct LineGas {
     return q;
   }
 
+  // True when U_j - 2 lambda h and U_{j+1} + 2 lambda h have density and pressure >= 1e-13: then the limiter
+  // below keeps h unchanged (its thresholds are <= 1e-13), so callers skip it (the common case).
+  static bool sidesPositive(const V& qa, const V& qb, double lambda, double g, const V& h) {
+    V a, b;
+    for (int c = 0; c < NV; ++c) {
+      a[c] = qa[c] - 2.0 * lambda * h[c];
+      b[c] = qb[c] + 2.0 * lambda * h[c];
+    }
+    return a[0] >= 1e-13 && b[0] >= 1e-13 && pressure(a, g) >= 1e-13 && pressure(b, g) >= 1e-13;
+  }
+
   // Hu, Adams & Shu, J. Comput. Phys. 242 (2013) 169, eqs. (3.6)-(3.12): blends h with the Lax-Friedrichs
   // flux so that U_j - 2 lambda h and U_{j+1} + 2 lambda h keep positive density and pressure. Returns theta.
   static double limitPositivity(const V& qa, const V& qb, double alpha, double lambda, double g, V* h) {
