@@ -146,12 +146,7 @@ PetscErrorCode EulerRunND::writeXdmf() {
     steps.push_back(step(s.second, g));
   }
   steps.push_back(step(time_, "/final"));
-  const std::string& base = opt_.output;
-  const size_t slash = base.find_last_of('/');
-  const std::string h5name = slash == std::string::npos ? base : base.substr(slash + 1);
-  std::string xmf = base;
-  if (xmf.size() > 3 && xmf.substr(xmf.size() - 3) == ".h5") xmf = xmf.substr(0, xmf.size() - 3);
-  xmf += ".xmf";
+  const std::string h5name = fileNameOf(opt_.output), xmf = xdmfPathFor(opt_.output);
   suite::XdmfRectGrid grid;
   for (int d = opt_.dim - 1; d >= 0; --d) {
     grid.dims.push_back((unsigned long long)opt_.n[d] + 1);

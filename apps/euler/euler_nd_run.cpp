@@ -16,30 +16,6 @@ namespace euler_app {
 using namespace suite::euler;
 
 namespace {
-double cpuSecondsND() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-PetscErrorCode rhsCallbackND(TS, PetscReal t, Vec U, Vec F, void* ctx) {
-  return static_cast<EulerRunND*>(ctx)->rhs(t, U, F);
-}
-PetscErrorCode preStepND(TS ts) {
-  void* ctx;
-  PetscFunctionBeginUser;
-  PetscCall(TSGetApplicationContext(ts, &ctx));
-  PetscCall(static_cast<EulerRunND*>(ctx)->preStep());
-  PetscFunctionReturn(0);
-}
-PetscErrorCode postStepND(TS ts) {
-  void* ctx;
-  PetscFunctionBeginUser;
-  PetscCall(TSGetApplicationContext(ts, &ctx));
-  PetscCall(static_cast<EulerRunND*>(ctx)->postStep());
-  PetscFunctionReturn(0);
-}
-
 // Conserved state of a primitive one (global frame: rho, m_x, m_y [, m_z], E).
 void toConsND(const PrimN& w, int dim, double gamma, double* q) {
   double v2 = 0.0;
@@ -110,12 +86,9 @@ PetscErrorCode EulerRunND::readOptions() {
   PetscCheck(scheme_, comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
              "Unknown scheme '%s' (option -scheme); known schemes: %s", opt_.scheme.c_str(),
              schemeNames().c_str());
-  const bool known_time = opt_.time == "ssprk3" || opt_.time == "rk4" || opt_.time == "beuler" ||
-                          opt_.time == "cn" || opt_.time == "bdf2";
-  PetscCheck(known_time, comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
-             "Unknown time integrator '%s' (option -time); known: ssprk3, rk4, beuler, cn, bdf2",
-             opt_.time.c_str());
-  opt_.implicit = opt_.time == "beuler" || opt_.time == "cn" || opt_.time == "bdf2";
+  PetscCheck(isKnownTimeScheme(opt_.time), comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+             "Unknown time integrator '%s' (option -time); known: %s", opt_.time.c_str(), kTimeSchemes);
+  opt_.implicit = isImplicit(opt_.time);
   if (opt_.implicit) opt_.positivity = PETSC_FALSE, opt_.local_lf = PETSC_FALSE;
   for (int d = 0; d < 3; ++d) opt_.n[d] = d < opt_.dim ? problem_.default_n[d] : 1;
   opt_.t_final = problem_.t_final;
@@ -280,50 +253,11 @@ PetscErrorCode EulerRunND::setup() {
 
 PetscErrorCode EulerRunND::setupTimeStepper() {
   PetscFunctionBeginUser;
-  PetscCall(TSCreate(ctx_.comm(), &ts_));
-  PetscCall(TSSetDM(ts_, da_));
-  PetscCall(TSSetProblemType(ts_, TS_NONLINEAR));
-  PetscCall(TSSetRHSFunction(ts_, nullptr, rhsCallbackND, this));
-  PetscCall(TSSetApplicationContext(ts_, this));
-  if (opt_.time == "ssprk3" || opt_.time == "rk4") {
-    if (opt_.time == "ssprk3") { // Shu & Osher (1988), Butcher form (Gottlieb & Shu 1998, eq. 4.2)
-      const PetscReal A[9] = {0, 0, 0, 1, 0, 0, 0.25, 0.25, 0}, b[3] = {1.0 / 6, 1.0 / 6, 2.0 / 3},
-                      c[3] = {0, 1, 0.5};
-      static bool registered = false;
-      if (!registered) PetscCall(TSRKRegister("ssprk3", 3, 3, A, b, c, nullptr, 0, nullptr));
-      registered = true;
-    }
-    PetscCall(TSSetType(ts_, TSRK));
-    PetscCall(TSRKSetType(ts_, opt_.time == "rk4" ? TSRK4 : "ssprk3"));
-  } else {
-    PetscCall(TSSetType(ts_, opt_.time == "beuler" ? TSBEULER : (opt_.time == "cn" ? TSCN : TSBDF)));
-    if (opt_.time == "bdf2") PetscCall(TSBDFSetOrder(ts_, 2));
-    SNES snes;
-    KSP ksp;
-    PC pc;
-    PetscCall(TSGetSNES(ts_, &snes));
-    PetscCall(SNESSetUseMatrixFree(snes, PETSC_FALSE, PETSC_TRUE)); // Jacobian-free Newton-Krylov
-    PetscCall(SNESGetKSP(snes, &ksp));
-    PetscCall(KSPSetType(ksp, KSPGMRES));
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(PCSetType(pc, PCNONE));
-    PetscCall(SNESSetTolerances(snes, 1e-10, 1e-6, PETSC_DEFAULT, 30, PETSC_DEFAULT));
-    PetscCall(SNESSetMaxLinearSolveFailures(snes, 30));
-    PetscCall(KSPSetTolerances(ksp, 1e-3, PETSC_DEFAULT, PETSC_DEFAULT, 100));
-    PetscCall(TSSetMaxSNESFailures(ts_, -1)); // a failed Newton solve retries the step at half dt
-  }
-  TSAdapt adapt;
-  PetscCall(TSGetAdapt(ts_, &adapt));
-  PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));
-  PetscCall(TSSetMaxTime(ts_, opt_.t_final));
-  PetscCall(TSSetMaxSteps(ts_, opt_.max_steps > 0 ? opt_.max_steps : PETSC_MAX_INT));
-  PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_MATCHSTEP));
   double amax[3];
   PetscCall(maxWaveSpeeds(U_, amax));
-  PetscCall(TSSetTimeStep(ts_, opt_.dt > 0 ? opt_.dt : cflTimeStep(amax)));
-  PetscCall(TSSetPreStep(ts_, preStepND));
-  PetscCall(TSSetPostStep(ts_, postStepND));
-  PetscCall(TSSetFromOptions(ts_));
+  StepperSettings s{opt_.time, opt_.t_final, opt_.max_steps, opt_.dt > 0 ? opt_.dt : cflTimeStep(amax)};
+  PetscCall(createStepper(ctx_.comm(), da_, s, rhsCallback<EulerRunND>, this, preStepCallback<EulerRunND>,
+                          postStepCallback<EulerRunND>, &ts_));
   PetscFunctionReturn(0);
 }
 
@@ -614,10 +548,10 @@ PetscErrorCode EulerRunND::solve() {
                            opt_.n[1], opt_.n[2], opt_.t_final, ctx_.size()));
   progress_ =
       std::make_unique<suite::Progress>(ctx_.comm(), ctx_.quiet(), ctx_.progressInterval(), opt_.t_final);
-  const double w0 = MPI_Wtime(), c0 = cpuSecondsND();
+  const double w0 = MPI_Wtime(), c0 = cpuSeconds();
   PetscCall(TSSolve(ts_, U_));
   wall_solve_ = MPI_Wtime() - w0;
-  cpu_solve_ = cpuSecondsND() - c0;
+  cpu_solve_ = cpuSeconds() - c0;
   PetscCall(TSGetStepNumber(ts_, &steps_));
   PetscReal t;
   PetscCall(TSGetTime(ts_, &t));

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/progress.hpp"
+#include "euler_stepper.hpp"
 #include "core/run_context.hpp"
 #include "euler/direction_sweep.hpp"
 #include "euler/problem_nd.hpp"

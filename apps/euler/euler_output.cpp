@@ -167,12 +167,7 @@ PetscErrorCode EulerRun::writeOutput() {
                       {"p", std::string(g) + "/p", true}}});
   }
   steps.push_back({time_, {{"rho", "/final/rho", true}, {"u", "/final/u", true}, {"p", "/final/p", true}}});
-  std::string base = opt_.output;
-  const size_t slash = base.find_last_of('/');
-  const std::string h5name = slash == std::string::npos ? base : base.substr(slash + 1);
-  std::string xmf = base;
-  if (xmf.size() > 3 && xmf.substr(xmf.size() - 3) == ".h5") xmf = xmf.substr(0, xmf.size() - 3);
-  xmf += ".xmf";
+  const std::string h5name = fileNameOf(opt_.output), xmf = xdmfPathFor(opt_.output);
   suite::XdmfRectGrid grid{{(unsigned long long)opt_.nx + 1}, {problem_.xmin}, {dx_}};
   PetscCall(suite::writeXdmfRectSeries(ctx_.comm(), xmf, h5name, grid, steps));
   PetscCall(out_.commit(&ctx_));

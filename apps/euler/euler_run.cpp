@@ -17,44 +17,7 @@ namespace euler_app {
 using namespace suite::euler;
 
 namespace {
-double cpuSeconds() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-const char* const kTimeSchemes = "ssprk3, rk4, beuler, cn, bdf2";
 const char* const kLineSolves[] = {"substructured", "gather"};
-
-PetscErrorCode registerSspRk3() {
-  static bool done = false;
-  PetscFunctionBeginUser;
-  if (!done) { // Shu & Osher (1988) three-stage SSP-RK3 (Gottlieb & Shu 1998, eq. 4.2) in Butcher form
-    const PetscReal A[9] = {0, 0, 0, 1, 0, 0, 0.25, 0.25, 0}, b[3] = {1.0 / 6, 1.0 / 6, 2.0 / 3},
-                    c[3] = {0, 1, 0.5};
-    PetscCall(TSRKRegister("ssprk3", 3, 3, A, b, c, nullptr, 0, nullptr));
-    done = true;
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode rhsCallback(TS, PetscReal t, Vec U, Vec F, void* ctx) {
-  return static_cast<EulerRun*>(ctx)->rhs(t, U, F);
-}
-PetscErrorCode preStepCallback(TS ts) {
-  void* ctx;
-  PetscFunctionBeginUser;
-  PetscCall(TSGetApplicationContext(ts, &ctx));
-  PetscCall(static_cast<EulerRun*>(ctx)->preStep());
-  PetscFunctionReturn(0);
-}
-PetscErrorCode postStepCallback(TS ts) {
-  void* ctx;
-  PetscFunctionBeginUser;
-  PetscCall(TSGetApplicationContext(ts, &ctx));
-  PetscCall(static_cast<EulerRun*>(ctx)->postStep());
-  PetscFunctionReturn(0);
-}
 } // namespace
 
 EulerRun::~EulerRun() {
@@ -91,11 +54,9 @@ PetscErrorCode EulerRun::readOptions() {
   PetscCheck(scheme_, comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
              "Unknown scheme '%s' (option -scheme); known schemes: %s", opt_.scheme.c_str(),
              schemeNames().c_str());
-  const bool known_time = opt_.time == "ssprk3" || opt_.time == "rk4" || opt_.time == "beuler" ||
-                          opt_.time == "cn" || opt_.time == "bdf2";
-  PetscCheck(known_time, comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+  PetscCheck(isKnownTimeScheme(opt_.time), comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
              "Unknown time integrator '%s' (option -time); known: %s", opt_.time.c_str(), kTimeSchemes);
-  opt_.implicit = opt_.time == "beuler" || opt_.time == "cn" || opt_.time == "bdf2";
+  opt_.implicit = isImplicit(opt_.time);
 
   opt_.nx = problem_.default_nx;
   opt_.t_final = problem_.t_final;
@@ -240,58 +201,11 @@ PetscErrorCode EulerRun::setup() {
 
 PetscErrorCode EulerRun::setupTimeStepper() {
   PetscFunctionBeginUser;
-  PetscCall(registerSspRk3());
-  PetscCall(TSCreate(ctx_.comm(), &ts_));
-  PetscCall(TSSetDM(ts_, da_));
-  PetscCall(TSSetProblemType(ts_, TS_NONLINEAR));
-  PetscCall(TSSetRHSFunction(ts_, nullptr, rhsCallback, this));
-  PetscCall(TSSetApplicationContext(ts_, this));
-  if (opt_.time == "ssprk3" || opt_.time == "rk4") {
-    PetscCall(TSSetType(ts_, TSRK));
-    PetscCall(TSRKSetType(ts_, opt_.time == "rk4" ? TSRK4 : "ssprk3"));
-  } else {
-    if (opt_.time == "beuler")
-      PetscCall(TSSetType(ts_, TSBEULER));
-    else if (opt_.time == "cn")
-      PetscCall(TSSetType(ts_, TSCN));
-    else {
-      PetscCall(TSSetType(ts_, TSBDF));
-      PetscCall(TSBDFSetOrder(ts_, 2));
-    }
-    SNES snes;
-    KSP ksp;
-    PC pc;
-    PetscCall(TSGetSNES(ts_, &snes));
-    PetscCall(SNESSetUseMatrixFree(snes, PETSC_FALSE, PETSC_TRUE)); // Jacobian-free Newton-Krylov
-    PetscCall(SNESGetKSP(snes, &ksp));
-    PetscCall(KSPSetType(ksp, KSPGMRES));
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(PCSetType(pc, PCNONE));
-    PetscCall(SNESSetTolerances(snes, 1e-10, 1e-6, PETSC_DEFAULT, 30, PETSC_DEFAULT));
-    PetscCall(SNESSetMaxLinearSolveFailures(snes, 30)); // inexact Newton: accept unconverged GMRES steps
-    PetscCall(KSPSetTolerances(ksp, 1e-3, PETSC_DEFAULT, PETSC_DEFAULT, 100));
-    // A Newton solve that fails (the ENO/WENO stencil choice is not differentiable, so Newton can stall at a
-    // shock) rejects the step and retries it at half the time step; the next step starts again from the CFL
-    // step. The rejections are counted and reported.
-    PetscCall(TSSetMaxSNESFailures(ts_, -1));
-  }
-  TSAdapt adapt;
-  PetscCall(TSGetAdapt(ts_, &adapt));
-  PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));
-  PetscCall(TSSetMaxTime(ts_, opt_.t_final));
-  PetscCall(TSSetMaxSteps(ts_, opt_.max_steps > 0 ? opt_.max_steps : PETSC_MAX_INT));
-  PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_MATCHSTEP));
   double amax;
   PetscCall(maxWaveSpeed(U_, &amax));
-  PetscCall(TSSetTimeStep(ts_, opt_.dt > 0 ? opt_.dt : opt_.cfl * dx_ / amax));
-  PetscCall(TSSetPreStep(ts_, preStepCallback));
-  PetscCall(TSSetPostStep(ts_, postStepCallback));
-  PetscCall(TSSetFromOptions(ts_));
-  if (opt_.implicit) {
-    SNES snes;
-    PetscCall(TSGetSNES(ts_, &snes));
-    PetscCall(SNESSetFromOptions(snes));
-  }
+  StepperSettings s{opt_.time, opt_.t_final, opt_.max_steps, opt_.dt > 0 ? opt_.dt : opt_.cfl * dx_ / amax};
+  PetscCall(createStepper(ctx_.comm(), da_, s, rhsCallback<EulerRun>, this, preStepCallback<EulerRun>,
+                          postStepCallback<EulerRun>, &ts_));
   PetscFunctionReturn(0);
 }
 

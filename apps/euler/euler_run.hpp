@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/progress.hpp"
+#include "euler_stepper.hpp"
 #include "core/run_context.hpp"
 #include "euler/line_operator.hpp"
 #include "euler/problem.hpp"
