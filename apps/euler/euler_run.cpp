@@ -142,13 +142,13 @@ PetscErrorCode EulerRun::readOptions() {
   std::snprintf(what, sizeof what, "-nx %lld", (long long)opt_.nx);
   PetscCall(suite::checkMemoryEstimate(comm, (opt_.implicit ? 2000.0 : 1200.0) * opt_.nx / ctx_.size() + 5e7,
                                        what));
-  const PetscInt width = 2 * LineOperator::kGhost;
+  const PetscInt width = 2 * kLineGhost;
   PetscCheck(opt_.nx >= width, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -nx %" PetscInt_FMT ": below the stencil width %" PetscInt_FMT " of the schemes",
              opt_.nx, width);
-  PetscCheck(opt_.nx >= LineOperator::kGhost * ctx_.size(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(opt_.nx >= kLineGhost * ctx_.size(), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -nx %" PetscInt_FMT ": each of the %d ranks needs at least %d cells", opt_.nx,
-             ctx_.size(), LineOperator::kGhost);
+             ctx_.size(), kLineGhost);
   PetscCheck(opt_.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", opt_.cfl);
   PetscCheck(opt_.dt >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -dt %g: must be >= 0 (0: CFL-controlled)", opt_.dt);
@@ -166,7 +166,7 @@ PetscErrorCode EulerRun::setup() {
   MPI_Comm comm = ctx_.comm();
   PetscFunctionBeginUser;
   const DMBoundaryType bt = periodic_ ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
-  PetscCall(DMDACreate1d(comm, bt, opt_.nx, 3, LineOperator::kGhost, nullptr, &da_));
+  PetscCall(DMDACreate1d(comm, bt, opt_.nx, 3, kLineGhost, nullptr, &da_));
   PetscCall(DMSetUp(da_));
   PetscCall(DMDASetFieldName(da_, 0, "rho"));
   PetscCall(DMDASetFieldName(da_, 1, "rho_u"));
@@ -180,10 +180,9 @@ PetscErrorCode EulerRun::setup() {
   lo.shock_threshold = opt_.shock_threshold;
   lo.positivity = opt_.positivity;
   lo.gather_lines = opt_.gather_lines;
-  op_ = std::make_unique<LineOperator>(scheme_, lo);
-  q_.resize(xm_ + 2 * LineOperator::kGhost);
+  op_ = std::make_unique<DirectionSweep<3>>(scheme_, lo);
+  q_.resize(xm_ + 2 * kLineGhost);
   h_.resize(xm_ + 1);
-  dq_.resize(xm_);
   xc_.resize(xm_);
   PetscCall(DMCreateGlobalVector(da_, &U_));
   PetscScalar* u;
@@ -212,7 +211,7 @@ PetscErrorCode EulerRun::setupTimeStepper() {
 PetscErrorCode EulerRun::fillGhosts(Vec3* q) const {
   PetscFunctionBeginUser;
   if (periodic_) PetscFunctionReturn(0);
-  const int g = LineOperator::kGhost;
+  const int g = kLineGhost;
   const double gam = problem_.gamma;
   if (xs_ == 0) {
     for (int m = 0; m < g; ++m) {
@@ -277,7 +276,7 @@ PetscErrorCode EulerRun::rhs(double, Vec U, Vec F) {
   PetscCall(DMGetLocalVector(da_, &Ul));
   PetscCall(DMGlobalToLocal(da_, U, INSERT_VALUES, Ul));
   PetscCall(VecGetArrayRead(Ul, &u));
-  const int g = LineOperator::kGhost;
+  const int g = kLineGhost;
   double amax = 0.0;
   for (PetscInt k = 0; k < xm_ + 2 * g; ++k) {
     const bool ghost_at_end = !periodic_ && ((xs_ == 0 && k < g) || (xs_ + xm_ == opt_.nx && k >= xm_ + g));
@@ -289,16 +288,15 @@ PetscErrorCode EulerRun::rhs(double, Vec U, Vec F) {
   PetscCall(fillGhosts(q_.data()));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &amax, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
   try {
-    op_->interfaceFluxes(ctx_.comm(), q_.data(), opt_.nx, xs_, (int)xm_, periodic_, amax * (1.0 + 1e-12),
-                         opt_.positivity ? dt_limiter_ / dx_ : 0.0, h_.data());
+    op_->faceFluxes(ctx_.comm(), q_.data(), 1, opt_.nx, xs_, (int)xm_, periodic_, amax * (1.0 + 1e-12),
+                    opt_.positivity ? dt_limiter_ / dx_ : 0.0, h_.data());
   } catch (const std::exception& e) { // identical on every rank: the line solve is redundant
     SETERRQ(ctx_.comm(), PETSC_ERR_NOT_CONVERGED,
             "Euler right-hand side failed at step %" PetscInt_FMT ": %s", steps_, e.what());
   }
-  LineOperator::divergence(h_.data(), (int)xm_, dx_, dq_.data());
   PetscCall(VecGetArray(F, &f));
   for (PetscInt k = 0; k < xm_; ++k)
-    for (int c = 0; c < 3; ++c) f[3 * k + c] = dq_[k][c];
+    for (int c = 0; c < 3; ++c) f[3 * k + c] = -(h_[k + 1][c] - h_[k][c]) / dx_;
   PetscCall(VecRestoreArray(F, &f));
   PetscFunctionReturn(0);
 }

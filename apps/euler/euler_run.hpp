@@ -5,7 +5,7 @@
 #include "core/progress.hpp"
 #include "euler_stepper.hpp"
 #include "core/run_context.hpp"
-#include "euler/line_operator.hpp"
+#include "euler/direction_sweep.hpp"
 #include "euler/problem.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
@@ -72,14 +72,14 @@ private:
   Options opt_;
   suite::euler::Problem problem_;
   const suite::euler::SchemeInfo* scheme_ = nullptr;
-  std::unique_ptr<suite::euler::LineOperator> op_;
+  std::unique_ptr<suite::euler::DirectionSweep<3>> op_; // the line's fluxes
   DM da_ = nullptr;
   Vec U_ = nullptr;
   TS ts_ = nullptr;
   PetscInt xs_ = 0, xm_ = 0;
   double dx_ = 0.0, dt_limiter_ = 0.0;
   bool periodic_ = false;
-  std::vector<Vec3> q_, h_, dq_;
+  std::vector<Vec3> q_, h_;
   std::vector<double> xc_; // local cell centres
   // output
   suite::H5Output out_;

@@ -266,7 +266,12 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
     sx_.resize((size_t)ns * nface * NV);
     if (ns > 0) {
       StageScope stage;
-      lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
+      if (!opt_.gather_lines)
+        lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
+      else // comparison path: every line gathered to every rank, one exchange per line
+        for (int l = 0; l < ns; ++l)
+          gather_.solveScalar(comm, nown, &sabc_[(size_t)3 * nown * l], NV, &srhs_[(size_t)NV * nown * l],
+                              periodic, xs, nface, &sx_[(size_t)NV * nface * l]);
     }
     is = 0;
     for (int l = 0; l < nlines; ++l)

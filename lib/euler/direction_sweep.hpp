@@ -1,21 +1,24 @@
-// Interface fluxes of ALL grid lines of one direction of a 2D/3D grid (the 1D scheme of line_operator.hpp
-// applied direction by direction): Lax-Friedrichs flux splitting, characteristic-wise rows with the
-// direction's Roe eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry, and
-// for compact schemes one batched, exact, distributed solve of every line of the direction
-// (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve with NV
-// right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). The decision is reduced over
-// the ranks that share a line, so per call the messages are O(1) in the number of lines: one Allreduce of the
-// line flags, and for each batch one Allgather and one Allreduce: one scalar batch, and block batches of at most
-// LineOptions::batch_bytes of rows each (256 MiB: one batch for a 64^3 block even if every line is shocked).
-// References: as line_operator.hpp (Shu 1997; Ghosh & Baeder 2012; Lele 1992); dimension-by-dimension
-// finite-difference form: Shu, ICASE report 97-65, sec. 2.3.2 (the 1D flux derivative applied along each
-// direction, the eigenvectors of that direction's flux Jacobian).
+// Interface fluxes of all grid lines of one direction (1D: the one line; 2D/3D: the scheme applied direction by
+// direction) for the conservative finite-difference form dU_j/dt = -(h_{j+1/2} - h_{j-1/2}) / dx:
+// Lax-Friedrichs flux splitting (line_options.hpp), characteristic-wise rows with the direction's Roe
+// eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry, the Hu-Adams-Shu
+// positivity limiter, and for compact schemes one batched, exact, distributed solve of every line of the
+// direction (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve
+// with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). The decision is
+// reduced over the ranks that share a line, so per call the messages are O(1) in the number of lines: one
+// Allreduce of the line flags, and for each batch one Allgather and one Allreduce.
+// References: Shu, ICASE report 97-65 (1997), sec. 2.3 (flux splitting, characteristic decomposition,
+// dimension-by-dimension finite differences); Ghosh & Baeder, SIAM J. Sci. Comput. 34 (2012) A1678, sec. 2.3
+// (characteristic compact rows as a block-tridiagonal system: row j+1/2 of field k is multiplied by the left
+// eigenvector l_k(j+1/2), then by R(j+1/2) to return to conserved unknowns, so each block row is R diag(a) L,
+// R diag(b) L, R diag(c) L); Lele, J. Comput. Phys. 103 (1992) 16 (Pade rows).
 #pragma once
 
 #include "euler/gas_nd.hpp"
-#include "euler/line_operator.hpp"
+#include "euler/line_options.hpp"
 #include "euler/schemes.hpp"
 #include "linalg/substructured_block_lines.hpp"
+#include "linalg/tridiag_distributed.hpp"
 
 #include <mpi.h>
 
@@ -26,7 +29,7 @@ namespace suite::euler {
 template <int NV> class DirectionSweep {
 public:
   using V = typename LineGas<NV>::V;
-  static constexpr int kGhost = LineOperator::kGhost;
+  static constexpr int kGhost = kLineGhost;
 
   DirectionSweep(const SchemeInfo* scheme, const LineOptions& options) : scheme_(scheme), opt_(options) {}
 
@@ -40,7 +43,12 @@ public:
                   bool periodic, double alpha, double lambda, V* h);
 
   const LineStats& stats() const { return stats_; }
-  const linalg::SubstructuredBlockLines& lineSolver() const { return lines_; }
+  // Line solves (batched calls, or one per line with -line_solve gather) and their exact fallbacks.
+  long long lineSolves() const { return opt_.gather_lines ? gather_.stats().solves : lines_.stats().solves; }
+  long long linesSolved() const { return opt_.gather_lines ? gather_.stats().solves : lines_.stats().lines; }
+  long long lineFallbacks() const {
+    return opt_.gather_lines ? gather_.stats().lu_fallbacks : lines_.stats().fallbacks;
+  }
 
 private:
   struct LineWork; // per-line scratch (defined in the .cpp)
@@ -55,6 +63,7 @@ private:
   LineOptions opt_;
   LineStats stats_;
   linalg::SubstructuredBlockLines lines_;
+  linalg::DistributedTridiag gather_; // LineOptions::gather_lines
   std::vector<V> f_;
   std::vector<double> speed_, rho_, p_, alpha_;
   std::vector<int> flag_, blocks_;

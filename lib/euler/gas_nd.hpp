@@ -2,7 +2,7 @@
 // a state of NV = dim + 2 conserved variables in the line's frame (rho, m_n, m_t1 [, m_t2], E), where m_n is
 // the momentum along the line and m_t the transverse momenta (passively advected). The flux along the line,
 // the Roe-averaged eigensystem (eigenvalues u - c, u, u (shear, NV - 3 times), u + c), the HLLC flux and the
-// Lax-Friedrichs flux. NV = 3 is the 1D system of gas.hpp / characteristic.hpp.
+// Lax-Friedrichs flux, the Hu-Adams-Shu positivity limiter. NV = 3 is the 1D system of gas.hpp.
 // References: Toro, Riemann Solvers and Numerical Methods for Fluid Dynamics, 3rd ed. (2009): eqs. (3.2),
 // (3.81)-(3.82) (x-split 3D Euler, right eigenvectors), sec. 11.2 (Roe averages), sec. 10.4 (HLLC, eq.
 // (10.39) star states with transverse velocities); left eigenvectors: the inverse of Toro's (3.82), as in

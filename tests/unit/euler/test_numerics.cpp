@@ -1,11 +1,8 @@
-// Euler numerics without MPI: eigenvectors, reconstruction orders (WENO5-Z, Pade, CRWENO5-Z at critical
-// points), exact Riemann solver against Toro's tables, HLLC consistency, positivity limiter.
-#include "euler/characteristic.hpp"
+// Euler numerics without MPI: reconstruction orders (WENO5-Z, Pade, CRWENO5-Z at critical points), exact Riemann
+// solver against Toro's tables (the line gas of 1D/2D/3D: test_line_gas.cpp).
 #include "euler/crweno5.hpp"
 #include "euler/enopade6.hpp"
 #include "euler/exact_riemann.hpp"
-#include "euler/muscl2.hpp"
-#include "euler/positivity.hpp"
 #include "euler/weno5.hpp"
 #include "linalg/tridiag.hpp"
 
@@ -16,17 +13,6 @@
 #include <vector>
 
 using namespace suite::euler;
-
-TEST(EulerCharacteristic, LeftTimesRightIsIdentity) {
-  const double g = 1.4;
-  const Eigensystem e = roeEigensystem(toCons({1.0, 0.3, 1.0}, g), toCons({0.2, -1.1, 0.05}, g), g);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double s = 0;
-      for (int k = 0; k < 3; ++k) s += e.L[3 * i + k] * e.R[3 * k + j];
-      EXPECT_NEAR(s, i == j ? 1.0 : 0.0, 1e-13);
-    }
-}
 
 namespace {
 // L1 error of the conservative derivative (h_{j+1/2} - h_{j-1/2}) / dx of a periodic f on [-1, 1] with
@@ -119,30 +105,4 @@ TEST(EulerExactRiemann, ToroTable4_2) {
   EXPECT_DOUBLE_EQ(sod.sample(-10).rho, 1.0);
   EXPECT_NEAR(sod.sample(0.5).rho, 0.42632, 1e-5);
   EXPECT_NEAR(sod.sample(1.2).rho, 0.26557, 1e-5);
-}
-
-TEST(EulerFlux, HllcConsistentAndMusclExactOnUniformState) {
-  const double g = 1.4;
-  const Vec3 q = toCons({0.7, -0.4, 2.0}, g), f = physicalFlux(q, g), h = hllcFlux(q, q, g);
-  const Vec3 qs[4] = {q, q, q, q};
-  const Vec3 m = muscl2Flux(qs, g);
-  for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(h[c], f[c], 1e-14);
-    EXPECT_NEAR(m[c], f[c], 1e-14);
-  }
-}
-
-TEST(EulerPositivity, LimiterKeepsOneSidedStatesPositive) {
-  const double g = 1.4, lambda = 0.4 / 3.0;
-  const Vec3 qa = toCons({1.0, 0.0, 1.0}, g), qb = toCons({1e-3, 0.0, 1e-10}, g);
-  Vec3 h = {5.0, -3.0, 7.0}; // a wild high-order flux
-  const double alpha = std::max(maxWaveSpeed(qa, g), maxWaveSpeed(qb, g));
-  const double theta = limitPositivity(qa, qb, alpha, lambda, g, &h);
-  EXPECT_LT(theta, 1.0);
-  const Vec3 sa = {qa[0] - 2 * lambda * h[0], qa[1] - 2 * lambda * h[1], qa[2] - 2 * lambda * h[2]};
-  const Vec3 sb = {qb[0] + 2 * lambda * h[0], qb[1] + 2 * lambda * h[1], qb[2] + 2 * lambda * h[2]};
-  EXPECT_GT(sa[0], 0.0);
-  EXPECT_GT(sb[0], 0.0);
-  EXPECT_GT(pressure(sa, g), 0.0);
-  EXPECT_GT(pressure(sb, g), 0.0);
 }
