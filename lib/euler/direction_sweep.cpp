@@ -145,12 +145,6 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
   constexpr int NN = NV * NV;
   const double g = opt_.gamma;
   prepareLine(q, xm, alpha);
-  if (blocks)
-    for (int s = 0; s < 2; ++s) {
-      std::fill(A[s], A[s] + NN * nown, 0.0);
-      std::fill(B[s], B[s] + NN * nown, 0.0);
-      std::fill(C[s], C[s] + NN * nown, 0.0);
-    }
   for (int k = 0; k < nown; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const V* qs = q + k;
@@ -159,6 +153,12 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     const bool shock = boundary ? !scheme_->hybrid : shocks[k] != 0;
     const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
                                     : (shock ? scheme_->shock_row : scheme_->smooth_row);
+    if (blocks && !(shock && !boundary)) // rows that set only diagonals (Pade, explicit closures)
+      for (int s = 0; s < 2; ++s) {
+        std::fill(A[s] + NN * k, A[s] + NN * (k + 1), 0.0);
+        std::fill(B[s] + NN * k, B[s] + NN * (k + 1), 0.0);
+        std::fill(C[s] + NN * k, C[s] + NN * (k + 1), 0.0);
+      }
     if (!shock && !boundary) { // Pade row: central, so the split cancels; conserved-space right-hand side
       for (int c = 0; c < NV; ++c) {
         if (!blocks) { // the row is linear: the rows of f+ and f- add up to the row of f
@@ -202,7 +202,12 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
           continue;
         }
         d[s][NV * k + r] = dr[r];
-        if (explicit_row) {
+        if (explicit_row) { // the block row is the identity
+          if (r == 0) {
+            std::fill(A[s] + NN * k, A[s] + NN * (k + 1), 0.0);
+            std::fill(B[s] + NN * k, B[s] + NN * (k + 1), 0.0);
+            std::fill(C[s] + NN * k, C[s] + NN * (k + 1), 0.0);
+          }
           B[s][NN * k + (NV + 1) * r] = 1.0;
           continue;
         }
