@@ -307,8 +307,17 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
                         true, nullptr, nullptr, A, B, C, d);
       }
       bx_.resize((size_t)2 * cn * nface * NV);
-      lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
-                   nface, bx_.data());
+      if (!opt_.gather_lines)
+        lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
+                     nface, bx_.data());
+      else if constexpr (NV == 3) // comparison path (1D): each system gathered to every rank
+        for (int m = 0; m < 2 * cn; ++m) {
+          const size_t o = (size_t)m * nown * NN;
+          gather_.solve(comm, NV, nown, &bA_[o], &bB_[o], &bC_[o], &bd_[(size_t)m * nown * NV], periodic, xs,
+                        nface, &bx_[(size_t)m * nface * NV]);
+        }
+      else
+        throw std::invalid_argument("gathered line solves (-line_solve gather) are 1D only");
       for (int ib = 0; ib < cn; ++ib) {
         const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
         const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
