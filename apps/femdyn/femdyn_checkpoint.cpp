@@ -42,9 +42,13 @@ suite::CheckpointHeader FemdynRun::checkpointHeader() const {
       opt_.time_scheme.c_str(), opt_.rho_inf, nm.beta, nm.gamma, nm.newton_max_it, opt_.jacobian.c_str(),
       opt_.material.c_str(), opt_.young, opt_.poisson, opt_.density, opt_.mass.c_str(), nm.rayleigh_mass,
       nm.rayleigh_stiffness, opt_.tip_load, opt_.gravity[0], opt_.gravity[1], opt_.gravity[2]);
+  // The Newton predictor changes the iterates (not the tolerance): tagged only when not the default, so that
+  // checkpoints written before the option existed still load.
+  std::string tag = scheme;
+  if (opt_.predictor != "constant") tag += " predictor=" + opt_.predictor;
   suite::CheckpointHeader h;
   h.app = "femdyn";
-  h.scheme = scheme;
+  h.scheme = tag;
   h.grid = {mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree()};
   return h;
 }
@@ -77,6 +81,12 @@ PetscErrorCode FemdynRun::writeCheckpointAt(const suite::fem::NewmarkState& s, l
                hist.data()});
   if (nsnap > 0)
     f.push_back({"snapshots", {nsnap, ndof + 1}, {0, 0}, {root ? nsnap : 0, ndof + 1}, snaps.data()});
+  // Tangent predictor: where the last factorisation was made (and its dt), refactorised on restart.
+  double dt_tangent = s.dt_tangent;
+  if (!s.u_tangent.empty()) {
+    f.push_back({"u_tangent", {n}, {0}, {root ? n : 0}, const_cast<double*>(s.u_tangent.data())});
+    f.push_back({"dt_tangent", {1}, {0}, {root ? 1ull : 0ull}, &dt_tangent});
+  }
   // Haptic probe history (sync records and haptic ticks), so that a restarted run's /probe is complete.
   const auto& pr = res_.probe;
   const ull nps = pr.sync_time.size(), nph = pr.haptic_time.size();
@@ -109,7 +119,7 @@ PetscErrorCode FemdynRun::readRestart(suite::fem::NewmarkState* s, long long* st
   suite::CheckpointHeader found;
   PetscCall(suite::readCheckpoint(comm, path, checkpointHeader(), &found, {}));
   suite::Dims hdims, sdims;
-  bool has_hist = false, has_snap = false, has_probe = false;
+  bool has_hist = false, has_snap = false, has_probe = false, has_tangent = false;
   suite::Dims psdims, phdims;
   {
     suite::H5Input in;
@@ -118,6 +128,7 @@ PetscErrorCode FemdynRun::readRestart(suite::fem::NewmarkState* s, long long* st
     if (has_hist) PetscCall(in.datasetDims("/fields/history", &hdims));
     PetscCall(in.hasObject("/fields/snapshots", &has_snap));
     if (has_snap) PetscCall(in.datasetDims("/fields/snapshots", &sdims));
+    PetscCall(in.hasObject("/fields/u_tangent", &has_tangent));
     PetscCall(in.hasObject("/fields/probe_sync", &has_probe));
     if (has_probe) {
       PetscCall(in.datasetDims("/fields/probe_sync", &psdims));
@@ -149,6 +160,14 @@ PetscErrorCode FemdynRun::readRestart(suite::fem::NewmarkState* s, long long* st
                hist.data()});
   if (nsnap > 0)
     f.push_back({"snapshots", {nsnap, ndof + 1}, {0, 0}, {root ? nsnap : 0, ndof + 1}, snaps.data()});
+  double dt_tangent = 0;
+  if (has_tangent) {
+    s->u_tangent.assign(n, 0.0);
+    f.push_back({"u_tangent", {n}, {0}, {root ? n : 0}, s->u_tangent.data()});
+    f.push_back({"dt_tangent", {1}, {0}, {root ? 1ull : 0ull}, &dt_tangent});
+  } else {
+    s->u_tangent.clear();
+  }
   if (has_probe) {
     f.push_back({"probe_sync", {nps, 4}, {0, 0}, {root ? nps : 0, 4}, psync.data()});
     f.push_back({"probe_haptic", {nph, 2}, {0, 0}, {root ? nph : 0, 2}, phap.data()});
@@ -167,6 +186,11 @@ PetscErrorCode FemdynRun::readRestart(suite::fem::NewmarkState* s, long long* st
     pr.haptic_time.push_back(phap[2 * i]), pr.haptic_force.push_back(phap[2 * i + 1]);
   pr.ticks = (long long)nph;
   for (auto* vec : {&s->u, &s->v, &s->a}) PetscCallMPI(MPI_Bcast(vec->data(), (int)n, MPI_DOUBLE, 0, comm));
+  if (has_tangent) {
+    PetscCallMPI(MPI_Bcast(s->u_tangent.data(), (int)n, MPI_DOUBLE, 0, comm));
+    PetscCallMPI(MPI_Bcast(&dt_tangent, 1, MPI_DOUBLE, 0, comm));
+  }
+  s->dt_tangent = dt_tangent;
   PetscCallMPI(MPI_Bcast(hist.data(), (int)hist.size(), MPI_DOUBLE, 0, comm));
   if (nsnap > 0) PetscCallMPI(MPI_Bcast(snaps.data(), (int)snaps.size(), MPI_DOUBLE, 0, comm));
   PetscCheck(found.dt == opt_.dt, comm, PETSC_ERR_ARG_INCOMP,

@@ -105,6 +105,10 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCall(readString("-jacobian",
                        "Newton matrix: tangent (full Newton) or initial (K0, factor once per dt)",
                        &opt_.jacobian));
+  PetscCall(readString("-newton_predictor",
+                       "Newton start: constant (Newmark, a_{n+1} = a_n) or tangent (plus one correction "
+                       "with the last step's factorised effective tangent; full Newton only)",
+                       &opt_.predictor));
   PetscCall(readString("-mass", "Mass matrix: consistent or lumped (HRZ)", &opt_.mass));
   PetscCall(PetscOptionsReal("-rayleigh_alpha", "Rayleigh damping C = alpha M + beta K0: alpha", "",
                              nm.rayleigh_mass, &nm.rayleigh_mass, nullptr));
@@ -163,6 +167,9 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCheck(!opt_.output.empty() || ctx_.helpRequested(), comm, PETSC_ERR_ARG_WRONG,
              "-output FILE.h5 is required");
   nm.initial_jacobian = opt_.jacobian == "initial";
+  PetscCheck(opt_.predictor == "constant" || opt_.predictor == "tangent", comm, PETSC_ERR_ARG_WRONG,
+             "-newton_predictor %s: must be constant or tangent", opt_.predictor.c_str());
+  nm.tangent_predictor = opt_.predictor == "tangent";
   PetscCheck(opt_.time_scheme == "newmark" || opt_.time_scheme == "generalized_alpha", comm,
              PETSC_ERR_ARG_WRONG, "-time_scheme %s: must be newmark or generalized_alpha",
              opt_.time_scheme.c_str());
@@ -377,6 +384,9 @@ PetscErrorCode FemdynRun::solveDynamic() {
   long long k0 = 0;
   if (policy_.restartRequested()) {
     PetscCall(readRestart(&s, &k0)); // u, v, a, t and the history so far
+    // Tangent predictor: the factorisation the interrupted run held (probe at its position of the last step).
+    if (probe) probe->setProbe(mesh_.nodes[pr.node][1] + probeTarget(s.t));
+    PetscCall(nm.restoreTangent(s));
   } else {
     PetscCall(nm.initialize(&s));
     record(StepTimings(), 0.0, 0.0);

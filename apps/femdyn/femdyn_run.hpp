@@ -18,7 +18,8 @@ namespace femdyn_app {
 
 struct Options {
   std::string mesh = "beam", mesh_file, material = "linear", ordering = "rcm", solver = "cholmod",
-              mass = "consistent", dirichlet = "x=0", jacobian = "tangent", output, time_scheme = "newmark";
+              mass = "consistent", dirichlet = "x=0", jacobian = "tangent", output, time_scheme = "newmark",
+              predictor = "constant";
   double rho_inf = 1, beam_length = 10, young = 1000, poisson = 0.3, density = 1, dt = 0.01, tip_load = 0;
   double beam_size[2] = {1, 1}, gravity[3] = {0, 0, 0};
   PetscInt beam_cells[3] = {10, 1, 1}, order = 1, steps = 100, load_steps = 1, snapshot_every = 0;

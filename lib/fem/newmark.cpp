@@ -88,6 +88,7 @@ PetscErrorCode Newmark::setup(MPI_Comm comm, SecondOrderSystem* sys, LinearSolve
   sys_->internalForce(zero.data(), f_.data(), &K0_, &e);
   C_.assign(M_.size(), 0.0);
   for (size_t k = 0; k < M_.size(); ++k) C_[k] = p.rayleigh_mass * M_[k] + p.rayleigh_stiffness * K0_[k];
+  damped_ = std::any_of(C_.begin(), C_.end(), [](double c) { return c != 0; });
   Keff_ = sys->pattern();
   factored_dt_ = -1;
   PetscFunctionReturn(0);
@@ -112,6 +113,7 @@ PetscErrorCode Newmark::initialize(NewmarkState* s) {
   PetscCheck(ok, comm_, PETSC_ERR_MAT_CH_ZRPVT, "mass matrix is not positive definite (check -density)");
   PetscCall(solver_->solve(r_.data(), s->a.data()));
   factored_dt_ = -1;
+  keff_current_ = false; // the solver holds the mass matrix now
   PetscFunctionReturn(0);
 }
 
@@ -146,39 +148,76 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
   if (p_.partial_sums && rank_ > 0) std::fill(fe_.begin(), fe_.end(), 0.0);
   const bool reuse = sys_->isLinear() || p_.initial_jacobian;
   const bool exact_after_one = sys_->isLinear();
-  double ref = 0;
-  *ok = true;
-  tm->converged = false;
-  for (int it = 0;; ++it) {
+  const double* ueval = alpha ? ua_.data() : un.data();
+  // Residual r_ at the iterate un, with the tangent Kt_ when asked (same point, same force); admissibility.
+  auto residual = [&](bool want_tangent, bool* admissible) -> PetscErrorCode {
+    const double t0 = now();
     for (int i = 0; i < n; ++i) an[i] = c0 * (un[i] - up[i]), vn[i] = vp[i] + g * dt * an[i];
-    double t0 = now();
-    const bool need_tangent = !reuse;
-    double e;
     if (alpha)
       for (int i = 0; i < n; ++i) {
         ua_[i] = (1 - af) * un[i] + af * s->u[i];
         va_[i] = (1 - af) * vn[i] + af * s->v[i];
         aa_[i] = (1 - am) * an[i] + am * s->a[i];
       }
-    const double* ueval = alpha ? ua_.data() : un.data();
-    // Force only: the tangent is assembled below only when another Newton iteration follows (the last
-    // residual evaluation of a converged step needs no tangent).
-    bool admissible = sys_->internalForce(ueval, f_.data(), nullptr, &e);
-    PetscCall(allAdmissible(&admissible));
+    double e;
+    *admissible = sys_->internalForce(ueval, f_.data(), want_tangent ? &Kt_ : nullptr, &e);
+    PetscCall(allAdmissible(admissible));
+    if (*admissible) {
+      symMultiply(Keff_, M_, alpha ? aa_.data() : an.data(), tmp_.data());
+      if (damped_) {
+        symMultiply(Keff_, C_, alpha ? va_.data() : vn.data(), tmp2_.data());
+        for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + tmp2_[i] + f_[i] - fe_[i];
+      } else {
+        for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + f_[i] - fe_[i];
+      }
+      PetscCall(sumResidual());
+    }
+    tm->assemble += now() - t0;
+    return 0;
+  };
+  // Tangent predictor: one correction of the predictor with the factorisation the last step left behind.
+  bool chord = p_.tangent_predictor && !reuse && p_.newton_max_it > 1 && keff_current_ &&
+               s->dt_tangent == dt && static_cast<int>(s->u_tangent.size()) == n;
+  double ref = 0;
+  bool factored = false; // this attempt refactorised (the state's u_tangent no longer matches the solver)
+  *ok = true;
+  tm->converged = false;
+  if (chord) {
+    bool adm;
+    PetscCall(residual(false, &adm));
+    const double r_pred = adm ? norm2(r_) : 0;
+    if (!adm || r_pred <= p_.newton_atol) {
+      chord = false; // plain Newton from the predictor (its own rejection and convergence logic below)
+      for (int i = 0; i < n; ++i) un[i] = up[i] + b * dt * dt * s->a[i];
+    } else {
+      const double t0 = now();
+      PetscCall(solver_->solve(r_.data(), du_.data()));
+      for (int i = 0; i < n; ++i) un[i] -= du_[i];
+      tm->solve += now() - t0;
+      ref = r_pred;
+    }
+  }
+  for (int it = 0;; ++it) {
+    // The tangent is assembled with the force (one element loop) at the iterates where another iteration is
+    // expected (the first, and as many as the last accepted step needed); at the others the force comes alone
+    // first and the tangent only if another iteration follows. Either way the force and tangent are the same.
+    const bool fused = !reuse && (it == 0 || it < last_newton_);
+    bool admissible;
+    PetscCall(residual(fused, &admissible));
+    if (!admissible && it == 0 && chord) { // the correction overshot: start Newton from the predictor
+      chord = false;
+      for (int i = 0; i < n; ++i) un[i] = up[i] + b * dt * dt * s->a[i];
+      PetscCall(residual(fused, &admissible));
+    }
     if (!admissible) {
       *ok = false;
       reject_reason_ = "an element inverts (det F <= 0) at Newton iteration " + std::to_string(it);
-      tm->assemble += now() - t0;
+      if (factored) keff_current_ = false;
       PetscFunctionReturn(0);
     }
-    symMultiply(Keff_, M_, alpha ? aa_.data() : an.data(), tmp_.data());
-    symMultiply(Keff_, C_, alpha ? va_.data() : vn.data(), tmp2_.data());
-    for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + tmp2_[i] + f_[i] - fe_[i];
-    PetscCall(sumResidual());
-    tm->assemble += now() - t0;
     const double rn = norm2(r_);
     tm->residual = rn;
-    if (it == 0) ref = rn;
+    if (it == 0 && !chord) ref = rn; // with the correction: the predictor's residual, as without it
     if (rn <= p_.newton_atol || (it > 0 && rn <= p_.newton_rtol * ref)) {
       tm->converged = true;
       break;
@@ -192,17 +231,23 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
           "Newton did not converge in %d iterations (residual %.3e, tolerance max(%.1e, %.1e * %.3e))", it,
           rn, p_.newton_atol, p_.newton_rtol, ref);
       reject_reason_ = why;
+      if (factored) keff_current_ = false;
       PetscFunctionReturn(0);
     }
     bool fok = true;
-    if (need_tangent) {
-      t0 = now();
+    if (!reuse && !fused) {
+      const double t0 = now();
+      double e;
       sys_->internalForce(ueval, tmp2_.data(), &Kt_, &e); // same point: admissible, same force
       tm->assemble += now() - t0;
     }
     if (!reuse || factored_dt_ != dt) {
       PetscCall(factorEffective(dt, reuse ? K0_ : Kt_, tm, &fok));
       factored_dt_ = (reuse && fok) ? dt : -1;
+      if (!reuse) {
+        factored = true, keff_current_ = false;
+        if (p_.tangent_predictor) u_factored_.assign(ueval, ueval + n);
+      }
     }
     if (!fok) {
       *ok = false;
@@ -210,7 +255,7 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
           "the effective tangent is not positive definite at Newton iteration " + std::to_string(it);
       PetscFunctionReturn(0);
     }
-    t0 = now();
+    const double t0 = now();
     PetscCall(solver_->solve(r_.data(), du_.data()));
     for (int i = 0; i < n; ++i) un[i] -= du_[i];
     tm->solve += now() - t0;
@@ -223,6 +268,33 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
   for (int i = 0; i < n; ++i) an[i] = c0 * (un[i] - up[i]), vn[i] = vp[i] + g * dt * an[i];
   s->u.swap(un), s->v.swap(vn), s->a.swap(an);
   s->t += dt;
+  last_newton_ = tm->newton_iterations;
+  if (factored && p_.tangent_predictor) { // the factorisation left behind is K_eff at u_factored_, dt
+    s->u_tangent = u_factored_;
+    s->dt_tangent = dt;
+    keff_current_ = true;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Newmark::restoreTangent(const NewmarkState& s) {
+  PetscFunctionBeginUser;
+  keff_current_ = false;
+  const bool reuse = sys_->isLinear() || p_.initial_jacobian;
+  if (!p_.tangent_predictor || reuse || s.u_tangent.size() != static_cast<size_t>(Keff_.n))
+    PetscFunctionReturn(0);
+  PetscCheck(s.dt_tangent > 0, comm_, PETSC_ERR_ARG_WRONG, "tangent predictor: stored dt %g must be > 0",
+             s.dt_tangent);
+  double e;
+  bool adm = sys_->internalForce(s.u_tangent.data(), tmp2_.data(), &Kt_, &e);
+  PetscCall(allAdmissible(&adm));
+  PetscCheck(adm, comm_, PETSC_ERR_ARG_WRONG,
+             "tangent predictor: the stored tangent point inverts an element");
+  StepTimings tm;
+  bool ok;
+  PetscCall(factorEffective(s.dt_tangent, Kt_, &tm, &ok));
+  factored_dt_ = -1;
+  keff_current_ = ok;
   PetscFunctionReturn(0);
 }
 

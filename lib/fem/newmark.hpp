@@ -23,6 +23,12 @@ struct NewmarkParams {
   double rayleigh_mass = 0, rayleigh_stiffness = 0; // C = a M + b K0
   int max_halvings = 10;
   bool initial_jacobian = false; // modified Newton: K_eff from K0 (factor once per dt)
+  // Tangent predictor (full Newton only): the constant-acceleration predictor is corrected once with the last
+  // factorised effective tangent (previous step, same dt): one solve and one force evaluation, no assembly of
+  // a tangent, no factorisation. The Newton iterations that follow are unchanged (consistent tangent,
+  // refactorised every iteration) and so is the stopping test (relative to the residual at the
+  // constant-acceleration predictor, as without the correction); at least one Newton iteration is done.
+  bool tangent_predictor = false;
   // Distributed assembly: the system's force, tangent, energy and the mass are this rank's partial sums; the
   // residual (and energies, admissibility) are summed over the ranks of comm; the external force counts once.
   bool partial_sums = false;
@@ -43,6 +49,10 @@ struct StepTimings { // CPU seconds of the calling thread (fem/cpu_timer.hpp)
 struct NewmarkState {
   std::vector<double> u, v, a;
   double t = 0;
+  // Tangent predictor: the point (and dt) at which the last accepted step factorised its effective tangent
+  // (empty: none). Part of the state so that a restart can refactorise it (Newmark::restoreTangent).
+  std::vector<double> u_tangent;
+  double dt_tangent = 0;
 };
 
 class Newmark {
@@ -54,6 +64,9 @@ public:
   PetscErrorCode initialize(NewmarkState* s);
   // Advances s by dt (substeps with halved dt on rejection). Errors after max_halvings rejections in a row.
   PetscErrorCode step(NewmarkState* s, double dt, StepTimings* tm);
+  // After a restart (tangent predictor): refactorise the effective tangent at s.u_tangent, dt_tangent, as the
+  // uninterrupted run holds it (the system must be in the same state, e.g. the probe position). Collective.
+  PetscErrorCode restoreTangent(const NewmarkState& s);
   // Kinetic energy 1/2 v^T M v, strain energy from the last force evaluation.
   double kineticEnergy(const NewmarkState& s) const;
   double strainEnergy(const NewmarkState& s);
@@ -76,6 +89,10 @@ private:
   SymCsc Keff_;
   std::string reject_reason_; // why the last attempt was rejected
   double factored_dt_ = -1; // dt of the current factorisation when it is reusable (linear / modified Newton)
+  bool keff_current_ = false; // the solver holds K_eff at the state's (u_tangent, dt_tangent)
+  bool damped_ = false;       // C != 0
+  int last_newton_ = 1;       // Newton iterations of the last accepted attempt (when to assemble the tangent)
+  std::vector<double> u_factored_; // evaluation point of the last factorisation in this attempt
   std::vector<double> r_, du_, f_, fe_, tmp_, tmp2_, ua_, va_, aa_;
 };
 

@@ -47,11 +47,14 @@ bool isPermutation(const std::vector<int>& perm, int n) {
 }
 
 std::vector<int> expandToDofs(const std::vector<int>& node_perm, const std::vector<int>& eq, int ndof_free) {
-  std::vector<int> p;
-  p.reserve(ndof_free);
-  for (int node : node_perm)
+  std::vector<int> p(ndof_free);
+  int k = 0;
+  for (int node : node_perm) {
+    const int* e = eq.data() + 3 * node;
     for (int c = 0; c < 3; ++c)
-      if (eq[3 * node + c] >= 0) p.push_back(eq[3 * node + c]);
+      if (e[c] >= 0 && k < ndof_free) p[k++] = e[c];
+  }
+  p.resize(k);
   return p;
 }
 

@@ -170,3 +170,57 @@ TEST(FemOrdering, NodeOrderExpandsToDofs) {
   const std::vector<int> eq = {0, 1, 2, -1, -1, -1, 3, 4, 5};
   EXPECT_EQ(expandToDofs({2, 0, 1}, eq, 6), (std::vector<int>{3, 4, 5, 0, 1, 2}));
 }
+
+// Several components and isolated vertices: a permutation, each component numbered contiguously, never worse
+// than the input order by profileOf (the guard itself uses the profiles accumulated during the traversal).
+TEST(FemOrdering, ComponentsAndIsolatedVertices) {
+  const Graph a = shuffledBeamGraph(20, 2, 2, 7), b = shuffledBeamGraph(12, 3, 2, 9);
+  std::vector<std::pair<int, int>> e;
+  const int na = a.n, nb = b.n, niso = 3, n = na + nb + niso;
+  // Interleave: vertex ids of a are even-ish, b odd-ish, isolated ones at the end.
+  std::vector<int> ida(na), idb(nb);
+  int next = 0, ia = 0, ib = 0;
+  while (ia < na || ib < nb) {
+    if (ia < na) ida[ia++] = next++;
+    if (ib < nb) idb[ib++] = next++;
+  }
+  for (int v = 0; v < na; ++v)
+    for (int k = a.xadj[v]; k < a.xadj[v + 1]; ++k)
+      if (v < a.adj[k]) e.push_back({ida[v], ida[a.adj[k]]});
+  for (int v = 0; v < nb; ++v)
+    for (int k = b.xadj[v]; k < b.xadj[v + 1]; ++k)
+      if (v < b.adj[k]) e.push_back({idb[v], idb[b.adj[k]]});
+  const Graph g = graphOfEdges(n, e);
+  for (OrderingFn fn : {orderCuthillMcKee, orderReverseCuthillMcKee}) {
+    const auto p = fn(g);
+    ASSERT_TRUE(isPermutation(p, n));
+    EXPECT_LE(profileOf(g, p), profileOf(g, orderNatural(g)));
+    // Components contiguous: the component label changes at most (components - 1) times along the order.
+    std::vector<int> comp(n, 2);
+    for (int v : ida) comp[v] = 0;
+    for (int v : idb) comp[v] = 1;
+    int changes = 0;
+    for (int i = 1; i < n; ++i)
+      changes += comp[p[i]] != comp[p[i - 1]] && !(comp[p[i]] == 2 && comp[p[i - 1]] == 2);
+    EXPECT_LE(changes, 4); // a, b and the three isolated vertices in some order
+  }
+  // The shuffled, interleaved input is far from banded; RCM of the union is banded like its components.
+  const long long bu = bandwidthOf(g, orderReverseCuthillMcKee(g));
+  EXPECT_LE(5 * bu, bandwidthOf(g, orderNatural(g)));
+  EXPECT_LE(bu, 2 * std::max(bandwidthOf(a, orderReverseCuthillMcKee(a)),
+                             bandwidthOf(b, orderReverseCuthillMcKee(b))));
+}
+
+// George & Liu's pseudo-peripheral node on a masked path 0-1-...-9 without vertex 9: an end of 0..8.
+TEST(FemOrdering, PseudoPeripheralNodeRespectsMask) {
+  std::vector<std::pair<int, int>> e;
+  for (int i = 0; i < 9; ++i) e.push_back({i, i + 1});
+  const Graph g = graphOfEdges(10, e);
+  std::vector<char> mask(10, 1);
+  mask[9] = 0;
+  const int r = pseudoPeripheralNode(g, 4, mask);
+  EXPECT_TRUE(r == 0 || r == 8) << r;
+  mask.assign(10, 1);
+  const int r2 = pseudoPeripheralNode(g, 4, mask);
+  EXPECT_TRUE(r2 == 0 || r2 == 9) << r2;
+}
