@@ -12,6 +12,7 @@ namespace suite::linalg::detail {
 // LU with partial pivoting of one bs x bs block; solve() applies its inverse to a bs x ncols row-major block.
 template <int BS> struct SmallLU {
   double lu[BS * BS];
+  double inv[BS]; // 1 / U_kk, for solveFast
   int piv[BS];
 
   // False when a pivot is below 1e-14 times the largest entry of M (or not finite).
@@ -34,6 +35,7 @@ template <int BS> struct SmallLU {
         for (int j = k + 1; j < BS; ++j) lu[i * BS + j] -= l * lu[k * BS + j];
       }
     }
+    for (int k = 0; k < BS; ++k) inv[k] = 1.0 / lu[k * BS + k];
     return true;
   }
   // Applies the inverse to a bs x ncols block with row stride `stride`; NC > 0 fixes the column count at
@@ -52,6 +54,24 @@ template <int BS> struct SmallLU {
       for (int k = i + 1; k < BS; ++k)
         for (int c = 0; c < nc; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
       for (int c = 0; c < nc; ++c) X[i * stride + c] /= lu[i * BS + i];
+    }
+  }
+  // As solve(), multiplying by the stored reciprocals of the pivots instead of dividing (faster; results
+  // differ from solve() by round-off).
+  template <int NC = 0> void solveFast(double* X, int stride, int ncols = NC) const {
+    const int nc = NC > 0 ? NC : ncols;
+    if constexpr (BS > 1) {
+      for (int k = 0; k < BS; ++k)
+        if (piv[k] != k)
+          for (int c = 0; c < nc; ++c) std::swap(X[k * stride + c], X[piv[k] * stride + c]);
+    }
+    for (int i = 1; i < BS; ++i)
+      for (int k = 0; k < i; ++k)
+        for (int c = 0; c < nc; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
+    for (int i = BS - 1; i >= 0; --i) {
+      for (int k = i + 1; k < BS; ++k)
+        for (int c = 0; c < nc; ++c) X[i * stride + c] -= lu[i * BS + k] * X[k * stride + c];
+      for (int c = 0; c < nc; ++c) X[i * stride + c] *= inv[i];
     }
   }
 };

@@ -39,6 +39,48 @@ template <int N> inline bool anyNonzero(const double* v) {
   return false;
 }
 
+// Dense LU with partial pivoting of the n x n column-major matrix a, applied to the n x nrhs column-major b
+// (overwritten by the solution). In-house rather than LAPACK dgesv: the systems are small (n <= ~50) and
+// solved once per line, where a threaded BLAS may spawn threads per call (measured: 30x slower with
+// OpenBLAS on a loaded machine). False on an exactly zero (or non-finite) pivot.
+bool denseSolve(int n, double* a, int nrhs, double* b) {
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    double* ck = a + (size_t)k * n;
+    for (int i = k + 1; i < n; ++i)
+      if (std::fabs(ck[i]) > std::fabs(ck[p])) p = i;
+    if (!(std::fabs(ck[p]) > 0.0) || !std::isfinite(ck[p])) return false;
+    if (p != k) {
+      for (int j = 0; j < n; ++j) std::swap(a[(size_t)j * n + k], a[(size_t)j * n + p]);
+      for (int j = 0; j < nrhs; ++j) std::swap(b[(size_t)j * n + k], b[(size_t)j * n + p]);
+    }
+    const double inv = 1.0 / ck[k];
+    for (int i = k + 1; i < n; ++i) ck[i] *= inv;
+    for (int j = k + 1; j < n; ++j) {
+      double* cj = a + (size_t)j * n;
+      const double f = cj[k];
+      if (f != 0.0)
+        for (int i = k + 1; i < n; ++i) cj[i] -= f * ck[i];
+    }
+    for (int j = 0; j < nrhs; ++j) {
+      double* bj = b + (size_t)j * n;
+      const double f = bj[k];
+      if (f != 0.0)
+        for (int i = k + 1; i < n; ++i) bj[i] -= f * ck[i];
+    }
+  }
+  for (int j = 0; j < nrhs; ++j) {
+    double* bj = b + (size_t)j * n;
+    for (int k = n - 1; k >= 0; --k) {
+      bj[k] /= a[(size_t)k * n + k];
+      const double f = bj[k];
+      const double* ck = a + (size_t)k * n;
+      for (int i = 0; i < k; ++i) bj[i] -= f * ck[i];
+    }
+  }
+  return true;
+}
+
 // Rows of one line: block row i at A + i * ms (ms = bs * bs for block rows; 3 for scalar rows, with
 // A = abc, B = abc + 1, C = abc + 2), right-hand side d + i * bs * nrhs (row-major bs x nrhs).
 struct LineRows {
@@ -74,18 +116,18 @@ bool lineEnds(int n, int nrhs, const LineRows& L, bool hasL, bool hasR, double* 
     }
     SmallLU<BS> lu;
     if (!lu.factor(Bh)) return false;
-    lu.template solve<NR>(ry, nc, nc);
+    lu.template solveFast<NR>(ry, nc, nc);
     if (pAlive) {
-      lu.template solve<BS>(rp, BS);
+      lu.template solveFast<BS>(rp, BS);
       flushSpikes<BS>(rp, 0, BS, BS);
       pAlive = anyNonzero<bb>(rp);
     }
     if (i + 1 < n) {
       for (int k = 0; k < bb; ++k) G[k] = Ci[k];
-      lu.template solve<BS>(G, BS);
+      lu.template solveFast<BS>(G, BS);
     } else if (hasR) {
       for (int k = 0; k < bb; ++k) rq[k] = -Ci[k];
-      lu.template solve<BS>(rq, BS);
+      lu.template solveFast<BS>(rq, BS);
     }
     // First row: x_0 = sum_i W_i R_i.
     if (i == 0) {
@@ -137,11 +179,11 @@ bool lineSolve(int n, int nrhs, const LineRows& L, bool hasL, bool hasR, const d
     }
     SmallLU<BS> lu;
     if (!lu.factor(Bh)) return false;
-    lu.template solve<NR>(y, nc, nc);
+    lu.template solveFast<NR>(y, nc, nc);
     if (i + 1 < n) {
       double* Gi = G + (size_t)i * bb;
       for (int k = 0; k < bb; ++k) Gi[k] = Ci[k];
-      lu.template solve<BS>(Gi, BS);
+      lu.template solveFast<BS>(Gi, BS);
     }
   }
   for (int i = n - 2; i >= 0; --i)
@@ -182,7 +224,7 @@ void lineResidual(int n, int nrhs, const LineRows& L, bool hasL, bool hasR, cons
 // Reduced system of one line: unknown blocks ordered F_0, L_0, F_1, L_1, ... (bs x nrhs each);
 //   F_r - PF_r L_{r-1} - QF_r F_{r+1} = YF_r,  L_r - PL_r L_{r-1} - QL_r F_{r+1} = YL_r.
 // ends: rank r's end rows at ends + r * rank_stride. z: the solution, column-major N x nrhs, N = 2 P bs.
-// Dense LU (dgesv) up to reduced_dense_max unknowns, else band LU (dgbsv, 3 bs - 1 sub- and
+// Dense LU (denseSolve) up to reduced_dense_max unknowns, else band LU (dgbsv, 3 bs - 1 sub- and
 // super-diagonals); the wrap-around couplings of periodic lines (P > 1) then go into a Woodbury correction
 //   M = M0 + U V^T,  V^T z = (L_{P-1}, F_0):  z = Z - Zu (I + V^T Zu)^{-1} V^T Z,  M0 [Z Zu] = [y U].
 // False if LAPACK met an exactly singular pivot.
@@ -233,8 +275,8 @@ bool SubstructuredBlockLines::reducedSolve(int P, int nrhs, bool periodic, const
   int info = 0;
   if (banded)
     dgbsv_(&N, &kl, &ku, &ncol, red_.data(), &ldab, ipiv_.data(), zu_.data(), &N, &info);
-  else
-    dgesv_(&N, &ncol, red_.data(), &N, ipiv_.data(), zu_.data(), &N, &info);
+  else if (!denseSolve(N, red_.data(), ncol, zu_.data()))
+    info = 1;
   if (info != 0) return false;
   if (!wood) {
     std::copy(zu_.begin(), zu_.begin() + (size_t)N * nrhs, z);
@@ -249,8 +291,7 @@ bool SubstructuredBlockLines::reducedSolve(int P, int nrhs, bool periodic, const
       S[j + (size_t)c * m] = (j == c ? 1.0 : 0.0) + zu_[(size_t)(nrhs + c) * N + idx(j)];
     for (int k = 0; k < nrhs; ++k) t[j + (size_t)k * m] = zu_[(size_t)k * N + idx(j)];
   }
-  dgesv_(&m, &nrhs, S, &m, ipiv_.data(), t, &m, &info);
-  if (info != 0) return false;
+  if (!denseSolve(m, S, nrhs, t)) return false;
   for (int k = 0; k < nrhs; ++k)
     for (int row = 0; row < N; ++row) {
       double v = zu_[(size_t)k * N + row];

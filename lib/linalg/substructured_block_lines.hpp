@@ -2,10 +2,13 @@
 // one direction of a distributed grid), by substructuring (partition method: H. H. Wang, ACM TOMS 7 (1981)
 // 170; block rows: Mattor, Williams & Hewett, Parallel Computing 21 (1995) 1769), batched so that the number
 // of messages per solve does not depend on the number of lines:
-//   1. every rank eliminates its rows of every line locally (block Thomas);
+//   1. every rank eliminates its rows of every line locally (one block Thomas sweep that keeps only the first
+//      and last rows of Y, P, Q in T_r [Y P Q] = [d, -A_0 E_0, -C_{n-1} E_{n-1}]);
 //   2. the end rows of ALL lines go to every rank of the line communicator in ONE MPI_Allgather;
-//   3. every rank solves the reduced systems of all lines and finishes its rows (re-solving locally with the
-//      coupling values known, so no per-row spike columns are stored: memory O(one line), not O(all lines));
+//   3. every rank solves the reduced systems of all lines (2 P bs unknowns each: dense LU, or band LU) and
+//      finishes its rows by a second block Thomas solve with d_0 -= A_0 x_left, d_{n-1} -= C_{n-1} x_right,
+//      so no per-row spike columns are stored: work arrays O(nloc bs^2) for one line, plus the gathered end
+//      rows, P nlines (2 bs nrhs + 4 bs^2 + 1) doubles (bs 5, 128^2 lines, P = 8: 116 MB);
 //   4. one MPI_Allreduce of the per-line residuals of the global systems; lines whose residual exceeds
 //      `tolerance` or that met a tiny pivot (the same lines on every rank; rare: rows far from diagonally
 //      dominant) are solved again exactly: their rows are gathered to every rank in ONE MPI_Allgatherv (plus
@@ -13,7 +16,9 @@
 //      pivoting (LAPACK dgbsv; periodic lines in the folded order 0, N-1, 1, N-2, ... that keeps the
 //      wrap-around couplings inside a band of 3 bs - 1).
 // Per solve, whatever the number of lines: 1 MPI_Allgather + 1 MPI_Allreduce (+ 2 collectives when some line
-// falls back). Results differ from a serial solve by round-off only.
+// falls back). Cost: about 3x a serial block Thomas solve of the same rows (2.7x the flops: the spike
+// columns and the first rows in pass 1, then pass 2), see scripts/bench/src/bench_block_lines.cpp.
+// Results differ from a serial solve by round-off only.
 #pragma once
 
 #include <mpi.h>
@@ -30,22 +35,27 @@ public:
   };
   // comm: the ranks that share the lines, ranked in line order (rank r holds the rows after rank r-1's).
   // Every rank passes the same nlines lines; this rank holds nloc >= 2 consecutive block rows of each,
-  // global rows first .. first + nloc - 1 (first: this rank's offset on the line, same for all lines).
+  // global rows first .. first + nloc - 1 (first: this rank's offset on the line, same for all lines; nloc
+  // may differ between ranks).
   // Line l's rows are stored contiguously: block row i of line l at A + (l * nloc + i) * bs * bs (row-major
   // bs x bs, bs in 1..5), right-hand side at d + (l * nloc + i) * bs. A of a line's global first row and C
   // of its global last row couple the two ends when periodic and are ignored otherwise.
   // count = nloc or nloc + 1: the solution rows returned, x + (l * count + i) * bs; row nloc (count = nloc + 1)
   // is the first row of the next rank (on the last rank: the global first row when periodic; not allowed
-  // when not periodic). x must not overlap d. Collective on comm.
+  // when not periodic). x must not overlap d. Collective on comm. Bad arguments (bs, nloc < 2, count) throw
+  // std::invalid_argument before any communication.
   void solve(MPI_Comm comm, int bs, int nlines, int nloc, const double* A, const double* B, const double* C,
              const double* d, bool periodic, long long first, int count, double* x);
   // Scalar rows shared by nrhs right-hand sides: abc + 3 (l * nloc + i) = (a, b, c) of row i of line l,
   // d + (l * nloc + i) * nrhs; x + (l * count + i) * nrhs. Same contract otherwise.
   void solveScalar(MPI_Comm comm, int nlines, int nloc, const double* abc, int nrhs, const double* d,
                    bool periodic, long long first, int count, double* x);
+  // solves: calls; lines: lines solved; fallbacks: lines re-solved by the exact fallback.
   const Stats& stats() const { return stats_; }
   // Relative residual (max |T x - d| / max |d| over a whole global line) above which a line is re-solved by
-  // the exact fallback.
+  // the exact fallback. It bounds the backward error, not the forward error: for lines that are not
+  // diagonally dominant the accepted solution may be less accurate than the pivoting fallback's by the
+  // growth in block Thomas (measured: up to ~15x on random lines with condition numbers ~1e4).
   double tolerance = 1e-10;
   // Reduced systems (2 P bs unknowns per line, P = communicator size) of at most this many unknowns are
   // solved by dense LU, larger ones by band LU (periodic lines: band LU of the open system plus a rank-2 bs
