@@ -113,15 +113,14 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
 // Marks the shock rows of a line (shock[k] for its nown owned rows; boundary rows are explicit closures, never
 // shock rows here) and returns whether any is a compact shock row, i.e. the line needs the block solve.
 template <int NV>
-bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic,
-                                         char* shock) {
+bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown,
+                                         bool periodic, char* shock) {
   using G = LineGas<NV>;
   if (!scheme_->hybrid) { // CRWENO rows everywhere
     for (int k = 0; k < nown; ++k) shock[k] = !boundaryFace(periodic, xs + k, n);
     return true;
   }
-  const int ncell = nown + 2 * kGhost;
-  rho_.resize(ncell);
+  rho_.resize(ncell); // the line's cells (nown may count the closing boundary face, which reads none)
   p_.resize(ncell);
   for (int m = 0; m < ncell; ++m) {
     rho_[m] = q[m][0];
@@ -248,7 +247,8 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
     flag_.resize(nlines);
     shock_.resize((size_t)nlines * nown);
     for (int l = 0; l < nlines; ++l)
-      flag_[l] = lineNeedsBlocks(q + (size_t)l * ncell, n, xs, nown, periodic, &shock_[(size_t)l * nown]);
+      flag_[l] =
+          lineNeedsBlocks(q + (size_t)l * ncell, ncell, n, xs, nown, periodic, &shock_[(size_t)l * nown]);
     int size = 1;
     MPI_Comm_size(comm, &size);
     if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flag_.data(), nlines, MPI_INT, MPI_LOR, comm);

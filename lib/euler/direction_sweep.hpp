@@ -53,7 +53,8 @@ public:
 private:
   struct LineWork; // per-line scratch (defined in the .cpp)
   void lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, V* h);
-  bool lineNeedsBlocks(const V* q, long long n, long long xs, int nown, bool periodic, char* shock);
+  bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
+                       char* shock);
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                        const char* shocks, bool blocks, double* abc, double* rhs, double* A[2], double* B[2],
                        double* C[2], double* d[2]);

@@ -69,8 +69,10 @@ Reformulation toStandardLcp(const Problem& p) {
   // free variables into a singular block on which Lemke's tableau loses accuracy: ray terminations at cond 1e4).
   Eigen::PartialPivLU<Mat> lu(p.M(F, F));
   if (!(lu.rcond() > 1e-12)) return boxToStandard(p); // singular block: the split still applies
-  const Mat G = lu.solve(p.M(F, B));                  // M_FF^{-1} M_FB
-  const Vec g = lu.solve(p.q(F));                     // M_FF^{-1} q_F
+  // M_FF^{-1} M_FB; no bounded variable (B empty): no columns, and Eigen's triangular solve of a 0-column
+  // right-hand side binds a reference to its null data pointer (undefined behaviour, UBSan), so skip it.
+  const Mat G = B.empty() ? Mat(static_cast<Eigen::Index>(F.size()), 0) : Mat(lu.solve(p.M(F, B)));
+  const Vec g = lu.solve(p.q(F)); // M_FF^{-1} q_F
   Problem red;
   red.kind = Kind::Box;
   red.M = p.M(B, B) - p.M(B, F) * G;
