@@ -121,12 +121,12 @@ PetscErrorCode EulerRunND::writeSpectrum(const std::string& group) {
   std::vector<double> k(E.size());
   double total = 0.0;
   for (size_t i = 0; i < E.size(); ++i) k[i] = (double)i, total += E[i];
-  PetscCall(out_.writeReplicated("/spectrum/k", k.data(), {(unsigned long long)k.size()}, ""));
-  PetscCall(out_.writeReplicated("/spectrum/E", E.data(), {(unsigned long long)E.size()}, ""));
-  PetscCall(out_.writeAttribute("/spectrum", "field", "sqrt(rho) u"));
-  PetscCall(out_.writeAttribute("/spectrum", "sum_E", total));
-  PetscCall(
-      suite::logInfo(ctx_.comm(), ctx_.quiet(), "spectrum: %zu shells, sum E(k) = %.12e", E.size(), total));
+  PetscCall(out_.writeReplicated(group + "/k", k.data(), {(unsigned long long)k.size()}, ""));
+  PetscCall(out_.writeReplicated(group + "/E", E.data(), {(unsigned long long)E.size()}, ""));
+  PetscCall(out_.writeAttribute(group, "field", "sqrt(rho) u"));
+  PetscCall(out_.writeAttribute(group, "sum_E", total));
+  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "spectrum %s: %zu shells, sum E(k) = %.12e",
+                           group.c_str(), E.size(), total));
   PetscFunctionReturn(0);
 }
 

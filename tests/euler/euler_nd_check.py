@@ -146,14 +146,18 @@ def spectrum():
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "tg.h5")
         run(["-dim", 3, "-problem", "taylor_green", "-nx", 16, "-ny", 16, "-nz", 16, "-max_steps", 1, "-dt", 1e-9,
-             "-spectrum", "-output", path, "-quiet"], np_=2)
+             "-spectrum", "-snapshot_every", 1, "-output", path, "-quiet"], np_=2)
         f = fields(path)
         with h5py.File(path, "r") as h:
             E = h["/spectrum/E"][...]
+            snaps = {g: h[f"/snapshots/{g}/spectrum/E"][...] for g in h["/snapshots"]}
         ke = np.mean(0.5 * f["rho"] * (f["u"] ** 2 + f["v"] ** 2 + f["w"] ** 2))
         check(abs(E.sum() - ke) <= 1e-12 * ke, f"sum E(k) = {E.sum():.15e} equals mean kinetic energy {ke:.15e}")
         frac = E[2] / E.sum()
         check(frac >= 1 - 1e-6, f"Taylor-Green at t ~ 0: fraction of energy in shell k = 2 is {frac:.9f}")
+        for g, Es in snaps.items():  # dt = 1e-9: the snapshots hold the initial kinetic energy to 1e-6
+            check(abs(Es.sum() - ke) <= 1e-6 * ke, f"snapshot {g}: spectrum written, sum E(k) = {Es.sum():.12e}")
+        check(len(snaps) == 2, f"spectra of the 2 snapshots (steps 0 and 1): {sorted(snaps)}")
 
 
 def restart():
