@@ -307,6 +307,7 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
                         true, nullptr, nullptr, A, B, C, d);
       }
       bx_.resize((size_t)2 * cn * nface * NV);
+      StageScope stage; // until the end of this batch
       if (!opt_.gather_lines)
         lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
                      nface, bx_.data());
