@@ -110,6 +110,11 @@ PetscErrorCode EulerRunND::readOptions() {
                              opt_.positivity, &opt_.positivity, nullptr));
   PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
                              opt_.shock_threshold, &opt_.shock_threshold, nullptr));
+  PetscCall(
+      PetscOptionsInt("-line_batch_mb",
+                      "Memory (MiB) of one batch of block lines in the compact solves (more batches: more "
+                      "messages, less memory)",
+                      "", opt_.line_batch_mb, &opt_.line_batch_mb, nullptr));
   buf[0] = 0;
   PetscCall(PetscOptionsString("-output", "HDF5 output file (XDMF sidecar beside it)", "", buf, buf,
                                sizeof(buf), &set));
@@ -146,7 +151,9 @@ PetscErrorCode EulerRunND::readOptions() {
   std::snprintf(what, sizeof what, "a %.3g-cell grid", cells);
   // Measured layout: ~7 state vectors (TS stages, local ghosted copy) + line buffers + one direction's scalar
   // batch ~ 100 NV bytes per cell, plus the block-line batch (LineOptions::batch_bytes, 256 MiB).
-  PetscCall(suite::checkMemoryEstimate(comm, 100.0 * nv() * cells / ctx_.size() + 3e8, what));
+  PetscCall(suite::checkMemoryEstimate(
+      comm, 100.0 * nv() * cells / ctx_.size() + 5e7 + 1.2 * (opt_.line_batch_mb << 20), what));
+  PetscCall(suite::checkIntOptionRange(comm, "-line_batch_mb", 1));
   PetscCheck(opt_.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", opt_.cfl);
   PetscCheck(opt_.dt >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -dt %g: must be >= 0", opt_.dt);
   PetscCheck(opt_.t_final > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -t_final %g: must be > 0",
@@ -227,6 +234,7 @@ PetscErrorCode EulerRunND::setup() {
   lo.local_lf = opt_.local_lf;
   lo.shock_threshold = opt_.shock_threshold;
   lo.positivity = opt_.positivity;
+  lo.batch_bytes = (size_t)opt_.line_batch_mb << 20;
   if (opt_.dim == 2)
     sweep4_ = std::make_unique<DirectionSweep<4>>(scheme_, lo);
   else

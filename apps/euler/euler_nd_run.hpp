@@ -25,7 +25,7 @@ namespace euler_app {
 struct OptionsND {
   std::string problem = "isentropic_vortex", scheme = "enopade6", time = "ssprk3", output, axis = "x";
   int dim = 2;
-  PetscInt n[3] = {0, 0, 0}, snapshot_every = 0, max_steps = -1;
+  PetscInt n[3] = {0, 0, 0}, snapshot_every = 0, max_steps = -1, line_batch_mb = 256;
   double t_final = 0.0, cfl = 0.4, dt = 0.0, shock_threshold = 0.02;
   PetscBool error = PETSC_FALSE, characteristic = PETSC_TRUE, local_lf = PETSC_TRUE, positivity = PETSC_TRUE,
             spectrum = PETSC_FALSE;

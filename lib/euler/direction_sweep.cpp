@@ -289,8 +289,13 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
     // Block lines (two NV x NV systems each), in batches of at most opt_.batch_bytes of rows: the same batches
     // on every rank of the line, so the message count is ceil(block rows / budget), independent of how the
     // lines are split over the ranks, and memory stays bounded whatever the number of shocked lines.
-    const size_t line_bytes = sizeof(double) * 2 * (size_t)nown * (3 * NN + NV);
-    const int chunk = (int)std::max<size_t>(1, opt_.batch_bytes / std::max<size_t>(line_bytes, 1));
+    // The batch size must be the same on every rank of the line (it is the line count of a collective), so it
+    // comes from the global line length and the rank count, not from this rank's rows (the last rank of an open
+    // line owns one row more; uneven splits differ too): about batch_bytes per rank.
+    int nranks = 1;
+    MPI_Comm_size(comm, &nranks);
+    const double line_bytes = sizeof(double) * 2.0 * (double)(n + 1) / nranks * (3 * NN + NV);
+    const int chunk = (int)std::max(1.0, std::min(1e9, std::floor((double)opt_.batch_bytes / line_bytes)));
     for (int c0 = 0; c0 < nb; c0 += chunk) {
       const int cn = std::min(chunk, nb - c0);
       bA_.resize((size_t)2 * cn * nown * NN);

@@ -106,11 +106,15 @@ def planar():
 
 def ranks():
     """1 vs 2 vs 4 ranks to 1e-12 relative: 2D Riemann (ENO-Pade, shocks: block line solves), 2D vortex (CRWENO5),
-    3D explosion (ENO-Pade), 3D Taylor-Green (WENO5)."""
+    3D explosion (ENO-Pade; also in 1 MiB block-line batches), 3D Taylor-Green (WENO5)."""
     cases = [["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25],
              ["-dim", 2, "-problem", "isentropic_vortex", "-scheme", "crweno5", "-nx", 40, "-ny", 40, "-max_steps",
               15],
              ["-dim", 3, "-problem", "explosion", "-nx", 24, "-ny", 24, "-nz", 24, "-max_steps", 8],
+             # many small block-line batches: the batch size must agree on all ranks of a line (it did not:
+             # heap corruption at 2 ranks once a rank had more block lines than one 256 MiB batch)
+             ["-dim", 3, "-problem", "explosion", "-nx", 24, "-ny", 24, "-nz", 24, "-max_steps", 8,
+              "-line_batch_mb", 1],
              ["-dim", 3, "-problem", "taylor_green", "-scheme", "weno5", "-nx", 16, "-ny", 16, "-nz", 16,
               "-max_steps", 8]]
     with tempfile.TemporaryDirectory() as d:
