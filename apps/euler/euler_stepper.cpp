@@ -76,7 +76,8 @@ PetscErrorCode createStepper(MPI_Comm comm, DM da, const StepperSettings& s, TSR
   PetscCall(TSGetAdapt(*ts, &adapt));
   PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));
   PetscCall(TSSetMaxTime(*ts, s.t_final));
-  PetscCall(TSSetMaxSteps(*ts, s.max_steps > 0 ? s.max_steps : PETSC_MAX_INT));
+  PetscCall(
+      TSSetMaxSteps(*ts, s.max_steps >= 0 ? s.max_steps : PETSC_MAX_INT)); // 0: no step (initial output)
   PetscCall(TSSetExactFinalTime(*ts, TS_EXACTFINALTIME_MATCHSTEP));
   PetscCall(TSSetTimeStep(*ts, s.dt));
   PetscCall(TSSetPreStep(*ts, pre));

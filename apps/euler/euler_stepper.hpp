@@ -10,10 +10,10 @@
 namespace euler_app {
 
 struct StepperSettings {
-  std::string time;     // ssprk3, rk4, beuler, cn, bdf2
-  double t_final = 0.0; // TSSetMaxTime
-  PetscInt max_steps = -1;
-  double dt = 0.0; // first time step
+  std::string time;        // ssprk3, rk4, beuler, cn, bdf2
+  double t_final = 0.0;    // TSSetMaxTime
+  PetscInt max_steps = -1; // -1: no limit, 0: no step
+  double dt = 0.0;         // first time step
 };
 
 bool isImplicit(const std::string& time);
