@@ -47,35 +47,24 @@ PetscErrorCode EulerRun::checkpointIo(bool write, const std::string& path, Petsc
   PetscFunctionReturn(0);
 }
 
+CheckpointIo EulerRun::checkpointFile() {
+  return [this](bool write, const std::string& path, PetscInt* step, double* time) {
+    return checkpointIo(write, path, step, time);
+  };
+}
+
 PetscErrorCode EulerRun::restartIfRequested() {
   PetscFunctionBeginUser;
-  if (!ckpt_.restartRequested()) PetscFunctionReturn(0);
-  std::string path;
-  PetscCall(ckpt_.restartPath(&path));
-  PetscInt step = 0;
-  double time = 0.0;
-  PetscCall(checkpointIo(false, path, &step, &time));
-  steps_ = step;
-  time_ = time;
-  PetscCall(TSSetStepNumber(ts_, step));
-  PetscCall(TSSetTime(ts_, time));
-  PetscCall(suite::logInfo(
-      ctx_.comm(), ctx_.quiet(), "euler: restarted from %s at step %" PetscInt_FMT ", t = %.17g%s",
-      path.c_str(), step, time, opt_.time == "bdf2" ? " (BDF2 restarts with a BDF1 step: not bitwise)" : ""));
+  PetscCall(
+      restartFromCheckpoint(ctx_, ckpt_, ts_, checkpointFile(), &steps_, &time_,
+                            opt_.time == "bdf2" ? " (BDF2 restarts with a BDF1 step: not bitwise)" : ""));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode EulerRun::checkpointNow() {
   PetscFunctionBeginUser;
-  const std::string path = ckpt_.pathForStep(steps_);
-  PetscInt step = steps_;
-  double time = time_;
-  PetscCall(checkpointIo(true, path, &step, &time));
-  PetscCall(ckpt_.written(steps_));
+  PetscCall(writeStepCheckpoint(ctx_, ckpt_, steps_, time_, checkpointFile()));
   last_checkpoint_step_ = steps_;
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                           "euler: checkpoint %s (step %" PetscInt_FMT ", t = %.6g)", path.c_str(), steps_,
-                           time_));
   PetscFunctionReturn(0);
 }
 

@@ -51,35 +51,22 @@ PetscErrorCode EulerRunND::checkpointIo(bool write, const std::string& path, Pet
   PetscFunctionReturn(0);
 }
 
+CheckpointIo EulerRunND::checkpointFile() {
+  return [this](bool write, const std::string& path, PetscInt* step, double* time) {
+    return checkpointIo(write, path, step, time);
+  };
+}
+
 PetscErrorCode EulerRunND::restartIfRequested() {
   PetscFunctionBeginUser;
-  if (!ckpt_.restartRequested()) PetscFunctionReturn(0);
-  std::string path;
-  PetscCall(ckpt_.restartPath(&path));
-  PetscInt step = 0;
-  double time = 0.0;
-  PetscCall(checkpointIo(false, path, &step, &time));
-  steps_ = step;
-  time_ = time;
-  PetscCall(TSSetStepNumber(ts_, step));
-  PetscCall(TSSetTime(ts_, time));
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                           "euler: restarted from %s at step %" PetscInt_FMT ", t = %.17g", path.c_str(),
-                           step, time));
+  PetscCall(restartFromCheckpoint(ctx_, ckpt_, ts_, checkpointFile(), &steps_, &time_, ""));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode EulerRunND::checkpointNow() {
   PetscFunctionBeginUser;
-  const std::string path = ckpt_.pathForStep(steps_);
-  PetscInt step = steps_;
-  double time = time_;
-  PetscCall(checkpointIo(true, path, &step, &time));
-  PetscCall(ckpt_.written(steps_));
+  PetscCall(writeStepCheckpoint(ctx_, ckpt_, steps_, time_, checkpointFile()));
   last_checkpoint_step_ = steps_;
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                           "euler: checkpoint %s (step %" PetscInt_FMT ", t = %.6g)", path.c_str(), steps_,
-                           time_));
   PetscFunctionReturn(0);
 }
 

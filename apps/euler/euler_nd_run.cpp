@@ -506,7 +506,7 @@ PetscErrorCode EulerRunND::checkState(Vec U, PetscInt step, double time) const {
 }
 
 PetscErrorCode EulerRunND::postStep() {
-  PetscReal t, dt;
+  PetscReal t;
   Vec U;
   PetscFunctionBeginUser;
   PetscCall(TSGetTime(ts_, &t));
@@ -516,17 +516,7 @@ PetscErrorCode EulerRunND::postStep() {
   PetscCall(checkState(U, steps_, t));
   if (opt_.snapshot_every > 0 && steps_ % opt_.snapshot_every == 0 && !opt_.output.empty())
     PetscCall(writeSnapshot(steps_, t));
-  PetscCall(TSGetTimeStep(ts_, &dt));
-  if (progress_) PetscCall(progress_->update(steps_, t, dt));
-  bool stop = false, due = false;
-  PetscCall(ctx_.stopRequested(&stop));
-  PetscCall(ckpt_.due(steps_, &due));
-  if ((due || stop) && ckpt_.enabled()) PetscCall(checkpointNow());
-  if (stop) {
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: stopping at step %" PetscInt_FMT " (%s)",
-                             steps_, ctx_.stopReason().c_str()));
-    PetscCall(TSSetConvergedReason(ts_, TS_CONVERGED_USER));
-  }
+  PetscCall(endOfStep(ctx_, ts_, ckpt_, progress_.get(), steps_, t, [this] { return checkpointNow(); }));
   PetscFunctionReturn(0);
 }
 

@@ -70,6 +70,7 @@ private:
   // checkpoint/restart (euler_nd_checkpoint.cpp)
   std::string checkpointTag() const;
   PetscErrorCode checkpointIo(bool write, const std::string& path, PetscInt* step, double* time);
+  CheckpointIo checkpointFile(); // checkpointIo as a function object
   PetscErrorCode restartIfRequested();
   PetscErrorCode checkpointNow();
 

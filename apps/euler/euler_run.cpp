@@ -368,18 +368,7 @@ PetscErrorCode EulerRun::postStep() {
     PetscCall(VecRestoreArrayRead(U, &a));
     spacetime_t_.push_back(t);
   }
-  PetscReal dt;
-  PetscCall(TSGetTimeStep(ts_, &dt));
-  if (progress_) PetscCall(progress_->update(steps_, t, dt));
-  bool stop = false, due = false;
-  PetscCall(ctx_.stopRequested(&stop));
-  PetscCall(ckpt_.due(steps_, &due));
-  if ((due || stop) && ckpt_.enabled()) PetscCall(checkpointNow());
-  if (stop) {
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: stopping at step %" PetscInt_FMT " (%s)",
-                             steps_, ctx_.stopReason().c_str()));
-    PetscCall(TSSetConvergedReason(ts_, TS_CONVERGED_USER));
-  }
+  PetscCall(endOfStep(ctx_, ts_, ckpt_, progress_.get(), steps_, t, [this] { return checkpointNow(); }));
   PetscFunctionReturn(0);
 }
 

@@ -65,6 +65,7 @@ private:
   // Checkpoint/restart (euler_checkpoint.cpp)
   std::string checkpointTag() const;
   PetscErrorCode checkpointIo(bool write, const std::string& path, PetscInt* step, double* time);
+  CheckpointIo checkpointFile(); // checkpointIo as a function object
   PetscErrorCode restartIfRequested();
   PetscErrorCode checkpointNow();
 

@@ -1,6 +1,8 @@
 // Time stepper and helpers shared by the 1D and 2D/3D Euler runs (see euler_stepper.hpp).
 #include "euler_stepper.hpp"
 
+#include "core/log.hpp"
+
 #include <ctime>
 
 namespace euler_app {
@@ -87,6 +89,53 @@ PetscErrorCode createStepper(MPI_Comm comm, DM da, const StepperSettings& s, TSR
     SNES snes;
     PetscCall(TSGetSNES(*ts, &snes));
     PetscCall(SNESSetFromOptions(snes));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeStepCheckpoint(const suite::RunContext& ctx, suite::CheckpointPolicy& ckpt, PetscInt step,
+                                   double time, const CheckpointIo& io) {
+  PetscFunctionBeginUser;
+  const std::string path = ckpt.pathForStep(step);
+  PetscInt s = step;
+  double t = time;
+  PetscCall(io(true, path, &s, &t));
+  PetscCall(ckpt.written(step));
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "euler: checkpoint %s (step %" PetscInt_FMT ", t = %.6g)",
+                           path.c_str(), step, time));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode restartFromCheckpoint(const suite::RunContext& ctx, suite::CheckpointPolicy& ckpt, TS ts,
+                                     const CheckpointIo& io, PetscInt* step, double* time, const char* note) {
+  PetscFunctionBeginUser;
+  if (!ckpt.restartRequested()) PetscFunctionReturn(0);
+  std::string path;
+  PetscCall(ckpt.restartPath(&path));
+  PetscCall(io(false, path, step, time));
+  PetscCall(TSSetStepNumber(ts, *step));
+  PetscCall(TSSetTime(ts, *time));
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
+                           "euler: restarted from %s at step %" PetscInt_FMT ", t = %.17g%s", path.c_str(),
+                           *step, *time, note));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode endOfStep(const suite::RunContext& ctx, TS ts, suite::CheckpointPolicy& ckpt,
+                         suite::Progress* progress, PetscInt step, double t,
+                         const std::function<PetscErrorCode()>& checkpoint) {
+  PetscReal dt;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetTimeStep(ts, &dt));
+  if (progress) PetscCall(progress->update(step, t, dt));
+  bool stop = false, due = false;
+  PetscCall(ctx.stopRequested(&stop));
+  PetscCall(ckpt.due(step, &due));
+  if ((due || stop) && ckpt.enabled()) PetscCall(checkpoint());
+  if (stop) {
+    PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "euler: stopping at step %" PetscInt_FMT " (%s)", step,
+                             ctx.stopReason().c_str()));
+    PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
   }
   PetscFunctionReturn(0);
 }

@@ -1,10 +1,16 @@
 // What the 1D and the 2D/3D Euler runs share: the PETSc TS they step with (SSP-RK3 registered as "ssprk3", RK4,
 // or implicit beuler/cn/bdf2 through Jacobian-free Newton-Krylov with step retries), the TS callbacks that
-// forward to a run object, the process CPU clock, and the XDMF sidecar's file names.
+// forward to a run object, the end-of-step bookkeeping (progress, checkpoints, clean stops), restart, the
+// process CPU clock, and the XDMF sidecar's file names.
 #pragma once
+
+#include "core/progress.hpp"
+#include "core/run_context.hpp"
+#include "io/checkpoint_policy.hpp"
 
 #include <petscts.h>
 
+#include <functional>
 #include <string>
 
 namespace euler_app {
@@ -42,6 +48,23 @@ template <class Run> PetscErrorCode postStepCallback(TS ts) {
   PetscCall(static_cast<Run*>(ctx)->postStep());
   PetscFunctionReturn(0);
 }
+
+// Reads (write = false) or writes the run's checkpoint at path; on a read, *step and *time come from the file.
+using CheckpointIo =
+    std::function<PetscErrorCode(bool write, const std::string& path, PetscInt* step, double* time)>;
+
+// Writes the checkpoint of (step, time) at the policy's path for that step and records it.
+PetscErrorCode writeStepCheckpoint(const suite::RunContext& ctx, suite::CheckpointPolicy& ckpt, PetscInt step,
+                                   double time, const CheckpointIo& io);
+// With -restart: reads that checkpoint into the run and moves ts to its step and time (*step, *time); no-op
+// otherwise. note: appended to the log line (e.g. why the restart is not bitwise).
+PetscErrorCode restartFromCheckpoint(const suite::RunContext& ctx, suite::CheckpointPolicy& ckpt, TS ts,
+                                     const CheckpointIo& io, PetscInt* step, double* time, const char* note);
+// The end of a step: progress line, checkpoint (checkpoint()) when due or when stopping, and a clean stop of
+// ts on a signal or -max_walltime.
+PetscErrorCode endOfStep(const suite::RunContext& ctx, TS ts, suite::CheckpointPolicy& ckpt,
+                         suite::Progress* progress, PetscInt step, double t,
+                         const std::function<PetscErrorCode()>& checkpoint);
 
 double cpuSeconds(); // this process's CPU time: the clock to trust on a loaded machine
 
