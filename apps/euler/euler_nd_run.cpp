@@ -368,7 +368,7 @@ template <int NV> PetscErrorCode EulerRunND::rhsImpl(double t, const double* ul,
   using V = std::array<double, NV>;
   static_assert(NV == 4 || NV == 5);
   PetscFunctionBeginUser;
-  const int dim = opt_.dim, g = kLineGhost;
+  const int dim = opt_.dim;
   DirectionSweep<NV>& sweep = *[this]() {
     if constexpr (NV == 4)
       return sweep4_.get();
@@ -378,8 +378,6 @@ template <int NV> PetscErrorCode EulerRunND::rhsImpl(double t, const double* ul,
   // Max |u_d| + c over the cells this rank owns, per direction (one Allreduce).
   double amax[3] = {0, 0, 0};
   {
-    const PetscInt idx0[3] = {s_[0], s_[1], s_[2]};
-    (void)idx0;
     for (PetscInt k = s_[2]; k < s_[2] + m_[2]; ++k)
       for (PetscInt j = s_[1]; j < s_[1] + m_[1]; ++j)
         for (PetscInt i = s_[0]; i < s_[0] + m_[0]; ++i) {
@@ -423,7 +421,6 @@ template <int NV> PetscErrorCode EulerRunND::rhsImpl(double t, const double* ul,
           for (int c = 0; c < NV; ++c) fc[comp[c]] -= (hl[i + 1][c] - hl[i][c]) * inv;
         }
       }
-    (void)g;
     PetscCall(PetscLogStagePop());
   }
   const double* grav = problem_.gravity;

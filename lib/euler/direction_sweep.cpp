@@ -36,20 +36,17 @@ template <int NV> void DirectionSweep<NV>::prepareLine(const V* q, int xm, doubl
   using G = LineGas<NV>;
   const double g = opt_.gamma;
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  const bool local = opt_.local_lf && !scheme_->compact; // compact rows need one alpha along the line
   f_.resize(ncell);
   speed_.resize(ncell);
-  rho_.resize(ncell);
-  p_.resize(ncell);
   for (int m = 0; m < ncell; ++m) {
     f_[m] = G::flux(q[m], g);
-    speed_[m] = G::maxSpeed(q[m], g);
-    rho_[m] = q[m][0];
-    p_[m] = G::pressure(q[m], g);
+    if (local) speed_[m] = G::maxSpeed(q[m], g);
   }
   alpha_.resize(nface);
   for (int k = 0; k < nface; ++k) {
     double a = alpha_global;
-    if (opt_.local_lf && !scheme_->compact) {
+    if (local) {
       a = 0.0;
       for (int m = 0; m < 6; ++m) a = std::max(a, speed_[k + m]);
       a *= 1.0 + 1e-12;
