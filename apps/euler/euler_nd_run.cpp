@@ -115,6 +115,15 @@ PetscErrorCode EulerRunND::readOptions() {
                       "Memory (MiB) of one batch of block lines in the compact solves (more batches: more "
                       "messages, less memory)",
                       "", opt_.line_batch_mb, &opt_.line_batch_mb, nullptr));
+  const char* const line_solves[] = {"transpose", "substructured"};
+  PetscInt line_solve = opt_.transpose_lines ? 0 : 1;
+  PetscCall(
+      PetscOptionsEList("-line_solve",
+                        "Compact solves of lines split over ranks: transpose (whole lines moved to one rank "
+                        "each, two all-to-all exchanges) or substructured (solved in place, partition "
+                        "method); lines fewer than ranks are always substructured",
+                        "", line_solves, 2, line_solves[line_solve], &line_solve, nullptr));
+  opt_.transpose_lines = line_solve == 0;
   buf[0] = 0;
   PetscCall(PetscOptionsString("-output", "HDF5 output file (XDMF sidecar beside it)", "", buf, buf,
                                sizeof(buf), &set));
@@ -235,6 +244,7 @@ PetscErrorCode EulerRunND::setup() {
   lo.shock_threshold = opt_.shock_threshold;
   lo.positivity = opt_.positivity;
   lo.batch_bytes = (size_t)opt_.line_batch_mb << 20;
+  lo.transpose_lines = opt_.transpose_lines;
   if (opt_.dim == 2)
     sweep4_ = std::make_unique<DirectionSweep<4>>(scheme_, lo);
   else
@@ -563,16 +573,19 @@ PetscErrorCode EulerRunND::solve() {
   }
   const double cells = (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * steps_;
   const LineStats& st = opt_.dim == 2 ? sweep4_->stats() : sweep5_->stats();
+  // Shock rows, limited faces and fallbacks summed over the ranks; the solve calls and lines are rank 0's.
+  long long sums[3] = {st.shock_rows, st.limited_faces,
+                       opt_.dim == 2 ? sweep4_->lineFallbacks() : sweep5_->lineFallbacks()};
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
   const long long solves = opt_.dim == 2 ? sweep4_->lineSolves() : sweep5_->lineSolves();
   const long long lines = opt_.dim == 2 ? sweep4_->linesSolved() : sweep5_->linesSolved();
-  const long long fallbacks = opt_.dim == 2 ? sweep4_->lineFallbacks() : sweep5_->lineFallbacks();
   PetscCall(suite::logInfo(
       ctx_.comm(), ctx_.quiet(),
       "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank; "
-      "rank 0 CPU %.3f s); shock rows %lld, limited faces %lld, batched line solves %lld of "
-      "%lld lines (exact fallbacks %lld)",
-      steps_, t, wall_solve_, cells / wall_solve_, cells / wall_solve_ / ctx_.size(), cpu_solve_,
-      st.shock_rows, st.limited_faces, solves, lines, fallbacks));
+      "rank 0 CPU %.3f s); shock rows %lld, limited faces %lld; rank 0: %lld batched line solves of %lld "
+      "lines; exact fallbacks %lld",
+      steps_, t, wall_solve_, cells / wall_solve_, cells / wall_solve_ / ctx_.size(), cpu_solve_, sums[0],
+      sums[1], solves, lines, sums[2]));
   if (opt_.error) PetscCall(computeErrors());
   PetscFunctionReturn(0);
 }

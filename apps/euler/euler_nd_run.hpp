@@ -1,6 +1,6 @@
 // The 2D/3D Euler run (-dim 2|3): a PETSc DMDA with a star stencil of width 3 and NV = dim + 2 unknowns per
-// cell, the 1D schemes applied direction by direction (DirectionSweep: every line of a direction in one
-// batched exchange, line communicators split from the DMDA's process grid), boundary ghosts from the problem,
+// cell, the 1D schemes applied direction by direction (DirectionSweep: lines split over ranks transposed whole
+// to one rank each, or solved in place by substructuring; line communicators split from the DMDA's process grid), boundary ghosts from the problem,
 // gravity source, PETSc TS, CFL dt = cfl / sum_d(max(|u_d| + c) / dx_d), collective state checks, HDF5 + XDMF
 // output, energy spectra (FFTW-MPI), checkpoint/restart at any rank count.
 #pragma once
@@ -30,6 +30,7 @@ struct OptionsND {
   PetscBool error = PETSC_FALSE, characteristic = PETSC_TRUE, local_lf = PETSC_TRUE, positivity = PETSC_TRUE,
             spectrum = PETSC_FALSE;
   bool implicit = false;
+  bool transpose_lines = true; // -line_solve transpose (false: substructured)
 };
 
 class EulerRunND {

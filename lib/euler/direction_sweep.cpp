@@ -7,6 +7,7 @@
 #include <petsclog.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
@@ -232,9 +233,38 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
 template <int NV>
 void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm,
                                     bool periodic, double alpha, double lambda, V* h) {
+  ++stats_.evaluations;
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  // nlines is the same on every rank of comm, so all take the same branch.
+  if (!scheme_->compact || opt_.gather_lines || !opt_.transpose_lines || size == 1 || nlines < size) {
+    linesFaceFluxes(comm, q, nlines, n, xs, xm, periodic, alpha, lambda, h);
+    return;
+  }
+  LineTranspose* tr = nullptr;
+  for (LineTranspose& t : transposes_)
+    if (t.matches(comm, n, xs, xm)) tr = &t;
+  if (!tr) tr = &transposes_.emplace_back(comm, n, xs, xm, kGhost);
+  // Batches of whole lines of about batch_bytes of state per rank (the same count on every rank).
+  const double line_bytes = sizeof(V) * (double)(n + 2 * kGhost + 1) / size;
+  const double limit = (double)INT_MAX / ((double)(n + 2 * kGhost + 1) * NV);
+  const int chunk = (int)std::max(1.0, std::min(limit, std::floor((double)opt_.batch_bytes / line_bytes)));
+  const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  for (int l0 = 0; l0 < nlines; l0 += chunk) {
+    const int cn = std::min(chunk, nlines - l0), own = tr->owned(cn);
+    tr->gather(&q[(size_t)l0 * ncell][0], NV, cn, &tq_);
+    th_.resize((size_t)own * (n + 1));
+    linesFaceFluxes(MPI_COMM_SELF, reinterpret_cast<const V*>(tq_.data()), own, n, 0, (int)n, periodic, alpha,
+                    lambda, th_.data());
+    tr->scatter(&th_.data()[0][0], NV, cn, &h[(size_t)l0 * nface][0]);
+  }
+}
+
+template <int NV>
+void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs,
+                                         int xm, bool periodic, double alpha, double lambda, V* h) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
-  ++stats_.evaluations;
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
   if (!scheme_->compact) {
     for (int l = 0; l < nlines; ++l)

@@ -4,9 +4,12 @@
 // eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry, the Hu-Adams-Shu
 // positivity limiter, and for compact schemes one batched, exact, distributed solve of every line of the
 // direction (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve
-// with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). The decision is
-// reduced over the ranks that share a line, so per call the messages are O(1) in the number of lines: one
-// Allreduce of the line flags, and for each batch one Allgather and one Allreduce.
+// with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). Lines split over
+// several ranks are by default moved whole to one rank each (pencil transpose, LineTranspose: per batch of lines
+// two MPI_Alltoallv) and processed there serially, bitwise as on one rank; with LineOptions::transpose_lines
+// false (or fewer lines than ranks, as in 1D) the split lines are solved in place by substructuring: the
+// block/scalar decision is reduced over the ranks that share a line (one Allreduce of the line flags), then per
+// batch one Allgather and one Allreduce. Either way the messages per call are O(1) in the number of lines.
 // References: Shu, ICASE report 97-65 (1997), sec. 2.3 (flux splitting, characteristic decomposition,
 // dimension-by-dimension finite differences); Ghosh & Baeder, SIAM J. Sci. Comput. 34 (2012) A1678, sec. 2.3
 // (characteristic compact rows as a block-tridiagonal system: row j+1/2 of field k is multiplied by the left
@@ -16,6 +19,7 @@
 
 #include "euler/gas_nd.hpp"
 #include "euler/line_options.hpp"
+#include "euler/line_transpose.hpp"
 #include "euler/schemes.hpp"
 #include "linalg/substructured_block_lines.hpp"
 #include "linalg/tridiag_distributed.hpp"
@@ -38,7 +42,8 @@ public:
   // line_comm: the ranks sharing these lines, in line order (every rank passes the same nlines).
   // alpha: the Lax-Friedrichs speed for compact schemes and -local_lf false (max |u_n| + c of the direction).
   // lambda = dt/dx scaled for the positivity limiter (<= 0: off). Output h: nlines x (xm + 1) face fluxes,
-  // h[l (xm+1) + k] at x_{xs+k-1/2}. Collective on line_comm for compact schemes.
+  // h[l (xm+1) + k] at x_{xs+k-1/2}. Collective on line_comm for compact schemes. Throws std::runtime_error (the
+  // same on every rank of line_comm) if a line system is singular.
   void faceFluxes(MPI_Comm line_comm, const V* q, int nlines, long long n, long long xs, int xm,
                   bool periodic, double alpha, double lambda, V* h);
 
@@ -51,7 +56,9 @@ public:
   }
 
 private:
-  struct LineWork; // per-line scratch (defined in the .cpp)
+  // faceFluxes of lines held as segments on the ranks of comm (or whole, comm = MPI_COMM_SELF).
+  void linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm,
+                       bool periodic, double alpha, double lambda, V* h);
   void lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, V* h);
   bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
                        char* shock);
@@ -70,6 +77,9 @@ private:
   std::vector<int> flag_, blocks_;
   std::vector<char> shock_; // per line and owned row: ENO-Pade shock row
   std::vector<double> sabc_, srhs_, sx_, bA_, bB_, bC_, bd_, bx_;
+  std::vector<LineTranspose> transposes_; // one per line communicator (grid direction) used with transposes
+  std::vector<double> tq_;                // whole lines received by this rank (LineTranspose::gather)
+  std::vector<V> th_;                     // their face fluxes
 };
 
 extern template class DirectionSweep<3>;

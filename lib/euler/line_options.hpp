@@ -19,6 +19,10 @@ struct LineOptions {
   double shock_threshold = 0.02;
   bool positivity = true;
   bool gather_lines = false; // true: gather each line to every rank (DistributedTridiag), for comparison
+  // Compact schemes, lines split over the ranks of a line communicator with at least as many lines as ranks:
+  // true: pencil transpose (LineTranspose), each rank solves whole lines serially; false: substructured solve
+  // of the split lines (SubstructuredBlockLines).
+  bool transpose_lines = true;
   size_t batch_bytes = size_t(256) << 20; // memory of one batch of block lines (DirectionSweep)
 };
 

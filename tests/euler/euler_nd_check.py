@@ -106,8 +106,15 @@ def planar():
 
 def ranks():
     """1 vs 2 vs 4 ranks to 1e-12 relative: 2D Riemann (ENO-Pade, shocks: block line solves), 2D vortex (CRWENO5),
-    3D explosion (ENO-Pade; also in 1 MiB block-line batches), 3D Taylor-Green (WENO5)."""
+    3D explosion (ENO-Pade; also in 1 MiB block-line batches), 3D Taylor-Green (WENO5). Lines split over ranks are
+    transposed (default -line_solve transpose: bitwise the 1-rank result, also for 2048-cell lines moved in
+    1 MiB batches of 31 lines at 2 ranks) or solved in place (-line_solve substructured: round-off)."""
     cases = [["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25],
+             ["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25, "-line_solve",
+              "substructured"],
+             ["-dim", 2, "-problem", "lax_liu_4", "-nx", 2048, "-ny", 32, "-max_steps", 3, "-line_batch_mb", 1],
+             ["-dim", 3, "-problem", "explosion", "-nx", 24, "-ny", 24, "-nz", 24, "-max_steps", 8, "-line_solve",
+              "substructured"],
              ["-dim", 2, "-problem", "isentropic_vortex", "-scheme", "crweno5", "-nx", 40, "-ny", 40, "-max_steps",
               15],
              ["-dim", 3, "-problem", "explosion", "-nx", 24, "-ny", 24, "-nz", 24, "-max_steps", 8],
@@ -126,7 +133,7 @@ def ranks():
                 res[np_] = fields(path)
             for np_ in (2, 4):
                 v = max_rel_diff(res[1], res[np_])
-                check(v <= 1e-12, f"{' '.join(map(str, c[:4]))}: 1 vs {np_} ranks max relative difference {v:.3e}")
+                check(v <= 1e-12, f"{' '.join(map(str, c))}: 1 vs {np_} ranks max relative difference {v:.3e}")
 
 
 def conservation():
