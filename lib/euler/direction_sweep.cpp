@@ -28,6 +28,27 @@ struct StageScope {
   }
 };
 
+// -log_view events of the pencil transposes (LineTranspose::gather, LineTranspose::scatter).
+PetscLogEvent transposeEvent(int which) {
+  static PetscLogEvent ev[2] = {-1, -1};
+  if (ev[which] < 0) {
+    PetscClassId cls = 0;
+    if (PetscClassIdRegister("Euler lines", &cls) ||
+        PetscLogEventRegister(which ? "LineTransposeScat" : "LineTransposeGath", cls, &ev[which]))
+      ev[which] = -1;
+  }
+  return ev[which];
+}
+struct EventScope {
+  PetscLogEvent ev;
+  explicit EventScope(PetscLogEvent e) : ev(e) {
+    if (ev >= 0) (void)PetscLogEventBegin(ev, 0, 0, 0, 0);
+  }
+  ~EventScope() {
+    if (ev >= 0) (void)PetscLogEventEnd(ev, 0, 0, 0, 0);
+  }
+};
+
 inline bool boundaryFace(bool periodic, long long iface, long long n) {
   return !periodic && (iface == 0 || iface == n);
 }
@@ -252,10 +273,14 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
   for (int l0 = 0; l0 < nlines; l0 += chunk) {
     const int cn = std::min(chunk, nlines - l0), own = tr->owned(cn);
-    tr->gather(&q[(size_t)l0 * ncell][0], NV, cn, &tq_);
+    {
+      EventScope ev(transposeEvent(0));
+      tr->gather(&q[(size_t)l0 * ncell][0], NV, cn, &tq_);
+    }
     th_.resize((size_t)own * (n + 1));
     linesFaceFluxes(MPI_COMM_SELF, reinterpret_cast<const V*>(tq_.data()), own, n, 0, (int)n, periodic, alpha,
                     lambda, th_.data());
+    EventScope ev(transposeEvent(1));
     tr->scatter(&th_.data()[0][0], NV, cn, &h[(size_t)l0 * nface][0]);
   }
 }

@@ -32,7 +32,7 @@ LineTranspose::LineTranspose(MPI_Comm comm, long long n, long long xs, int xm, i
 
 // to_owner: every rank's segments of each line go to the line's owner (gather); else the owner's face values
 // of each segment go back to the segment's rank (scatter). Fills the counts and displacements (in doubles) and
-// runs the MPI_Alltoallv; send_ is packed and recv_ unpacked by the callers.
+// runs the MPI_Alltoallv; send_ is packed and recv_ unpacked by the callers. Nothing is sent to this rank itself.
 void LineTranspose::exchange(int width, int count, bool to_owner) {
   if ((long long)count * (n_ + 2 * ghost_ + 1) * width > INT_MAX)
     throw std::invalid_argument("LineTranspose: batch of " + std::to_string(count) +
@@ -45,6 +45,7 @@ void LineTranspose::exchange(int width, int count, bool to_owner) {
         return xm_[r] + (r == 0 ? g : 0) + (r == size_ - 1 ? g : 0);
       };
   for (int r = 0; r < size_; ++r) {
+    if (r == rank_) continue; // this rank's own share is copied directly, not sent to itself
     if (to_owner) {
       scount_[r] = linesOf(r, count) * segment(rank_);
       rcount_[r] = owned(count) * segment(r);
@@ -67,24 +68,29 @@ void LineTranspose::exchange(int width, int count, bool to_owner) {
 }
 
 void LineTranspose::gather(const double* q, int width, int count, std::vector<double>* full) {
-  const int g = ghost_, P = size_;
+  const int g = ghost_, P = size_, own = owned(count);
   const int lo = rank_ == 0 ? 0 : g, hi = xm_[rank_] + g + (rank_ == P - 1 ? g : 0);
   const size_t stored = (size_t)(xm_[rank_] + 2 * g) * width, seg = (size_t)(hi - lo) * width;
-  send_.resize((size_t)count * seg);
+  send_.resize((size_t)(count - own) * seg);
   double* s = send_.data();
   for (int r = 0; r < P; ++r) // destination r: lines r, r + P, ...
-    for (int j = r; j < count; j += P, s += seg) std::copy_n(q + j * stored + (size_t)lo * width, seg, s);
+    if (r != rank_)
+      for (int j = r; j < count; j += P, s += seg) std::copy_n(q + j * stored + (size_t)lo * width, seg, s);
   exchange(width, count, true);
-  const int own = owned(count);
   const size_t line = (size_t)(n_ + 2 * g) * width;
   full->resize((size_t)own * line);
   for (int r = 0; r < P; ++r) {
     const int rlo = r == 0 ? 0 : g, rhi = xm_[r] + g + (r == P - 1 ? g : 0);
     const size_t rseg = (size_t)(rhi - rlo) * width;
-    const double* src = recv_.data() + rdispl_[r];
     // cell m of rank r's stored line is cell xs_r + m of the full stored line (both start with `ghost` cells)
-    for (int k = 0; k < own; ++k, src += rseg)
-      std::copy_n(src, rseg, full->data() + k * line + (size_t)(xs_[r] + rlo) * width);
+    double* dst = full->data() + (size_t)(xs_[r] + rlo) * width;
+    if (r == rank_) { // this rank's segments of its own lines
+      for (int k = 0; k < own; ++k)
+        std::copy_n(q + (size_t)(rank_ + k * P) * stored + (size_t)rlo * width, rseg, dst + k * line);
+      continue;
+    }
+    const double* src = recv_.data() + rdispl_[r];
+    for (int k = 0; k < own; ++k, src += rseg) std::copy_n(src, rseg, dst + k * line);
   }
 }
 
@@ -92,17 +98,22 @@ void LineTranspose::scatter(const double* hfull, int width, int count, double* h
   const int P = size_, own = owned(count);
   const size_t line = (size_t)(n_ + 1) * width;
   size_t total = 0;
-  for (int r = 0; r < P; ++r) total += (size_t)own * (xm_[r] + 1) * width;
+  for (int r = 0; r < P; ++r)
+    if (r != rank_) total += (size_t)own * (xm_[r] + 1) * width;
   send_.resize(total);
   double* s = send_.data();
   for (int r = 0; r < P; ++r) {
+    if (r == rank_) continue;
     const size_t faces = (size_t)(xm_[r] + 1) * width;
     for (int k = 0; k < own; ++k, s += faces)
       std::copy_n(hfull + k * line + (size_t)xs_[r] * width, faces, s);
   }
   exchange(width, count, false);
   const size_t faces = (size_t)(xm_[rank_] + 1) * width;
+  for (int k = 0; k < own; ++k) // the faces of this rank's own lines
+    std::copy_n(hfull + k * line + (size_t)xs_[rank_] * width, faces, h + (size_t)(rank_ + k * P) * faces);
   for (int r = 0; r < P; ++r) {
+    if (r == rank_) continue;
     const double* src = recv_.data() + rdispl_[r];
     for (int j = r; j < count; j += P, src += faces) std::copy_n(src, faces, h + j * faces);
   }
