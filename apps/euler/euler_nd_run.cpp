@@ -159,9 +159,10 @@ PetscErrorCode EulerRunND::readOptions() {
   char what[96];
   std::snprintf(what, sizeof what, "a %.3g-cell grid", cells);
   // Measured layout: ~7 state vectors (TS stages, local ghosted copy) + line buffers + one direction's scalar
-  // batch ~ 100 NV bytes per cell, plus the block-line batch (LineOptions::batch_bytes, 256 MiB).
+  // batch and transposed lines ~ 130 NV bytes per cell, plus the block-line batch (LineOptions::batch_bytes,
+  // 256 MiB). Measured peak: 1.14 GB per rank for the 3D explosion at 128^3 on 2 ranks (estimate 1.05 GB).
   PetscCall(suite::checkMemoryEstimate(
-      comm, 100.0 * nv() * cells / ctx_.size() + 5e7 + 1.2 * (opt_.line_batch_mb << 20), what));
+      comm, 130.0 * nv() * cells / ctx_.size() + 5e7 + 1.2 * (opt_.line_batch_mb << 20), what));
   PetscCall(suite::checkIntOptionRange(comm, "-line_batch_mb", 1));
   PetscCheck(opt_.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", opt_.cfl);
   PetscCheck(opt_.dt >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -dt %g: must be >= 0", opt_.dt);
