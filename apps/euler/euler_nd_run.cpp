@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <exception>
 
@@ -115,15 +116,16 @@ PetscErrorCode EulerRunND::readOptions() {
                       "Memory (MiB) of one batch of block lines in the compact solves (more batches: more "
                       "messages, less memory)",
                       "", opt_.line_batch_mb, &opt_.line_batch_mb, nullptr));
-  const char* const line_solves[] = {"transpose", "substructured"};
-  PetscInt line_solve = opt_.transpose_lines ? 0 : 1;
+  char line_solve[32] = "transpose";
   PetscCall(
-      PetscOptionsEList("-line_solve",
-                        "Compact solves of lines split over ranks: transpose (whole lines moved to one rank "
-                        "each, two all-to-all exchanges) or substructured (solved in place, partition "
-                        "method); lines fewer than ranks are always substructured",
-                        "", line_solves, 2, line_solves[line_solve], &line_solve, nullptr));
-  opt_.transpose_lines = line_solve == 0;
+      PetscOptionsString("-line_solve",
+                         "Compact solves of lines split over ranks: transpose (whole lines moved to one "
+                         "rank each, two all-to-all exchanges) or substructured (solved in place, partition "
+                         "method); lines fewer than ranks are always substructured",
+                         "", line_solve, line_solve, sizeof(line_solve), nullptr));
+  PetscCheck(!strcmp(line_solve, "transpose") || !strcmp(line_solve, "substructured"), comm,
+             PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -line_solve '%s': transpose or substructured", line_solve);
+  opt_.transpose_lines = !strcmp(line_solve, "transpose");
   buf[0] = 0;
   PetscCall(PetscOptionsString("-output", "HDF5 output file (XDMF sidecar beside it)", "", buf, buf,
                                sizeof(buf), &set));
