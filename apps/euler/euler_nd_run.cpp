@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <ctime>
 #include <exception>
 
@@ -123,9 +122,10 @@ PetscErrorCode EulerRunND::readOptions() {
                          "rank each, two all-to-all exchanges) or substructured (solved in place, partition "
                          "method); lines fewer than ranks are always substructured",
                          "", line_solve, line_solve, sizeof(line_solve), nullptr));
-  PetscCheck(!strcmp(line_solve, "transpose") || !strcmp(line_solve, "substructured"), comm,
-             PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -line_solve '%s': transpose or substructured", line_solve);
-  opt_.transpose_lines = !strcmp(line_solve, "transpose");
+  const char* const line_solves[] = {"transpose", "substructured"};
+  PetscInt which = 0;
+  PetscCall(suite::checkChoice(comm, "-line_solve", line_solve, line_solves, 2, &which));
+  opt_.transpose_lines = which == 0;
   buf[0] = 0;
   PetscCall(PetscOptionsString("-output", "HDF5 output file (XDMF sidecar beside it)", "", buf, buf,
                                sizeof(buf), &set));

@@ -95,11 +95,13 @@ PetscErrorCode EulerRun::readOptions() {
                              opt_.positivity, &opt_.positivity, nullptr));
   PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
                              opt_.shock_threshold, &opt_.shock_threshold, nullptr));
-  PetscCall(PetscOptionsEList("-line_solve",
-                              "Distributed compact line solve: substructured (O(N/P) per rank) or gather "
-                              "(whole line on every rank, for comparison)",
-                              "", kLineSolves, 2, kLineSolves[opt_.gather_lines ? 1 : 0], &line_solve,
-                              nullptr));
+  char line_solve_text[32];
+  PetscCall(PetscStrncpy(line_solve_text, kLineSolves[opt_.gather_lines ? 1 : 0], sizeof line_solve_text));
+  PetscCall(PetscOptionsString("-line_solve",
+                               "Distributed compact line solve: substructured (O(N/P) per rank) or gather "
+                               "(whole line on every rank, for comparison)",
+                               "", line_solve_text, line_solve_text, sizeof line_solve_text, nullptr));
+  PetscCall(suite::checkChoice(comm, "-line_solve", line_solve_text, kLineSolves, 2, &line_solve));
   opt_.gather_lines = line_solve == 1;
   PetscCall(PetscOptionsString("-output", "HDF5 output file", "", buf, buf, sizeof(buf), &set));
   if (set) opt_.output = buf;

@@ -23,6 +23,7 @@
 #include "lcpbench_run.hpp"
 #include "lcpbench_store.hpp"
 
+#include "core/resource_checks.hpp"
 #include "core/log.hpp"
 #include "core/progress.hpp"
 #include "core/run_context.hpp"
@@ -175,11 +176,14 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
   PetscCall(PetscOptionsString(
       "-file", "Problem files for -family file (comma-separated; .dat Siconos, .h5 suite, FCLib HDF5)", "",
       files, files, sizeof files, nullptr));
+  char fclib_text[32];
+  PetscCall(PetscStrncpy(fclib_text, kFclibModels[fclib_model], sizeof fclib_text));
   PetscCall(
-      PetscOptionsEList("-fclib_model",
-                        "FCLib frictional-contact files as: box_friction (all unknowns, tangential bounds "
-                        "+-mu times the frictionless normal force) or normal (the frictionless normal LCP)",
-                        "", kFclibModels, 2, kFclibModels[fclib_model], &fclib_model, nullptr));
+      PetscOptionsString("-fclib_model",
+                         "FCLib frictional-contact files as: box_friction (all unknowns, tangential bounds "
+                         "+-mu times the frictionless normal force) or normal (the frictionless normal LCP)",
+                         "", fclib_text, fclib_text, sizeof fclib_text, nullptr));
+  PetscCall(suite::checkChoice(comm, "-fclib_model", fclib_text, kFclibModels, 2, &fclib_model));
   PetscCall(PetscOptionsString("-solvers", "Comma-separated solver names", "", solvers, solvers,
                                sizeof solvers, nullptr));
   PetscCall(PetscOptionsInt("-max_it", "Iteration / pivot cap of every solver (0: each solver's default)", "",

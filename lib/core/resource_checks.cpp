@@ -1,6 +1,10 @@
 // Option range and memory estimate checks (see resource_checks.hpp).
 #include "core/resource_checks.hpp"
 
+#include <string>
+
+#include <cstring>
+
 #include <cerrno>
 #include <cstdlib>
 #include <unistd.h>
@@ -20,6 +24,19 @@ PetscErrorCode checkIntOptionRange(MPI_Comm comm, const char* name, long long lo
   PetscCheck(ok, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "%s %s: must be an integer in [%lld, %lld] (PetscInt is %d-bit)", name, text, lo,
              (long long)PETSC_MAX_INT, (int)(8 * sizeof(PetscInt)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkChoice(MPI_Comm comm, const char* name, const char* value, const char* const* choices,
+                           int n, PetscInt* index) {
+  std::string list;
+  PetscFunctionBeginUser;
+  *index = -1;
+  for (int i = 0; i < n; ++i) {
+    if (!std::strcmp(value, choices[i])) *index = i;
+    list += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + std::string(choices[i]);
+  }
+  PetscCheck(*index >= 0, comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown %s '%s': %s", name, value, list.c_str());
   PetscFunctionReturn(0);
 }
 

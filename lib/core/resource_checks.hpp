@@ -12,6 +12,12 @@ namespace suite {
 // [lo, PETSC_MAX_INT]; otherwise one error naming the option, its text and the range.
 PetscErrorCode checkIntOptionRange(MPI_Comm comm, const char* name, long long lo);
 
+// Collective. `value` (the text given for option `name`) must be one of the n `choices`; *index is its position.
+// Otherwise one error for the whole job (PetscOptionsEList errors on every rank, one message per rank) naming
+// the option, the text and the choices.
+PetscErrorCode checkChoice(MPI_Comm comm, const char* name, const char* value, const char* const* choices,
+                           int n, PetscInt* index);
+
 // Collective. bytes_this_rank: the caller's estimate of its peak memory. Errors when the ranks sharing a
 // node need more than 90% of that node's physical memory, naming the estimate, the node memory and `what`.
 PetscErrorCode checkMemoryEstimate(MPI_Comm comm, double bytes_this_rank, const char* what);
