@@ -1,6 +1,7 @@
 // 2D/3D Euler run: options, DMDA and line communicators, boundary ghosts, TS callbacks (see euler_nd_run.hpp).
 #include "euler_nd_run.hpp"
 
+#include "core/error_handler.hpp"
 #include "core/field_check.hpp"
 #include "core/log.hpp"
 #include "core/resource_checks.hpp"
@@ -415,10 +416,12 @@ template <int NV> PetscErrorCode EulerRunND::rhsImpl(double t, const double* ul,
     try {
       sweep.faceFluxes(line_comm_[d], q.data(), nlines, opt_.n[d], s_[d], xm, periodic_[d],
                        amax[d] * (1.0 + 1e-12), lambda, h.data());
-    } catch (const std::exception& e) { // reduced over the whole grid by rhs()
-      rhs_failure_ = e.what();
+    } catch (const std::exception& e) {
+      // Reduced over the whole grid by rhs(). The other directions still run: their line communicators hold
+      // ranks that did not fail here and wait for this rank in their collectives.
+      if (rhs_failure_.empty()) rhs_failure_ = e.what();
       PetscCall(PetscLogStagePop());
-      PetscFunctionReturn(0);
+      continue;
     }
     int comp[NV];
     for (int c = 0; c < NV; ++c) comp[c] = frameComponent(dim, d, c);
@@ -468,11 +471,10 @@ PetscErrorCode EulerRunND::rhs(double t, Vec U, Vec F) {
   PetscCall(VecRestoreArrayRead(Ul, &ul));
   PetscCall(DMRestoreLocalVector(da_, &Ul));
   // A line-solve failure is the same on the ranks of a line but not of the grid: agree before returning.
-  int bad = rhs_failure_.empty() ? 0 : 1, any = 0;
-  PetscCallMPI(MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, ctx_.comm()));
-  PetscCheck(!any, ctx_.comm(), PETSC_ERR_NOT_CONVERGED,
+  PetscCall(suite::agreeOnFailure(ctx_.comm(), &rhs_failure_));
+  PetscCheck(rhs_failure_.empty(), ctx_.comm(), PETSC_ERR_NOT_CONVERGED,
              "Euler right-hand side failed at step %" PetscInt_FMT ", t = %g (a compact line solve: %s)",
-             steps_, t, bad ? rhs_failure_.c_str() : "on another rank");
+             steps_, t, rhs_failure_.c_str());
   PetscFunctionReturn(0);
 }
 

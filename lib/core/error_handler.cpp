@@ -45,4 +45,19 @@ PetscErrorCode pushSuiteErrorHandler() {
   return PetscPushErrorHandler(suiteErrorHandler, nullptr);
 }
 
+PetscErrorCode agreeOnFailure(MPI_Comm comm, std::string* message) {
+  int rank = 0, size = 1;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  int root = message->empty() ? size : rank;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &root, 1, MPI_INT, MPI_MIN, comm));
+  if (root == size) PetscFunctionReturn(0);
+  int len = (int)message->size();
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, root, comm));
+  message->resize(len);
+  PetscCallMPI(MPI_Bcast(message->data(), len, MPI_CHAR, root, comm));
+  PetscFunctionReturn(0);
+}
+
 } // namespace suite

@@ -8,6 +8,13 @@
 
 #include <petscsys.h>
 
+#include <string>
+
 namespace suite {
 PetscErrorCode pushSuiteErrorHandler();
+
+// Collective. For failures caught as text on some ranks only (e.g. an exception from a sub-communicator's
+// work): afterwards every rank holds the message of the lowest rank that had one (empty if none did), so the
+// caller can raise one error on comm with the real reason, whichever rank prints it.
+PetscErrorCode agreeOnFailure(MPI_Comm comm, std::string* message);
 } // namespace suite

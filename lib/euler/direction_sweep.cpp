@@ -2,6 +2,7 @@
 // references).
 #include "euler/direction_sweep.hpp"
 
+#include "core/error_handler.hpp"
 #include "euler/enopade6.hpp"
 
 #include <petsclog.h>
@@ -9,7 +10,9 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 namespace suite::euler {
 
@@ -48,6 +51,19 @@ struct EventScope {
     if (ev >= 0) (void)PetscLogEventEnd(ev, 0, 0, 0, 0);
   }
 };
+
+// Fault injection for the reliability tests: with SUITE_FAULT_LINE_SOLVE_RANK=R in the environment, the whole-line
+// solves of MPI_COMM_WORLD rank R fail (as a singular line would), to check that the job stops cleanly.
+bool faultInjected() {
+  static const int rank = [] {
+    const char* s = std::getenv("SUITE_FAULT_LINE_SOLVE_RANK");
+    return s ? std::atoi(s) : -1;
+  }();
+  if (rank < 0) return false;
+  int me = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  return me == rank;
+}
 
 inline bool boundaryFace(bool periodic, long long iface, long long n) {
   return !periodic && (iface == 0 || iface == n);
@@ -278,8 +294,20 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
       tr->gather(&q[(size_t)l0 * ncell][0], NV, cn, &tq_);
     }
     th_.resize((size_t)own * (n + 1));
-    linesFaceFluxes(MPI_COMM_SELF, reinterpret_cast<const V*>(tq_.data()), own, n, 0, (int)n, periodic, alpha,
-                    lambda, th_.data());
+    // A failure (a singular line) is this rank's alone here: agree on it before the next collective, so that
+    // every rank of the line communicator throws and none waits in the return exchange.
+    std::string failure;
+    try {
+      if (faultInjected())
+        throw std::runtime_error("line solve failure injected by SUITE_FAULT_LINE_SOLVE_RANK");
+      linesFaceFluxes(MPI_COMM_SELF, reinterpret_cast<const V*>(tq_.data()), own, n, 0, (int)n, periodic,
+                      alpha, lambda, th_.data());
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    if (suite::agreeOnFailure(comm, &failure) != 0 && failure.empty())
+      failure = "MPI error agreeing on a failure";
+    if (!failure.empty()) throw std::runtime_error(failure);
     EventScope ev(transposeEvent(1));
     tr->scatter(&th_.data()[0][0], NV, cn, &h[(size_t)l0 * nface][0]);
   }
