@@ -19,6 +19,7 @@
 //   euler -dim 3 -problem taylor_green -nx 16 -ny 16 -nz 16 -t_final 0.5 -spectrum -output tg.h5
 //   euler -dim 3 -problem sod -axis z -dt 5e-4 -t_final 0.05   # planar Sod along z of a 6 x 6 x 200 grid
 //   mpiexec -n 2 euler -dim 2 -problem double_mach -nx 120 -ny 30 -t_final 0.02 -da_processors_x 2
+//   mpiexec -n 2 euler -dim 3 -problem explosion -nx 24 -ny 24 -nz 24 -max_steps 5 -line_solve substructured
 #include "core/run_context.hpp"
 #include "euler_run.hpp"
 
