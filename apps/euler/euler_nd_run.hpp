@@ -1,7 +1,7 @@
 // The 2D/3D Euler run (-dim 2|3): a PETSc DMDA with a star stencil of width 3 and NV = dim + 2 unknowns per
 // cell, the 1D schemes applied direction by direction (DirectionSweep: lines split over ranks transposed whole
-// to one rank each, or solved in place by substructuring; line communicators split from the DMDA's process grid), boundary ghosts from the problem,
-// gravity source, PETSc TS, CFL dt = cfl / sum_d(max(|u_d| + c) / dx_d), collective state checks, HDF5 + XDMF
+// to one rank each, or solved in place by substructuring; line communicators split from the DMDA's process
+// grid), boundary ghosts from the problem, gravity source, PETSc TS, CFL dt = cfl / sum_d(max(|u_d| + c) / dx_d), collective state checks, HDF5 + XDMF
 // output, energy spectra (FFTW-MPI), checkpoint/restart at any rank count.
 #pragma once
 

@@ -23,9 +23,9 @@
 #include "lcpbench_run.hpp"
 #include "lcpbench_store.hpp"
 
-#include "core/resource_checks.hpp"
 #include "core/log.hpp"
 #include "core/progress.hpp"
+#include "core/resource_checks.hpp"
 #include "core/run_context.hpp"
 #include "core/version.hpp"
 #include "io/h5_append.hpp"

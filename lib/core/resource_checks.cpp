@@ -1,12 +1,10 @@
 // Option range and memory estimate checks (see resource_checks.hpp).
 #include "core/resource_checks.hpp"
 
-#include <string>
-
-#include <cstring>
-
 #include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <string>
 #include <unistd.h>
 
 namespace suite {

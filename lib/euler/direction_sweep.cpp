@@ -8,6 +8,7 @@
 #include <petsclog.h>
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -33,13 +34,14 @@ struct StageScope {
 
 // -log_view events of the pencil transposes (LineTranspose::gather, LineTranspose::scatter).
 PetscLogEvent transposeEvent(int which) {
-  static PetscLogEvent ev[2] = {-1, -1};
-  if (ev[which] < 0) {
+  static const std::array<PetscLogEvent, 2> ev = [] {
+    std::array<PetscLogEvent, 2> e = {-1, -1};
     PetscClassId cls = 0;
-    if (PetscClassIdRegister("Euler lines", &cls) ||
-        PetscLogEventRegister(which ? "LineTransposeScat" : "LineTransposeGath", cls, &ev[which]))
-      ev[which] = -1;
-  }
+    if (PetscClassIdRegister("Euler lines", &cls) || PetscLogEventRegister("LineTransposeGath", cls, &e[0]) ||
+        PetscLogEventRegister("LineTransposeScat", cls, &e[1]))
+      e = {-1, -1};
+    return e;
+  }();
   return ev[which];
 }
 struct EventScope {
@@ -274,10 +276,18 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
   int size = 1;
   MPI_Comm_size(comm, &size);
   // nlines is the same on every rank of comm, so all take the same branch.
-  if (!scheme_->compact || opt_.gather_lines || !opt_.transpose_lines || size == 1 || nlines < size) {
+  if (!scheme_->compact || opt_.gather_lines || !opt_.transpose_lines || size == 1 || nlines < size)
     linesFaceFluxes(comm, q, nlines, n, xs, xm, periodic, alpha, lambda, h);
-    return;
-  }
+  else
+    transposedFaceFluxes(comm, size, q, nlines, n, xs, xm, periodic, alpha, lambda, h);
+}
+
+// faceFluxes of lines split over the `size` ranks of comm: whole lines moved to one rank each (LineTranspose),
+// processed there serially, face fluxes moved back.
+template <int NV>
+void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* q, int nlines, long long n,
+                                              long long xs, int xm, bool periodic, double alpha,
+                                              double lambda, V* h) {
   LineTranspose* tr = nullptr;
   for (LineTranspose& t : transposes_)
     if (t.matches(comm, n, xs, xm)) tr = &t;

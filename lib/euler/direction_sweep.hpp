@@ -59,6 +59,8 @@ private:
   // faceFluxes of lines held as segments on the ranks of comm (or whole, comm = MPI_COMM_SELF).
   void linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm,
                        bool periodic, double alpha, double lambda, V* h);
+  void transposedFaceFluxes(MPI_Comm comm, int size, const V* q, int nlines, long long n, long long xs,
+                            int xm, bool periodic, double alpha, double lambda, V* h);
   void lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, V* h);
   bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
                        char* shock);

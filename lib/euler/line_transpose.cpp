@@ -39,16 +39,11 @@ void LineTranspose::exchange(int width, int count, bool to_owner) {
                                 " lines too large for one MPI_Alltoallv");
   scount_.assign(size_, 0);
   rcount_.assign(size_, 0);
-  const int g = ghost_;
-  auto segment =
-      [&](int r) { // cells of rank r's stored line that it sends: its own, plus the domain-end ghosts
-        return xm_[r] + (r == 0 ? g : 0) + (r == size_ - 1 ? g : 0);
-      };
   for (int r = 0; r < size_; ++r) {
     if (r == rank_) continue; // this rank's own share is copied directly, not sent to itself
     if (to_owner) {
-      scount_[r] = linesOf(r, count) * segment(rank_);
-      rcount_[r] = owned(count) * segment(r);
+      scount_[r] = linesOf(r, count) * cellsSent(rank_);
+      rcount_[r] = owned(count) * cellsSent(r);
     } else {
       scount_[r] = owned(count) * (xm_[r] + 1);
       rcount_[r] = linesOf(r, count) * (xm_[rank_] + 1);
@@ -69,24 +64,22 @@ void LineTranspose::exchange(int width, int count, bool to_owner) {
 
 void LineTranspose::gather(const double* q, int width, int count, std::vector<double>* full) {
   const int g = ghost_, P = size_, own = owned(count);
-  const int lo = rank_ == 0 ? 0 : g, hi = xm_[rank_] + g + (rank_ == P - 1 ? g : 0);
-  const size_t stored = (size_t)(xm_[rank_] + 2 * g) * width, seg = (size_t)(hi - lo) * width;
+  const size_t stored = (size_t)(xm_[rank_] + 2 * g) * width, seg = (size_t)cellsSent(rank_) * width;
+  const size_t lo = (size_t)firstSent(rank_) * width;
   send_.resize((size_t)(count - own) * seg);
   double* s = send_.data();
   for (int r = 0; r < P; ++r) // destination r: lines r, r + P, ...
     if (r != rank_)
-      for (int j = r; j < count; j += P, s += seg) std::copy_n(q + j * stored + (size_t)lo * width, seg, s);
+      for (int j = r; j < count; j += P, s += seg) std::copy_n(q + j * stored + lo, seg, s);
   exchange(width, count, true);
   const size_t line = (size_t)(n_ + 2 * g) * width;
   full->resize((size_t)own * line);
   for (int r = 0; r < P; ++r) {
-    const int rlo = r == 0 ? 0 : g, rhi = xm_[r] + g + (r == P - 1 ? g : 0);
-    const size_t rseg = (size_t)(rhi - rlo) * width;
-    // cell m of rank r's stored line is cell xs_r + m of the full stored line (both start with `ghost` cells)
-    double* dst = full->data() + (size_t)(xs_[r] + rlo) * width;
+    const size_t rseg = (size_t)cellsSent(r) * width;
+    double* dst = full->data() + (size_t)(xs_[r] + firstSent(r)) * width;
     if (r == rank_) { // this rank's segments of its own lines
       for (int k = 0; k < own; ++k)
-        std::copy_n(q + (size_t)(rank_ + k * P) * stored + (size_t)rlo * width, rseg, dst + k * line);
+        std::copy_n(q + (size_t)(rank_ + k * P) * stored + lo, rseg, dst + k * line);
       continue;
     }
     const double* src = recv_.data() + rdispl_[r];

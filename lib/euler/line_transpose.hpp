@@ -40,6 +40,11 @@ public:
 
 private:
   int linesOf(int r, int count) const { return count > r ? (count - r + size_ - 1) / size_ : 0; }
+  // The cells of rank r's stored line that go into the whole line: its own, plus the domain-end ghosts on the
+  // first and last rank; they start at stored cell firstSent(r) and fill cells xs_r + firstSent(r) ... of the
+  // whole stored line (both start with `ghost` cells).
+  int firstSent(int r) const { return r == 0 ? 0 : ghost_; }
+  int cellsSent(int r) const { return xm_[r] + (r == 0 ? ghost_ : 0) + (r == size_ - 1 ? ghost_ : 0); }
   void exchange(int width, int count, bool to_owner);
 
   MPI_Comm comm_;
