@@ -4,6 +4,7 @@
 #include "core/error_handler.hpp"
 #include "core/sanitizer_defaults.hpp"
 
+#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -38,6 +39,22 @@ std::string isoNowUtc() {
   return buf;
 }
 
+// -help: PETSc prints its generic options while PetscInitialize runs, before the app has declared any of its
+// own. They are held here and printed after the app's options, under a heading (RunContext::exitCode).
+std::string g_generic_help;
+PetscErrorCode bufferHelp(MPI_Comm comm, const char format[], ...) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank != 0) return 0;
+  va_list ap;
+  va_start(ap, format);
+  char buf[8192];
+  std::vsnprintf(buf, sizeof buf, format, ap);
+  va_end(ap);
+  g_generic_help += buf;
+  return 0;
+}
+
 void installStopHandlers() {
   struct sigaction sa {};
   sa.sa_handler = onStopSignal;
@@ -52,7 +69,9 @@ RunContext::RunContext(int* argc, char*** argv, const char* help, const char* pr
   // (before PetscInitialize returns) are reported like every other error: once, without a traceback.
   keepSanitizerDefaults();
   pushSuiteErrorHandler();
+  PetscHelpPrintf = bufferHelp;
   init_error_ = PetscInitialize(argc, argv, nullptr, help);
+  PetscHelpPrintf = PetscHelpPrintfDefault;
   if (init_error_) return;
   petsc_up_ = true;
   t0_ = MPI_Wtime();
@@ -77,6 +96,7 @@ PetscErrorCode RunContext::readCommonOptions() {
   PetscBool has_help = PETSC_FALSE, quiet = PETSC_FALSE, allow = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(nullptr, &has_help));
   help_ = has_help;
+  if (help_) PetscCall(printProgramHelp());
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Run control (all programs of the suite)", nullptr);
   PetscCall(PetscOptionsBool("-quiet", "Print no progress or info lines (errors still go to stderr)", nullptr,
                              quiet, &quiet, nullptr));
@@ -167,7 +187,19 @@ std::string RunContext::optionsText() const {
   return s;
 }
 
+// The first lines of the buffered help, up to PETSc's own list: the program's description.
+PetscErrorCode RunContext::printProgramHelp() const {
+  PetscFunctionBeginUser;
+  const size_t generic = g_generic_help.find("----------------------------------------");
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\n", g_generic_help.substr(0, generic).c_str()));
+  g_generic_help = generic == std::string::npos ? "" : g_generic_help.substr(generic);
+  PetscFunctionReturn(0);
+}
+
 int RunContext::exitCode(PetscErrorCode ierr) const {
+  if (!ierr && petsc_up_ && help_ && !g_generic_help.empty())
+    ierr = PetscPrintf(PETSC_COMM_WORLD, "\nPETSc's generic options (every PETSc program):\n%s",
+                       g_generic_help.c_str());
   if (!ierr && petsc_up_ && !help_) ierr = finalOptionsCheck();
   std::fflush(stdout);
   std::fflush(stderr);

@@ -58,6 +58,7 @@ public:
 
 private:
   PetscErrorCode readCommonOptions();
+  PetscErrorCode printProgramHelp() const;
 
   PetscErrorCode init_error_ = 0;
   bool petsc_up_ = false;

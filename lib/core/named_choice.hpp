@@ -1,0 +1,44 @@
+// Named-choice options (-problem, -scheme, -time, -solvers, -scene, -friction, -ordering, -material, ...):
+// declared in one line inside a PetscOptionsBegin/End block, with the registered values documented by -help,
+// one per line with its description, generated from the registry that defines them (adding a value adds its
+// help line). The value is validated collectively: an unknown name is one error for the whole job naming the
+// option, the text and the known values (PetscOptionsEList errors once per rank).
+//
+//   const std::vector<suite::Choice> kSchemes = {{"enopade6", "6th-order ENO-Pade"}, {"weno5", "WENO5-Z"}};
+//   PetscOptionsBegin(comm, "", "Euler options", "");
+//   PetscCall(suite::optionsChoice(PetscOptionsObject, "-scheme", "Spatial scheme", kSchemes, &scheme));
+//   PetscOptionsEnd();
+// A list option (-solvers a,b,c) takes optionsChoiceList: every element must be registered.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace suite {
+
+struct Choice {
+  std::string name;
+  std::string help; // one line
+};
+
+// Reads option `name` (default: *value on entry) in the current options block; on -help prints `text`, the
+// default and every choice with its help line. Collective error on an unknown value.
+PetscErrorCode optionsChoice(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                             const std::vector<Choice>& choices, std::string* value,
+                             PetscBool* set = nullptr);
+
+// A comma-separated list of choices (order kept, each validated). *values on entry is the default list.
+PetscErrorCode optionsChoiceList(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                                 const std::vector<Choice>& choices, std::vector<std::string>* values,
+                                 PetscBool* set = nullptr);
+
+// "a, b or c" of the choices' names (for messages).
+std::string choiceNames(const std::vector<Choice>& choices);
+
+// Collective check that value is one of choices; otherwise one error for the job naming option, text, choices.
+PetscErrorCode checkChoice(MPI_Comm comm, const char* option, const std::string& value,
+                           const std::vector<Choice>& choices);
+
+} // namespace suite
