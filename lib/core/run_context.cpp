@@ -65,14 +65,20 @@ void installStopHandlers() {
 } // namespace
 
 RunContext::RunContext(int* argc, char*** argv, const char* help, const char* program) : program_(program) {
+  // Inside a program that already runs PETSc (the unit tests) the context uses it and leaves its end to it.
+  PetscBool already = PETSC_FALSE;
+  PetscInitialized(&already);
+  owns_petsc_ = !already;
   // The suite's handler is pushed first so that errors while reading the command line and -options_file
   // (before PetscInitialize returns) are reported like every other error: once, without a traceback.
   keepSanitizerDefaults();
-  pushSuiteErrorHandler();
-  PetscHelpPrintf = bufferHelp;
-  init_error_ = PetscInitialize(argc, argv, nullptr, help);
-  PetscHelpPrintf = PetscHelpPrintfDefault;
-  if (init_error_) return;
+  if (owns_petsc_) {
+    pushSuiteErrorHandler();
+    PetscHelpPrintf = bufferHelp;
+    init_error_ = PetscInitialize(argc, argv, nullptr, help);
+    PetscHelpPrintf = PetscHelpPrintfDefault;
+    if (init_error_) return;
+  }
   petsc_up_ = true;
   t0_ = MPI_Wtime();
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
@@ -88,7 +94,7 @@ RunContext::RunContext(int* argc, char*** argv, const char* help, const char* pr
 }
 
 RunContext::~RunContext() {
-  if (petsc_up_) PetscFinalize();
+  if (petsc_up_ && owns_petsc_) PetscFinalize();
 }
 
 PetscErrorCode RunContext::readCommonOptions() {

@@ -61,7 +61,7 @@ private:
   PetscErrorCode printProgramHelp() const;
 
   PetscErrorCode init_error_ = 0;
-  bool petsc_up_ = false;
+  bool petsc_up_ = false, owns_petsc_ = true;
   int rank_ = 0, size_ = 1;
   std::string program_;
   bool quiet_ = false, help_ = false, allow_unused_ = false;
