@@ -12,6 +12,7 @@
 //   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_box -n 100 -count 200 -output compare.h5
 //   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_spd -n 50 -count 100 -ours bpp,lemke,pgs -output compare_spd.h5
 #include "core/log.hpp"
+#include "core/named_choice.hpp"
 #include "core/run_context.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/generators.hpp"
@@ -55,13 +56,17 @@ double threadCpu() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
+// -family and -ours documented by -help from the registries of lib/lcp.
+std::vector<suite::Choice> familyChoices() {
+  std::vector<suite::Choice> c;
+  for (const auto& f : familyRegistry()) c.push_back({f.name, f.description});
+  return c;
+}
+
+std::vector<suite::Choice> solverChoices() {
+  std::vector<suite::Choice> c;
+  for (const auto& s : solverRegistry()) c.push_back({s.name, s.description});
+  return c;
 }
 
 struct Outcome {
@@ -91,13 +96,13 @@ struct Entry {
 static PetscErrorCode runCompare(const suite::RunContext& ctx) {
   PetscFunctionBeginUser;
   MPI_Comm comm = ctx.comm();
-  char family[64] = "random_box", ours[256] = "bpp,lemke,keller,pgs,fb_newton",
-       output[PETSC_MAX_PATH_LEN] = "";
+  std::string family = "random_box";
+  std::vector<std::string> ours = {"bpp", "lemke", "keller", "pgs", "fb_newton"};
+  char output[PETSC_MAX_PATH_LEN] = "";
   PetscInt n = 100, count = 200, seed = 1, max_it = 0;
   PetscReal cond = 1e4, qrange = 1e2, rel_tol = 1e-10;
   PetscOptionsBegin(comm, "", "lcpcompare options", "");
-  PetscCall(PetscOptionsString("-family", "random_spd, random_box, pmatrix, psd, murty", "", family, family,
-                               sizeof family, nullptr));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-family", "Problem family", familyChoices(), &family));
   PetscCall(PetscOptionsInt("-n", "Problem size", "", n, &n, nullptr));
   PetscCall(PetscOptionsInt("-count", "Number of problems", "", count, &count, nullptr));
   PetscCall(
@@ -105,7 +110,8 @@ static PetscErrorCode runCompare(const suite::RunContext& ctx) {
   PetscCall(PetscOptionsReal("-cond", "Condition number of M", "", cond, &cond, nullptr));
   PetscCall(PetscOptionsReal("-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", "", qrange,
                              &qrange, nullptr));
-  PetscCall(PetscOptionsString("-ours", "The suite's solvers to time", "", ours, ours, sizeof ours, nullptr));
+  PetscCall(suite::optionsChoiceList(PetscOptionsObject, "-ours", "The suite's solvers to time",
+                                     solverChoices(), &ours));
   PetscCall(PetscOptionsInt("-max_it", "Iteration cap of the iterative solvers (0: defaults)", "", max_it,
                             &max_it, nullptr));
   PetscCall(PetscOptionsReal("-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", "", rel_tol,
@@ -115,8 +121,6 @@ static PetscErrorCode runCompare(const suite::RunContext& ctx) {
   PetscCall(ctx.checkUnusedOptions());
   if (ctx.helpRequested()) PetscFunctionReturn(0);
   PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
-  PetscCheck(isFamily(family), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown family '%s' (option -family)",
-             family);
   PetscCheck(n >= 1 && count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
   PetscCheck(output[0], comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
   PetscCall(suite::checkOutputWritable(comm, output, "output"));
@@ -135,10 +139,8 @@ static PetscErrorCode runCompare(const suite::RunContext& ctx) {
 
   std::vector<Entry> entries;
   std::vector<std::unique_ptr<Solver>> keep;
-  for (const auto& s : split(ours)) {
-    auto sv = makeSolver(s);
-    PetscCheck(sv != nullptr, comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown solver '%s' (option -ours)",
-               s.c_str());
+  for (const auto& s : ours) {
+    auto sv = makeSolver(s); // known: -ours is validated against the registry
     const Solver* raw = sv.get();
     keep.push_back(std::move(sv));
     entries.push_back({s, [raw, so](const Problem& p) {
@@ -243,8 +245,8 @@ static PetscErrorCode runCompare(const suite::RunContext& ctx) {
     for (double c : cpu[e]) s += c;
     return s;
   };
-  PetscCall(suite::logInfo(comm, ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core", family,
-                           (int)n, (int)count));
+  PetscCall(suite::logInfo(comm, ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core",
+                           family.c_str(), (int)n, (int)count));
   PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s", "solver", "solved",
                            "failed", "unsupp", "median cpu [s]", "prob/cpu-s", "time/bullet"));
   for (int e = 0; e < ne; ++e) {

@@ -36,8 +36,18 @@ Vec uniformVec(int n, double a, double b, Rng& rng) {
 }
 } // namespace
 
+std::vector<FamilyInfo> familyRegistry() {
+  return {{"random_spd", "standard LCP, M SPD with condition number cond, q uniform in [-qrange, qrange]"},
+          {"random_box", "box LCP: the random_spd M and q with bounds l = lower, u = upper"},
+          {"pmatrix", "nonsymmetric P-matrix (random_spd M plus a skew-symmetric part), q uniform"},
+          {"psd", "degenerate positive semidefinite M (rank n/2, repeated rows), solvable q"},
+          {"murty", "Murty's example M = I + 2 strict lower triangle, q = -e (Lemke: 2^n - 1 pivots)"}};
+}
+
 std::vector<std::string> familyNames() {
-  return {"random_spd", "random_box", "pmatrix", "psd", "murty"};
+  std::vector<std::string> v;
+  for (const FamilyInfo& f : familyRegistry()) v.push_back(f.name);
+  return v;
 }
 
 bool isFamily(const std::string& name) {

@@ -27,6 +27,11 @@ struct GeneratorParams {
   std::uint64_t seed = 1;
 };
 
+// Every family with its one-line description (for -help), in registry order.
+struct FamilyInfo {
+  std::string name, description;
+};
+std::vector<FamilyInfo> familyRegistry();
 std::vector<std::string> familyNames();
 bool isFamily(const std::string& name);
 // Problem number `index` of the family (throws std::invalid_argument for an unknown family).

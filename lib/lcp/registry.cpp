@@ -1,8 +1,6 @@
-// Registry of the LCP solvers by name: one line per solver (the factories live in solvers/*.cpp).
+// Registry of the LCP solvers by name: one line per solver with its one-line description (the factories live
+// in solvers/*.cpp).
 #include "lcp/solver.hpp"
-
-#include <functional>
-#include <utility>
 
 namespace suite::lcp {
 
@@ -19,33 +17,48 @@ std::unique_ptr<Solver> makePetscSsls();
 std::unique_ptr<Solver> makePetscRsls();
 
 namespace {
-const std::vector<std::pair<std::string, std::function<std::unique_ptr<Solver>()>>>& table() {
-  static const std::vector<std::pair<std::string, std::function<std::unique_ptr<Solver>()>>> t = {
-      {"lemke", makeLemke},
-      {"keller", makeKeller},
-      {"cottle_dantzig", makeCottleDantzig},
-      {"murty", makeMurty},
-      {"bpp", makeBpp},
-      {"fb_newton", makeFbNewton},
-      {"smoothed_newton", makeSmoothedNewton},
-      {"pgs", makePgs},
-      {"pgs_block", makePgsBlock},
-      {"petsc_ssls", makePetscSsls},
-      {"petsc_rsls", makePetscRsls},
+struct Entry {
+  const char* name;
+  const char* description; // one line, shown by -help of the apps that offer the solvers
+  std::unique_ptr<Solver> (*make)();
+};
+
+const std::vector<Entry>& table() {
+  static const std::vector<Entry> t = {
+      {"lemke", "Lemke's complementary pivoting, lexicographic ratio test (box/MLCP via reformulation)",
+       makeLemke},
+      {"keller", "Keller's principal pivoting for box LCPs (rank-1 LDL^T updates for symmetric M)",
+       makeKeller},
+      {"cottle_dantzig", "Cottle-Dantzig principal pivoting (box/MLCP via reformulation)", makeCottleDantzig},
+      {"murty", "Murty's least-index principal pivoting, box form (finite for P-matrices)", makeMurty},
+      {"bpp", "block principal pivoting (Kostreva) with the Judice-Pires safeguard", makeBpp},
+      {"fb_newton", "semismooth Newton on the Fischer-Burmeister function, Armijo line search", makeFbNewton},
+      {"smoothed_newton", "smoothing Newton on the CHKS-smoothed natural map (Qi, Sun & Zhou)",
+       makeSmoothedNewton},
+      {"pgs", "projected Gauss-Seidel / SOR (relaxation omega; needs M_ii > 0)", makePgs},
+      {"pgs_block", "block projected Gauss-Seidel, blocks of size b solved exactly", makePgsBlock},
+      {"petsc_ssls", "PETSc SNESVINEWTONSSLS: semismooth VI Newton (reference)", makePetscSsls},
+      {"petsc_rsls", "PETSc SNESVINEWTONRSLS: reduced-space active-set VI Newton (reference)", makePetscRsls},
   };
   return t;
 }
 } // namespace
 
+std::vector<SolverInfo> solverRegistry() {
+  std::vector<SolverInfo> v;
+  for (const Entry& e : table()) v.push_back({e.name, e.description});
+  return v;
+}
+
 std::vector<std::string> solverNames() {
   std::vector<std::string> v;
-  for (const auto& e : table()) v.push_back(e.first);
+  for (const Entry& e : table()) v.push_back(e.name);
   return v;
 }
 
 std::unique_ptr<Solver> makeSolver(const std::string& name) {
-  for (const auto& e : table())
-    if (e.first == name) return e.second();
+  for (const Entry& e : table())
+    if (e.name == name) return e.make();
   return nullptr;
 }
 

@@ -59,6 +59,11 @@ public:
 
 // Registry by name (registry.cpp).
 std::vector<std::string> solverNames();
+// Every registered solver with its one-line description (for -help), in registry order.
+struct SolverInfo {
+  std::string name, description;
+};
+std::vector<SolverInfo> solverRegistry();
 // nullptr if the name is unknown.
 std::unique_ptr<Solver> makeSolver(const std::string& name);
 
