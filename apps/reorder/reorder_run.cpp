@@ -2,6 +2,7 @@
 #include "reorder_run.hpp"
 
 #include "core/log.hpp"
+#include "core/named_choice.hpp"
 #include "fem/cpu_timer.hpp"
 #include "fem/matrix_market.hpp"
 #include "fem/ordering.hpp"
@@ -18,13 +19,16 @@ using namespace suite::fem;
 PetscErrorCode runReorder(const suite::RunContext& ctx) {
   PetscFunctionBeginUser;
   MPI_Comm comm = ctx.comm();
-  char matrix[PETSC_MAX_PATH_LEN] = "", output[PETSC_MAX_PATH_LEN] = "", ordering[64] = "all";
+  char matrix[PETSC_MAX_PATH_LEN] = "", output[PETSC_MAX_PATH_LEN] = "";
+  std::string ordering = "all";
   PetscInt repeat = 3;
+  // The registered orderings (lib/fem/ordering.cpp), each with its help line, and "all" of them.
+  std::vector<suite::Choice> choices = orderingChoices();
+  choices.push_back({"all", "every ordering above, in this order"});
   PetscOptionsBegin(comm, "", "reorder options", "");
   PetscCall(PetscOptionsString("-matrix", "Matrix Market file (coordinate; symmetric or general)", "", matrix,
                                matrix, sizeof matrix, nullptr));
-  PetscCall(PetscOptionsString("-ordering", "natural|cm|rcm|amd|metis|auto|all", "", ordering, ordering,
-                               sizeof ordering, nullptr));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-ordering", "Fill-reducing ordering", choices, &ordering));
   PetscCall(PetscOptionsString("-output", "HDF5 output file", "", output, output, sizeof output, nullptr));
   PetscCall(PetscOptionsInt("-repeat", "Ordering time = minimum over this many runs", "", repeat, &repeat,
                             nullptr));
@@ -34,14 +38,7 @@ PetscErrorCode runReorder(const suite::RunContext& ctx) {
   PetscCheck(matrix[0], comm, PETSC_ERR_ARG_WRONG, "-matrix FILE.mtx is required");
   PetscCheck(output[0], comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
   PetscCheck(repeat >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-repeat %d: must be >= 1", (int)repeat);
-  std::vector<std::string> names;
-  if (std::string(ordering) == "all") {
-    names = orderingNames();
-  } else {
-    OrderingFn fn;
-    PetscCall(findOrdering(comm, ordering, &fn));
-    names = {ordering};
-  }
+  const std::vector<std::string> names = ordering == "all" ? orderingNames() : std::vector<std::string>{ordering};
   PetscCall(suite::checkOutputWritable(comm, output, "output"));
   SymCsc A;
   MatrixMarketInfo info;
