@@ -56,7 +56,8 @@ void packTables(const Results& res, Tables* t) {
   for (ull i = 0; i < t->nps; ++i)
     t->psync[4 * i] = pr.sync_time[i], t->psync[4 * i + 1] = pr.force_full[i],
                  t->psync[4 * i + 2] = pr.force_predicted[i], t->psync[4 * i + 3] = pr.compliance_yy[i];
-  for (ull i = 0; i < t->nph; ++i) t->phap[2 * i] = pr.haptic_time[i], t->phap[2 * i + 1] = pr.haptic_force[i];
+  for (ull i = 0; i < t->nph; ++i)
+    t->phap[2 * i] = pr.haptic_time[i], t->phap[2 * i + 1] = pr.haptic_force[i];
 }
 
 // Back into the run's history (every rank, after the broadcast).
@@ -89,7 +90,8 @@ std::vector<suite::CheckpointField> bindFields(suite::fem::NewmarkState* s, Tabl
        {std::make_pair("u", &s->u), std::make_pair("v", &s->v), std::make_pair("a", &s->a)})
     f.push_back({name, {n}, {0}, {root ? n : 0}, vec->data()});
   f.push_back({"history", {t->nrec, nc}, {0, 0}, {root ? t->nrec : 0, nc}, t->hist.data()});
-  if (t->nsnap > 0) f.push_back({"snapshots", {t->nsnap, w}, {0, 0}, {root ? t->nsnap : 0, w}, t->snaps.data()});
+  if (t->nsnap > 0)
+    f.push_back({"snapshots", {t->nsnap, w}, {0, 0}, {root ? t->nsnap : 0, w}, t->snaps.data()});
   if (t->has_tangent) {
     f.push_back({"u_tangent", {n}, {0}, {root ? n : 0}, s->u_tangent.data()});
     f.push_back({"dt_tangent", {1}, {0}, {root ? 1ull : 0ull}, &t->dt_tangent});
@@ -154,12 +156,13 @@ suite::CheckpointHeader FemdynDynamics::checkpointHeader() const {
   const Options& o = run_.opt_;
   const auto& nm = o.newmark;
   char scheme[1024];
-  std::snprintf(scheme, sizeof scheme,
-                "%s rho_inf=%.17g beta=%.17g gamma=%.17g newton_max_it=%d jacobian=%s material=%s E=%.17g "
-                "nu=%.17g density=%.17g mass=%s rayleigh=%.17g,%.17g tip_load=%.17g gravity=%.17g,%.17g,%.17g",
-                o.time_scheme.c_str(), o.rho_inf, nm.beta, nm.gamma, nm.newton_max_it, o.jacobian.c_str(),
-                o.material.c_str(), o.young, o.poisson, o.density, o.mass.c_str(), nm.rayleigh_mass,
-                nm.rayleigh_stiffness, o.tip_load, o.gravity[0], o.gravity[1], o.gravity[2]);
+  std::snprintf(
+      scheme, sizeof scheme,
+      "%s rho_inf=%.17g beta=%.17g gamma=%.17g newton_max_it=%d jacobian=%s material=%s E=%.17g "
+      "nu=%.17g density=%.17g mass=%s rayleigh=%.17g,%.17g tip_load=%.17g gravity=%.17g,%.17g,%.17g",
+      o.time_scheme.c_str(), o.rho_inf, nm.beta, nm.gamma, nm.newton_max_it, o.jacobian.c_str(),
+      o.material.c_str(), o.young, o.poisson, o.density, o.mass.c_str(), nm.rayleigh_mass,
+      nm.rayleigh_stiffness, o.tip_load, o.gravity[0], o.gravity[1], o.gravity[2]);
   // The Newton predictor changes the iterates (not the tolerance): tagged only when not the default, so that
   // checkpoints written before the option existed still load.
   std::string tag = scheme;
@@ -193,7 +196,8 @@ PetscErrorCode FemdynDynamics::checkRestart(const std::string& path, const suite
   MPI_Comm comm = run_.ctx_.comm();
   PetscFunctionBeginUser;
   PetscCheck(found.dt == run_.opt_.dt, comm, PETSC_ERR_ARG_INCOMP,
-             "restart %s: written with -dt %.17g, this run has -dt %.17g", path.c_str(), found.dt, run_.opt_.dt);
+             "restart %s: written with -dt %.17g, this run has -dt %.17g", path.c_str(), found.dt,
+             run_.opt_.dt);
   PetscCheck(found.step <= run_.opt_.steps, comm, PETSC_ERR_ARG_INCOMP,
              "restart %s: checkpoint is at step %lld, beyond -steps %d", path.c_str(), found.step,
              (int)run_.opt_.steps);
@@ -215,8 +219,10 @@ PetscErrorCode FemdynDynamics::loadState(const std::string& path, PetscInt* step
   PetscCall(readTableSizes(comm, path, &tab));
   const ull n = (ull)run_.model_.numFree();
   s_.u.assign(n, 0.0), s_.v.assign(n, 0.0), s_.a.assign(n, 0.0);
-  if (tab.has_tangent) s_.u_tangent.assign(n, 0.0);
-  else s_.u_tangent.clear();
+  if (tab.has_tangent)
+    s_.u_tangent.assign(n, 0.0);
+  else
+    s_.u_tangent.clear();
   PetscCall(suite::readCheckpoint(comm, path, checkpointHeader(), &found,
                                   bindFields(&s_, &tab, run_.ctx_.rank() == 0)));
   PetscCall(broadcast(comm, &s_, &tab));

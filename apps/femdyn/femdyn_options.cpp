@@ -92,7 +92,8 @@ PetscErrorCode FemdynRun::readNewtonOptions(PetscOptionItems* PetscOptionsObject
                              &nm.newton_rtol, nullptr));
   PetscCall(PetscOptionsReal("-newton_atol", "Newton absolute residual tolerance", "", nm.newton_atol,
                              &nm.newton_atol, nullptr));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-jacobian", "Newton matrix", kJacobians, &opt_.jacobian));
+  PetscCall(
+      suite::optionsChoice(PetscOptionsObject, "-jacobian", "Newton matrix", kJacobians, &opt_.jacobian));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-newton_predictor", "Newton start", kPredictors,
                                  &opt_.predictor));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-mass", "Mass matrix", kMasses, &opt_.mass));
@@ -114,8 +115,8 @@ PetscErrorCode FemdynRun::readProbeOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(PetscOptionsBool("-probe", "Haptic probe: a rigid point pressing on a surface node (penalty)", "",
                              opt_.probe, &opt_.probe, nullptr));
   PetscCall(PetscOptionsRealArray("-probe_point",
-                                  "Probe contact point x,y,z (nearest node; default: top of the free end)", "",
-                                  opt_.probe_point, &npt, nullptr));
+                                  "Probe contact point x,y,z (nearest node; default: top of the free end)",
+                                  "", opt_.probe_point, &npt, nullptr));
   PetscCall(PetscOptionsReal("-probe_stiffness", "Probe penalty stiffness k (force per length)", "",
                              opt_.probe_stiffness, &opt_.probe_stiffness, nullptr));
   PetscCall(PetscOptionsReal("-probe_speed", "Probe indentation speed (along -y, from the node's height)", "",

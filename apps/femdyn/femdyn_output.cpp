@@ -143,7 +143,8 @@ PetscErrorCode FemdynRun::writeProbe(suite::H5Output& out) const {
 }
 
 // Snapshots /snapshots/NNNNNN/u and the steps of the XDMF series over them (or over /final/u alone).
-PetscErrorCode FemdynRun::writeSnapshots(suite::H5Output& out, std::vector<suite::XdmfTetStep>* xsteps) const {
+PetscErrorCode FemdynRun::writeSnapshots(suite::H5Output& out,
+                                         std::vector<suite::XdmfTetStep>* xsteps) const {
   const ull nn = (ull)mesh_.numNodes();
   PetscFunctionBeginUser;
   for (size_t k = 0; k < res_.snapshots.size(); ++k) {
@@ -165,8 +166,10 @@ PetscErrorCode FemdynRun::writeOutput() const {
   PetscCall(writeRunAttributes(out));
   PetscCall(writeOrdering(out));
   PetscCall(writeMesh(out));
-  if (opt_.is_static) PetscCall(writeStatic(out));
-  else if (!res_.steps.empty()) PetscCall(writeSteps(out));
+  if (opt_.is_static)
+    PetscCall(writeStatic(out));
+  else if (!res_.steps.empty())
+    PetscCall(writeSteps(out));
   if (!res_.probe.sync_time.empty()) PetscCall(writeProbe(out));
   std::vector<suite::XdmfTetStep> xsteps;
   PetscCall(writeSnapshots(out, &xsteps));

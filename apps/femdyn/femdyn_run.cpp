@@ -85,8 +85,10 @@ PetscErrorCode FemdynRun::solve() {
     PetscCall(solveDynamic());
     PetscFunctionReturn(0);
   }
-  if (opt_.is_static) PetscCall(solveStaticCase());
-  else res_.u_full.assign(model_.numDofs(), 0.0); // -steps 0: setup, ordering and analysis only
+  if (opt_.is_static)
+    PetscCall(solveStaticCase());
+  else
+    res_.u_full.assign(model_.numDofs(), 0.0); // -steps 0: setup, ordering and analysis only
   PetscCall(writeOutputStage());
   PetscFunctionReturn(0);
 }

@@ -15,8 +15,8 @@ using namespace suite::fem;
 
 namespace {
 // The node nearest to -probe_point (default: top of the free end, middle of z); it must not be fixed in y.
-PetscErrorCode findProbeNode(MPI_Comm comm, const Options& opt, const TetMesh& mesh, const ElasticModel& model,
-                             int* node) {
+PetscErrorCode findProbeNode(MPI_Comm comm, const Options& opt, const TetMesh& mesh,
+                             const ElasticModel& model, int* node) {
   PetscFunctionBeginUser;
   std::array<double, 3> p = {opt.probe_point[0], opt.probe_point[1], opt.probe_point[2]};
   if (p[0] > 1e299) { // default: top of the free end, middle of z
@@ -39,9 +39,9 @@ PetscErrorCode findProbeNode(MPI_Comm comm, const Options& opt, const TetMesh& m
 }
 } // namespace
 
-PetscErrorCode HapticProbeObserver::create(const suite::RunContext& ctx, const Options& opt, const TetMesh& mesh,
-                                           ElasticModel* model, LinearSolver* solver, bool partial,
-                                           const NewmarkState& state, ProbeRecord* record,
+PetscErrorCode HapticProbeObserver::create(const suite::RunContext& ctx, const Options& opt,
+                                           const TetMesh& mesh, ElasticModel* model, LinearSolver* solver,
+                                           bool partial, const NewmarkState& state, ProbeRecord* record,
                                            std::unique_ptr<HapticProbeObserver>* out) {
   PetscFunctionBeginUser;
   PetscCall(findProbeNode(ctx.comm(), opt, mesh, *model, &record->node));
@@ -49,8 +49,8 @@ PetscErrorCode HapticProbeObserver::create(const suite::RunContext& ctx, const O
   HapticProbeObserver& o = **out;
   for (int c = 0; c < 3; ++c) o.dofs_[c] = model->eq()[3 * record->node + c];
   // Distributed assembly: only rank 0 adds the penalty to the partial sums.
-  o.probe_ = std::make_unique<ProbeSystem>(model, o.dofs_[1], mesh.nodes[record->node][1], opt.probe_stiffness,
-                                           !partial || ctx.rank() == 0);
+  o.probe_ = std::make_unique<ProbeSystem>(model, o.dofs_[1], mesh.nodes[record->node][1],
+                                           opt.probe_stiffness, !partial || ctx.rank() == 0);
   PetscFunctionReturn(0);
 }
 
@@ -127,14 +127,14 @@ PetscErrorCode HapticProbeObserver::logSummary() const {
     err = std::max(err, std::abs(pr.force_predicted[i - 1] - pr.force_full[i]));
     fmax = std::max(fmax, std::abs(pr.force_full[i]));
   }
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                           "femdyn probe: node %d, final force %.6g; haptic %lld ticks at %.0f Hz (model rate "
-                           "%.3g Hz cpu, %.3f ms/step for the compliance solves); local model vs full model at "
-                           "the synchronisations: max |df| %.3e (%.3e of max force %.4g)",
-                           pr.node, pr.force_full.back(), pr.ticks, opt_.haptic_rate,
-                           pr.tick_seconds > 0 ? pr.ticks / pr.tick_seconds : 0.0,
-                           1e3 * pr.compliance_seconds / pr.sync_time.size(), err, fmax > 0 ? err / fmax : 0.0,
-                           fmax));
+  PetscCall(suite::logInfo(
+      ctx_.comm(), ctx_.quiet(),
+      "femdyn probe: node %d, final force %.6g; haptic %lld ticks at %.0f Hz (model rate "
+      "%.3g Hz cpu, %.3f ms/step for the compliance solves); local model vs full model at "
+      "the synchronisations: max |df| %.3e (%.3e of max force %.4g)",
+      pr.node, pr.force_full.back(), pr.ticks, opt_.haptic_rate,
+      pr.tick_seconds > 0 ? pr.ticks / pr.tick_seconds : 0.0,
+      1e3 * pr.compliance_seconds / pr.sync_time.size(), err, fmax > 0 ? err / fmax : 0.0, fmax));
   PetscFunctionReturn(0);
 }
 

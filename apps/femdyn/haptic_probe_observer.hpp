@@ -18,8 +18,9 @@ class HapticProbeObserver final : public suite::StepObserver {
 public:
   // Finds the probe node (nearest to -probe_point; collective error if it is fixed) and wraps the elastic
   // model in the probe's penalty system. state: the Newmark state the loop advances; record: the output.
-  static PetscErrorCode create(const suite::RunContext& ctx, const Options& opt, const suite::fem::TetMesh& mesh,
-                               suite::fem::ElasticModel* model, suite::fem::LinearSolver* solver, bool partial,
+  static PetscErrorCode create(const suite::RunContext& ctx, const Options& opt,
+                               const suite::fem::TetMesh& mesh, suite::fem::ElasticModel* model,
+                               suite::fem::LinearSolver* solver, bool partial,
                                const suite::fem::NewmarkState& state, ProbeRecord* record,
                                std::unique_ptr<HapticProbeObserver>* out);
   // The system the integrator steps: elasticity plus the probe's penalty force.

@@ -20,7 +20,8 @@ struct Entry {
 };
 const Entry kOrderings[] = {
     {"natural", orderNatural, "the given node order (no permutation)"},
-    {"cm", orderCuthillMcKee, "Cuthill-McKee from a pseudo-peripheral node (natural if its profile is smaller)"},
+    {"cm", orderCuthillMcKee,
+     "Cuthill-McKee from a pseudo-peripheral node (natural if its profile is smaller)"},
     {"rcm", orderReverseCuthillMcKee, "reverse Cuthill-McKee: bandwidth/profile reducing (same guard)"},
     {"amd", orderAmd, "approximate minimum degree (SuiteSparse AMD): fill reducing"},
     {"metis", orderMetis, "nested dissection (METIS_NodeND): fill reducing"},

@@ -76,12 +76,18 @@ def main():
         run("-steps", 30, "-snapshot_every", 10, "-checkpoint_dir", p("c1"), "-checkpoint_every", 7,
             "-checkpoint_keep", 5, "-output", p("a.h5"), "-quiet")
         have = ckpt_steps(p("c1"))
-        check(have == [7, 14, 21, 28], f"checkpoints at steps {have} (every 7, keep 5)")
+        # The time loop's rule: a final checkpoint at the end when none was written at the last step.
+        check(have == [7, 14, 21, 28, 30], f"checkpoints at steps {have} (every 7, keep 5, and the final step)")
         check(same(state(p("a.h5")), ref), "a checkpointing run equals the plain run bitwise")
         run("-steps", 30, "-snapshot_every", 10, "-restart", p("c1/femdyn_0000000014.h5"), "-output", p("r14.h5"),
             "-quiet")
         check(same(state(p("r14.h5")), ref), f"restart from step 14 at {NP} rank(s): final u, histories and "
               "snapshots equal the uninterrupted run bitwise")
+        run("-steps", 30, "-snapshot_every", 10, "-checkpoint_dir", p("c1"), "-restart", "latest", "-output",
+            p("rl30.h5"), "-quiet")
+        check(same(state(p("rl30.h5")), ref), "restart from latest (the final step 30, no step left) equals the "
+              "uninterrupted run bitwise")
+        os.remove(p("c1/femdyn_0000000030.h5"))
         run("-steps", 30, "-snapshot_every", 10, "-checkpoint_dir", p("c1"), "-restart", "latest", "-output",
             p("rl.h5"), "-quiet")
         check(same(state(p("rl.h5")), ref), "restart from latest (step 28) equals the uninterrupted run bitwise")
