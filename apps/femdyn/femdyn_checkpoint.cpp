@@ -50,7 +50,7 @@ void packTables(const Results& res, Tables* t) {
     std::copy(res.snapshots[i].second.begin(), res.snapshots[i].second.end(),
               t->snaps.begin() + i * (t->ndof + 1) + 1);
   }
-  const ProbeRecord& pr = res.probe;
+  const suite::fem::HapticProbeRecord& pr = res.probe;
   t->nps = pr.sync_time.size(), t->nph = pr.haptic_time.size();
   t->psync.resize(4 * t->nps), t->phap.resize(2 * t->nph);
   for (ull i = 0; i < t->nps; ++i)
@@ -62,7 +62,7 @@ void packTables(const Results& res, Tables* t) {
 
 // Back into the run's history (every rank, after the broadcast).
 void unpackTables(const Tables& t, Results* res) {
-  ProbeRecord& pr = res->probe;
+  suite::fem::HapticProbeRecord& pr = res->probe;
   pr.sync_time.clear(), pr.force_full.clear(), pr.force_predicted.clear(), pr.compliance_yy.clear();
   pr.haptic_time.clear(), pr.haptic_force.clear();
   for (ull i = 0; i < t.nps; ++i) {

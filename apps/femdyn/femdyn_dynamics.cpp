@@ -6,26 +6,24 @@
 #include "core/log_stages.hpp"
 #include "fem/cpu_timer.hpp"
 
-#include <petsctime.h>
-
 namespace femdyn_app {
 
 using namespace suite::fem;
-
-namespace {
-double now() {
-  PetscLogDouble t;
-  PetscTime(&t);
-  return t;
-}
-} // namespace
 
 PetscErrorCode FemdynDynamics::setup() {
   FemdynRun& r = run_;
   PetscFunctionBeginUser;
   SecondOrderSystem* sys = &r.model_;
   if (r.opt_.probe) {
-    PetscCall(HapticProbeObserver::create(r.ctx_, r.opt_, r.mesh_, &r.model_, r.solver_.get(), r.partial_, s_,
+    const Options& o = r.opt_;
+    HapticProbeSettings set{{o.probe_point[0], o.probe_point[1], o.probe_point[2]},
+                            o.probe_stiffness,
+                            o.probe_speed,
+                            o.probe_depth,
+                            o.haptic_rate,
+                            o.dt,
+                            o.dirichlet};
+    PetscCall(HapticProbeObserver::create(r.ctx_, set, r.mesh_, &r.model_, r.solver_.get(), r.partial_, s_,
                                           &r.res_.probe, &probe_));
     sys = probe_->system();
   }
@@ -58,9 +56,9 @@ PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double, double* dt) {
 PetscErrorCode FemdynDynamics::advance(PetscInt, double, double dt, suite::StepOutcome* out) {
   StepTimings tm;
   PetscFunctionBeginUser;
-  const double ts = now(), tc = threadCpuSeconds();
+  const double ts = wallSeconds(), tc = threadCpuSeconds();
   PetscCall(nm_.step(&s_, dt, &tm));
-  const double dt_wall = now() - ts, dt_cpu = threadCpuSeconds() - tc;
+  const double dt_wall = wallSeconds() - ts, dt_cpu = threadCpuSeconds() - tc;
   stepping_ += dt_wall;
   stepping_cpu_ += dt_cpu;
   if (!tm.converged && run_.opt_.newmark.newton_max_it > 1) ++unconverged_;

@@ -1,12 +1,11 @@
 // femdyn's side of the suite's time loop (suite::TimeStepped): the Newmark / generalized-alpha integrator with
 // Newton on the elastic model (plus the haptic probe's penalty when -probe), a fixed -dt, one step record
 // (timings, energies, tip deflection) per step, snapshots, checkpoints (femdyn_checkpoint.cpp) and the final
-// summary lines and output. The haptic probe itself is an observer of the loop (haptic_probe_observer.hpp).
+// summary lines and output. The haptic probe itself is an observer of the loop (fem/haptic_probe.hpp).
 #pragma once
 
 #include "core/time_loop.hpp"
 #include "femdyn_run.hpp"
-#include "haptic_probe_observer.hpp"
 #include "io/checkpoint.hpp"
 
 #include <memory>
@@ -19,7 +18,7 @@ public:
   explicit FemdynDynamics(FemdynRun& run) : run_(run) {}
   // The probe (if any), the mass matrix and the integrator; before the loop (a restart needs them).
   PetscErrorCode setup();
-  HapticProbeObserver* probe() { return probe_.get(); }
+  suite::fem::HapticProbeObserver* probe() { return probe_.get(); }
 
   PetscErrorCode start(PetscInt step, double t, bool restarted) override;
   PetscErrorCode proposeDt(PetscInt step, double t, double* dt) override;
@@ -42,7 +41,7 @@ private:
   FemdynRun& run_;
   suite::fem::Newmark nm_;
   suite::fem::NewmarkState s_;
-  std::unique_ptr<HapticProbeObserver> probe_;
+  std::unique_ptr<suite::fem::HapticProbeObserver> probe_;
   double stepping_ = 0, stepping_cpu_ = 0; // wall and CPU seconds in the steps of this run
   int unconverged_ = 0;
 };

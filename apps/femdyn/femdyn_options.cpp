@@ -1,6 +1,6 @@
 // femdyn options: one function per group (model, time integration, Newton, haptic probe), named choices
-// documented by -help from their registries (-material, -ordering, -solver in lib/fem) or from the short
-// lists below, then the cross-option checks. Every check is collective (PetscCheck on the run's communicator).
+// documented by -help from their registries in lib/fem (-material, -ordering, -solver, the integrator's
+// -time_scheme, -jacobian, -newton_predictor, -mass), then the cross-option checks. Every check is collective (PetscCheck on the run's communicator).
 #include "core/named_choice.hpp"
 #include "fem/material.hpp"
 #include "femdyn_run.hpp"
@@ -10,16 +10,6 @@ namespace femdyn_app {
 namespace {
 const std::vector<suite::Choice> kMeshes = {{"beam", "structured beam of hexahedra, 6 tets each"},
                                             {"file", "Gmsh or TetGen mesh given by -mesh_file"}};
-const std::vector<suite::Choice> kTimeSchemes = {
-    {"newmark", "Newmark (-newmark_beta, -newmark_gamma)"},
-    {"generalized_alpha", "generalized-alpha (-rho_inf: high-frequency damping)"}};
-const std::vector<suite::Choice> kJacobians = {{"tangent", "full Newton: the current tangent"},
-                                               {"initial", "K0: factorised once per dt"}};
-const std::vector<suite::Choice> kPredictors = {
-    {"constant", "Newmark predictor, a_{n+1} = a_n"},
-    {"tangent", "plus one correction with the last step's factorised effective tangent (full Newton only)"}};
-const std::vector<suite::Choice> kMasses = {{"consistent", "consistent mass matrix"},
-                                            {"lumped", "lumped mass (HRZ)"}};
 
 // A string option without a fixed set of values.
 PetscErrorCode optionsString(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
@@ -74,8 +64,8 @@ PetscErrorCode FemdynRun::readTimeOptions(PetscOptionItems* PetscOptionsObject) 
                             nullptr));
   PetscCall(PetscOptionsReal("-dt", "Time step", "", opt_.dt, &opt_.dt, nullptr));
   PetscCall(PetscOptionsInt("-steps", "Number of time steps", "", opt_.steps, &opt_.steps, nullptr));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-time_scheme", "Time integrator", kTimeSchemes,
-                                 &opt_.time_scheme));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-time_scheme", "Time integrator",
+                                 suite::fem::timeSchemeChoices(), &opt_.time_scheme));
   PetscCall(PetscOptionsReal("-rho_inf", "Generalized-alpha spectral radius at infinite omega dt, in [0, 1]",
                              "", opt_.rho_inf, &opt_.rho_inf, nullptr));
   PetscCall(PetscOptionsReal("-newmark_beta", "Newmark beta", "", nm.beta, &nm.beta, nullptr));
@@ -92,11 +82,12 @@ PetscErrorCode FemdynRun::readNewtonOptions(PetscOptionItems* PetscOptionsObject
                              &nm.newton_rtol, nullptr));
   PetscCall(PetscOptionsReal("-newton_atol", "Newton absolute residual tolerance", "", nm.newton_atol,
                              &nm.newton_atol, nullptr));
-  PetscCall(
-      suite::optionsChoice(PetscOptionsObject, "-jacobian", "Newton matrix", kJacobians, &opt_.jacobian));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-newton_predictor", "Newton start", kPredictors,
-                                 &opt_.predictor));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-mass", "Mass matrix", kMasses, &opt_.mass));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-jacobian", "Newton matrix",
+                                 suite::fem::jacobianChoices(), &opt_.jacobian));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-newton_predictor", "Newton start",
+                                 suite::fem::predictorChoices(), &opt_.predictor));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-mass", "Mass matrix", suite::fem::massChoices(),
+                                 &opt_.mass));
   PetscCall(PetscOptionsReal("-rayleigh_alpha", "Rayleigh damping C = alpha M + beta K0: alpha", "",
                              nm.rayleigh_mass, &nm.rayleigh_mass, nullptr));
   PetscCall(PetscOptionsReal("-rayleigh_beta", "Rayleigh damping: beta", "", nm.rayleigh_stiffness,

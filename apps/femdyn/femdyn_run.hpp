@@ -5,6 +5,7 @@
 
 #include "core/run_context.hpp"
 #include "fem/assembly.hpp"
+#include "fem/haptic_probe.hpp"
 #include "fem/linear_solver.hpp"
 #include "fem/newmark.hpp"
 #include "fem/ordering.hpp"
@@ -41,16 +42,8 @@ struct StepRecord {
   int newton, rejected, converged;
 };
 
-struct ProbeRecord { // haptic probe output
-  int node = -1;
-  std::vector<double> sync_time, force_full, force_predicted, compliance_yy; // per FEM step (sync point)
-  std::vector<double> haptic_time, haptic_force;                             // per haptic tick
-  double tick_seconds = 0, compliance_seconds = 0;                           // CPU totals
-  long long ticks = 0;
-};
-
 struct Results {
-  ProbeRecord probe;
+  suite::fem::HapticProbeRecord probe;
   double ordering_time = 0, setup_time = 0, loop_time = 0;
   suite::fem::OrderingMetrics metrics;
   suite::fem::FactorStats factor;

@@ -8,47 +8,12 @@
 #include "femdyn_run.hpp"
 #include "io/h5_output.hpp"
 
-#include <petsctime.h>
-
 #include <algorithm>
 #include <cstring>
 
 namespace femdyn_app {
 
 using namespace suite::fem;
-
-namespace {
-double now() {
-  PetscLogDouble t;
-  PetscTime(&t);
-  return t;
-}
-
-// "x=0" -> axis 0, value 0; "none" -> axis -1.
-PetscErrorCode parsePlane(MPI_Comm comm, const std::string& s, int* axis, double* value) {
-  PetscFunctionBeginUser;
-  *axis = -1;
-  if (s == "none") PetscFunctionReturn(0);
-  PetscCheck(s.size() >= 3 && (s[0] == 'x' || s[0] == 'y' || s[0] == 'z') && s[1] == '=', comm,
-             PETSC_ERR_ARG_WRONG, "-dirichlet %s: expected a plane such as x=0 (or none)", s.c_str());
-  char* end = nullptr;
-  *value = std::strtod(s.c_str() + 2, &end);
-  PetscCheck(end && *end == '\0', comm, PETSC_ERR_ARG_WRONG, "-dirichlet %s: bad coordinate", s.c_str());
-  *axis = s[0] - 'x';
-  PetscFunctionReturn(0);
-}
-
-// Area of the boundary faces (triangles of corner nodes).
-double faceArea(const TetMesh& mesh, const std::vector<std::vector<int>>& faces) {
-  double area = 0;
-  for (const auto& f : faces) {
-    const auto &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
-    const Eigen::Vector3d u(b[0] - a[0], b[1] - a[1], b[2] - a[2]), w(c[0] - a[0], c[1] - a[1], c[2] - a[2]);
-    area += 0.5 * u.cross(w).norm();
-  }
-  return area;
-}
-} // namespace
 
 PetscErrorCode FemdynRun::buildMesh() {
   MPI_Comm comm = ctx_.comm();
@@ -60,17 +25,8 @@ PetscErrorCode FemdynRun::buildMesh() {
     s.cells = {(int)opt_.beam_cells[0], (int)opt_.beam_cells[1], (int)opt_.beam_cells[2]};
     mesh_ = makeBeam(s);
   } else {
-    const std::string& f = opt_.mesh_file;
-    PetscCheck(!f.empty(), comm, PETSC_ERR_ARG_WRONG, "-mesh file needs -mesh_file");
-    if (f.size() > 4 && f.substr(f.size() - 4) == ".msh") {
-      PetscCall(readGmsh(comm, f, &mesh_));
-    } else {
-      std::string base = f;
-      for (const char* ext : {".node", ".ele"})
-        if (base.size() > 5 && base.substr(base.size() - std::strlen(ext)) == ext)
-          base.resize(base.size() - std::strlen(ext));
-      PetscCall(readTetGen(comm, base, &mesh_));
-    }
+    PetscCheck(!opt_.mesh_file.empty(), comm, PETSC_ERR_ARG_WRONG, "-mesh file needs -mesh_file");
+    PetscCall(readMeshFile(comm, opt_.mesh_file, &mesh_));
   }
   if (opt_.order == 2 && mesh_.order() == 1) mesh_ = promoteToP2(mesh_);
   if (opt_.poisson > 0.45 && mesh_.order() == 1)
@@ -85,14 +41,9 @@ PetscErrorCode FemdynRun::buildMesh() {
 // All DOFs of the nodes on the -dirichlet plane fixed; the elastic model on the free DOFs.
 PetscErrorCode FemdynRun::clampAndSetupModel() {
   MPI_Comm comm = ctx_.comm();
-  int axis;
-  double value;
+  std::vector<char> fixed;
   PetscFunctionBeginUser;
-  PetscCall(parsePlane(comm, opt_.dirichlet, &axis, &value));
-  std::vector<char> fixed(3 * mesh_.numNodes(), 0);
-  if (axis >= 0)
-    for (int v : nodesOnPlane(mesh_, axis, value))
-      for (int c = 0; c < 3; ++c) fixed[3 * v + c] = 1;
+  PetscCall(clampPlane(comm, "-dirichlet", opt_.dirichlet, mesh_, &fixed));
   int nfixed = 0;
   for (char f : fixed) nfixed += f;
   PetscCheck(
@@ -112,7 +63,7 @@ PetscErrorCode FemdynRun::buildLoads() {
   f_ext_.assign(model_.numFree(), 0.0);
   if (opt_.tip_load != 0) {
     const auto faces = facesOnPlane(mesh_, 0, xmax);
-    const double area = faceArea(mesh_, faces);
+    const double area = facesArea(mesh_, faces);
     PetscCheck(area > 0, ctx_.comm(), PETSC_ERR_ARG_WRONG,
                "-tip_load: no boundary face on the end plane x = %g", xmax);
     f_ext_ = model_.tractionLoad(faces, {0.0, -opt_.tip_load / area, 0.0});
@@ -155,14 +106,14 @@ PetscErrorCode FemdynRun::setup() {
   Lame lame;
   PetscFunctionBeginUser;
   PetscCall(suite::checkOutputWritable(comm, opt_.output, "output"));
-  const double t0 = now();
+  const double t0 = wallSeconds();
   PetscCall(lameFromYoung(comm, opt_.young, opt_.poisson, &lame));
   PetscCall(createMaterial(comm, opt_.material, lame, &material_));
   PetscCall(buildMesh());
   PetscCall(clampAndSetupModel());
   PetscCall(buildLoads());
   PetscCall(orderAndAnalyze());
-  res_.setup_time = now() - t0;
+  res_.setup_time = wallSeconds() - t0;
   PetscCall(suite::logInfo(comm, ctx_.quiet(),
                            "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
                            "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",

@@ -1,6 +1,6 @@
-// The haptic probe observer (see haptic_probe_observer.hpp): probe node, target height, the synchronisation
+// The haptic probe observer (see haptic_probe.hpp): probe node, target height, the synchronisation
 // after each FEM step (full-model force, compliance solves, local-model haptic ticks) and its summary line.
-#include "haptic_probe_observer.hpp"
+#include "fem/haptic_probe.hpp"
 
 #include "core/log.hpp"
 #include "fem/cpu_timer.hpp"
@@ -9,16 +9,14 @@
 #include <array>
 #include <cmath>
 
-namespace femdyn_app {
-
-using namespace suite::fem;
+namespace suite::fem {
 
 namespace {
 // The node nearest to -probe_point (default: top of the free end, middle of z); it must not be fixed in y.
-PetscErrorCode findProbeNode(MPI_Comm comm, const Options& opt, const TetMesh& mesh,
+PetscErrorCode findProbeNode(MPI_Comm comm, const HapticProbeSettings& opt, const TetMesh& mesh,
                              const ElasticModel& model, int* node) {
   PetscFunctionBeginUser;
-  std::array<double, 3> p = {opt.probe_point[0], opt.probe_point[1], opt.probe_point[2]};
+  std::array<double, 3> p = {opt.point[0], opt.point[1], opt.point[2]};
   if (p[0] > 1e299) { // default: top of the free end, middle of z
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (const auto& x : mesh.nodes)
@@ -39,9 +37,9 @@ PetscErrorCode findProbeNode(MPI_Comm comm, const Options& opt, const TetMesh& m
 }
 } // namespace
 
-PetscErrorCode HapticProbeObserver::create(const suite::RunContext& ctx, const Options& opt,
+PetscErrorCode HapticProbeObserver::create(const RunContext& ctx, const HapticProbeSettings& opt,
                                            const TetMesh& mesh, ElasticModel* model, LinearSolver* solver,
-                                           bool partial, const NewmarkState& state, ProbeRecord* record,
+                                           bool partial, const NewmarkState& state, HapticProbeRecord* record,
                                            std::unique_ptr<HapticProbeObserver>* out) {
   PetscFunctionBeginUser;
   PetscCall(findProbeNode(ctx.comm(), opt, mesh, *model, &record->node));
@@ -49,14 +47,14 @@ PetscErrorCode HapticProbeObserver::create(const suite::RunContext& ctx, const O
   HapticProbeObserver& o = **out;
   for (int c = 0; c < 3; ++c) o.dofs_[c] = model->eq()[3 * record->node + c];
   // Distributed assembly: only rank 0 adds the penalty to the partial sums.
-  o.probe_ = std::make_unique<ProbeSystem>(model, o.dofs_[1], mesh.nodes[record->node][1],
-                                           opt.probe_stiffness, !partial || ctx.rank() == 0);
+  o.probe_ = std::make_unique<ProbeSystem>(model, o.dofs_[1], mesh.nodes[record->node][1], opt.stiffness,
+                                           !partial || ctx.rank() == 0);
   PetscFunctionReturn(0);
 }
 
 double HapticProbeObserver::height(double t) const {
   // Relative to the node's initial height: down at -probe_speed until -probe_depth, then it holds.
-  return mesh_.nodes[rec_->node][1] + -std::min(opt_.probe_speed * t, opt_.probe_depth);
+  return mesh_.nodes[rec_->node][1] + -std::min(set_.speed * t, set_.depth);
 }
 
 PetscErrorCode HapticProbeObserver::beforeStep(PetscInt, double t, double dt) {
@@ -84,12 +82,12 @@ PetscErrorCode HapticProbeObserver::complianceYY(double* c_yy) const {
 
 // The haptic ticks at -haptic_rate up to the next synchronisation time (at least one per FEM step).
 double HapticProbeObserver::hapticTicks(const HapticLocalModel& hm) {
-  const double h = 1.0 / opt_.haptic_rate;
-  const int m = std::max(1, (int)std::lround(opt_.dt / h));
+  const double h = 1.0 / set_.haptic_rate;
+  const int m = std::max(1, (int)std::lround(set_.dt / h));
   const double tt0 = threadCpuSeconds();
   double fh = 0;
   for (int j = 1; j <= m; ++j) {
-    const double t = s_.t + j * (opt_.dt / m);
+    const double t = s_.t + j * (set_.dt / m);
     fh = hm.force(t, height(t));
     rec_->haptic_time.push_back(t);
     rec_->haptic_force.push_back(fh);
@@ -113,13 +111,13 @@ PetscErrorCode HapticProbeObserver::afterStep(PetscInt, double, double) {
   rec_->compliance_yy.push_back(c_yy);
   HapticLocalModel hm;
   hm.t = s_.t, hm.y = probe_->position(s_.u.data()), hm.v = s_.v[dofs_[1]], hm.f = f_full, hm.c = c_yy;
-  hm.k = opt_.probe_stiffness;
+  hm.k = set_.stiffness;
   rec_->force_predicted.push_back(hapticTicks(hm)); // the local model's force at the next synchronisation
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode HapticProbeObserver::logSummary() const {
-  const ProbeRecord& pr = *rec_;
+  const HapticProbeRecord& pr = *rec_;
   PetscFunctionBeginUser;
   if (pr.sync_time.size() <= 1) PetscFunctionReturn(0);
   double err = 0, fmax = 0;
@@ -127,15 +125,15 @@ PetscErrorCode HapticProbeObserver::logSummary() const {
     err = std::max(err, std::abs(pr.force_predicted[i - 1] - pr.force_full[i]));
     fmax = std::max(fmax, std::abs(pr.force_full[i]));
   }
-  PetscCall(suite::logInfo(
-      ctx_.comm(), ctx_.quiet(),
-      "femdyn probe: node %d, final force %.6g; haptic %lld ticks at %.0f Hz (model rate "
-      "%.3g Hz cpu, %.3f ms/step for the compliance solves); local model vs full model at "
-      "the synchronisations: max |df| %.3e (%.3e of max force %.4g)",
-      pr.node, pr.force_full.back(), pr.ticks, opt_.haptic_rate,
-      pr.tick_seconds > 0 ? pr.ticks / pr.tick_seconds : 0.0,
-      1e3 * pr.compliance_seconds / pr.sync_time.size(), err, fmax > 0 ? err / fmax : 0.0, fmax));
+  PetscCall(logInfo(ctx_.comm(), ctx_.quiet(),
+                    "femdyn probe: node %d, final force %.6g; haptic %lld ticks at %.0f Hz (model rate "
+                    "%.3g Hz cpu, %.3f ms/step for the compliance solves); local model vs full model at "
+                    "the synchronisations: max |df| %.3e (%.3e of max force %.4g)",
+                    pr.node, pr.force_full.back(), pr.ticks, set_.haptic_rate,
+                    pr.tick_seconds > 0 ? pr.ticks / pr.tick_seconds : 0.0,
+                    1e3 * pr.compliance_seconds / pr.sync_time.size(), err, fmax > 0 ? err / fmax : 0.0,
+                    fmax));
   PetscFunctionReturn(0);
 }
 
-} // namespace femdyn_app
+} // namespace suite::fem
