@@ -1,18 +1,24 @@
-// The femdyn run: options, mesh and model setup (Dirichlet plane, loads, ordering, solver), the static solve
-// or the Newmark time loop with per-step timings and energies, and the HDF5/XDMF output.
+// The femdyn run: options (femdyn_options.cpp), mesh and model setup (femdyn_setup.cpp), the static solve or
+// the Newmark dynamics on the suite's time loop (femdyn_dynamics.*, the haptic probe as an observer in
+// haptic_probe_observer.*), checkpoints (femdyn_checkpoint.cpp) and the HDF5/XDMF output (femdyn_output.cpp).
 #pragma once
 
 #include "core/run_context.hpp"
 #include "fem/assembly.hpp"
+#include "fem/haptic_probe.hpp"
 #include "fem/linear_solver.hpp"
 #include "fem/newmark.hpp"
 #include "fem/ordering.hpp"
-#include "io/checkpoint.hpp"
 #include "io/checkpoint_policy.hpp"
+#include "io/xdmf.hpp"
 
 #include <memory>
 #include <string>
 #include <vector>
+
+namespace suite {
+class H5Output;
+} // namespace suite
 
 namespace femdyn_app {
 
@@ -36,16 +42,8 @@ struct StepRecord {
   int newton, rejected, converged;
 };
 
-struct ProbeRecord { // haptic probe output
-  int node = -1;
-  std::vector<double> sync_time, force_full, force_predicted, compliance_yy; // per FEM step (sync point)
-  std::vector<double> haptic_time, haptic_force;                             // per haptic tick
-  double tick_seconds = 0, compliance_seconds = 0;                           // CPU totals
-  long long ticks = 0;
-};
-
 struct Results {
-  ProbeRecord probe;
+  suite::fem::HapticProbeRecord probe;
   double ordering_time = 0, setup_time = 0, loop_time = 0;
   suite::fem::OrderingMetrics metrics;
   suite::fem::FactorStats factor;
@@ -61,22 +59,38 @@ public:
   explicit FemdynRun(const suite::RunContext& ctx) : ctx_(ctx) {}
   PetscErrorCode readOptions();
   PetscErrorCode setup();
+  // The static solve or the time loop, then the output (written by the loop's final write).
   PetscErrorCode solve();
-  PetscErrorCode writeOutput() const;
 
 private:
+  friend class FemdynDynamics; // the time-stepped side of the run (femdyn_dynamics.hpp)
+  // Options (femdyn_options.cpp), one group each; the first four run inside the options block.
+  PetscErrorCode readModelOptions(PetscOptionItems* PetscOptionsObject);
+  PetscErrorCode readTimeOptions(PetscOptionItems* PetscOptionsObject);
+  PetscErrorCode readNewtonOptions(PetscOptionItems* PetscOptionsObject);
+  PetscErrorCode readProbeOptions(PetscOptionItems* PetscOptionsObject);
+  PetscErrorCode checkProbeOptions() const;
+  PetscErrorCode checkOptions() const;
+  // Setup (femdyn_setup.cpp).
+  PetscErrorCode buildMesh();
+  PetscErrorCode clampAndSetupModel();
+  PetscErrorCode buildLoads();
+  PetscErrorCode orderAndAnalyze();
+  // Solves (femdyn_run.cpp).
   PetscErrorCode solveStaticCase();
   PetscErrorCode solveDynamic();
   std::vector<double> fullDisplacement(const std::vector<double>& free) const;
-  // Checkpoint/restart (femdyn_checkpoint.cpp): the Newmark state u, v, a at the end of `step`, the time,
-  // and the step history and snapshots so far (a restarted run writes the same output as an uninterrupted
-  // one). The state is replicated: rank 0 writes it, every rank reads it (broadcast).
-  suite::CheckpointHeader checkpointHeader() const;
-  PetscErrorCode writeCheckpointAt(const suite::fem::NewmarkState& s, long long step);
-  PetscErrorCode readRestart(suite::fem::NewmarkState* s, long long* step);
   double tipDeflection(const std::vector<double>& u_full) const;
-  double probeTarget(double t) const; // probe tip height y_d(t)
-  PetscErrorCode findProbeNode(int* node) const;
+  // Output (femdyn_output.cpp): writeOutputStage runs writeOutput in the output log stage.
+  PetscErrorCode writeOutputStage() const;
+  PetscErrorCode writeOutput() const;
+  PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
+  PetscErrorCode writeOrdering(suite::H5Output& out) const;
+  PetscErrorCode writeMesh(suite::H5Output& out) const;
+  PetscErrorCode writeStatic(suite::H5Output& out) const;
+  PetscErrorCode writeSteps(suite::H5Output& out) const;
+  PetscErrorCode writeProbe(suite::H5Output& out) const;
+  PetscErrorCode writeSnapshots(suite::H5Output& out, std::vector<suite::XdmfTetStep>* xsteps) const;
 
   const suite::RunContext& ctx_;
   Options opt_;

@@ -2,6 +2,8 @@
 // times, because on a shared, loaded machine the wall clock measures the neighbours as much as the code.
 #pragma once
 
+#include <petsctime.h>
+
 #include <ctime>
 
 namespace suite::fem {
@@ -9,5 +11,11 @@ inline double threadCpuSeconds() {
   timespec ts;
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+// Wall-clock seconds (PetscTime), for the wall timings reported next to the CPU ones.
+inline double wallSeconds() {
+  PetscLogDouble t;
+  PetscTime(&t);
+  return t;
 }
 } // namespace suite::fem

@@ -1,4 +1,4 @@
-// Linear solver registry: a new solver is one file plus one line in kSolvers.
+// Linear solver registry: a new solver is one file plus one line in kSolvers (name, factory, one-line help).
 #include "fem/linear_solver.hpp"
 
 namespace suite::fem {
@@ -6,11 +6,13 @@ namespace {
 struct Entry {
   const char* name;
   std::unique_ptr<LinearSolver> (*make)();
+  const char* help;
 };
-const Entry kSolvers[] = {{"skyline", makeSkylineSolver},
-                          {"banded", makeBandedSolver},
-                          {"cholmod", makeCholmodSolver},
-                          {"petsc", makePetscSolver}};
+const Entry kSolvers[] = {
+    {"skyline", makeSkylineSolver, "envelope (skyline) Cholesky"},
+    {"banded", makeBandedSolver, "banded Cholesky (LAPACK dpbtrf)"},
+    {"cholmod", makeCholmodSolver, "supernodal Cholesky (CHOLMOD)"},
+    {"petsc", makePetscSolver, "distributed MPIAIJ matrix + KSP (-ksp_type, -pc_type)"}};
 } // namespace
 
 std::vector<std::string> solverNames() {
@@ -19,16 +21,19 @@ std::vector<std::string> solverNames() {
   return n;
 }
 
+std::vector<suite::Choice> solverChoices() {
+  std::vector<suite::Choice> c;
+  for (const auto& e : kSolvers) c.push_back({e.name, e.help});
+  return c;
+}
+
 PetscErrorCode createLinearSolver(MPI_Comm comm, const std::string& name,
                                   std::unique_ptr<LinearSolver>* out) {
   PetscFunctionBeginUser;
+  PetscCall(suite::checkChoice(comm, "-solver", name, solverChoices()));
   for (const auto& e : kSolvers)
-    if (name == e.name) {
-      *out = e.make();
-      PetscFunctionReturn(0);
-    }
-  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -solver %s (valid: skyline|banded|cholmod|petsc)",
-          name.c_str());
+    if (name == e.name) *out = e.make();
+  PetscFunctionReturn(0);
 }
 
 } // namespace suite::fem

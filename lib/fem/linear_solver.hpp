@@ -3,6 +3,7 @@
 // (LAPACK), cholmod, petsc (distributed).
 #pragma once
 
+#include "core/named_choice.hpp"
 #include "fem/sparse.hpp"
 
 #include <petscsys.h>
@@ -49,6 +50,7 @@ std::unique_ptr<LinearSolver> makeCholmodSolver();
 std::unique_ptr<LinearSolver> makeBandedSolver(); // LAPACK dpbtrf on the band of the ordering
 std::unique_ptr<LinearSolver> makePetscSolver();  // MPIAIJ on a METIS node partition, KSP (MUMPS or CG+GAMG)
 std::vector<std::string> solverNames();
+std::vector<suite::Choice> solverChoices(); // with each solver's one-line help (-help lists them)
 PetscErrorCode createLinearSolver(MPI_Comm comm, const std::string& name, std::unique_ptr<LinearSolver>* out);
 
 } // namespace suite::fem

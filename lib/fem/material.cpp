@@ -74,11 +74,12 @@ namespace {
 struct Entry {
   const char* name;
   std::unique_ptr<Material> (*make)(Lame);
+  const char* help; // one line, printed by -help under -material
 };
 const Entry kMaterials[] = {
-    {"linear", makeLinearMaterial},
-    {"stvk", makeStVenantKirchhoff},
-    {"corotational", makeCorotational},
+    {"linear", makeLinearMaterial, "small-strain linear elasticity (constant tangent)"},
+    {"stvk", makeStVenantKirchhoff, "St. Venant-Kirchhoff: Green-Lagrange strain, large rotations"},
+    {"corotational", makeCorotational, "corotational linear elasticity (polar rotation per element)"},
 };
 } // namespace
 
@@ -88,17 +89,19 @@ std::vector<std::string> materialNames() {
   return n;
 }
 
+std::vector<suite::Choice> materialChoices() {
+  std::vector<suite::Choice> c;
+  for (const auto& e : kMaterials) c.push_back({e.name, e.help});
+  return c;
+}
+
 PetscErrorCode createMaterial(MPI_Comm comm, const std::string& name, Lame l,
                               std::unique_ptr<Material>* out) {
   PetscFunctionBeginUser;
+  PetscCall(suite::checkChoice(comm, "-material", name, materialChoices()));
   for (const auto& e : kMaterials)
-    if (name == e.name) {
-      *out = e.make(l);
-      PetscFunctionReturn(0);
-    }
-  std::string all;
-  for (const auto& e : kMaterials) all += std::string(all.empty() ? "" : "|") + e.name;
-  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -material %s (valid: %s)", name.c_str(), all.c_str());
+    if (name == e.name) *out = e.make(l);
+  PetscFunctionReturn(0);
 }
 
 } // namespace suite::fem

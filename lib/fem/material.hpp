@@ -2,6 +2,8 @@
 // A = dP/dF) and the registry of materials by name (one file each: linear, stvk, corotational).
 #pragma once
 
+#include "core/named_choice.hpp"
+
 #include <petscsys.h>
 
 #include <Eigen/Dense>
@@ -52,6 +54,7 @@ std::unique_ptr<Material> makeCorotational(Lame l);
 
 // Registry: names and factory. Errors with the list of valid names on an unknown name.
 std::vector<std::string> materialNames();
+std::vector<suite::Choice> materialChoices(); // with each material's one-line help (-help lists them)
 PetscErrorCode createMaterial(MPI_Comm comm, const std::string& name, Lame l, std::unique_ptr<Material>* out);
 
 // Closed-form element tangent of StVK-like laws: K_ab(i,k) = d_ik g_a.S g_b + lambda (F g_a)_i (F g_b)_k

@@ -3,8 +3,11 @@
 // graph.
 #include "fem/mesh.hpp"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -151,6 +154,31 @@ void nodeGraph(const TetMesh& mesh, std::vector<int>* xadj, std::vector<int>* ad
     adj->insert(adj->end(), nb[i].begin(), nb[i].end());
     (*xadj)[i + 1] = static_cast<int>(adj->size());
   }
+}
+
+double facesArea(const TetMesh& mesh, const std::vector<std::vector<int>>& faces) {
+  double area = 0;
+  for (const auto& f : faces) {
+    const auto &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
+    const Eigen::Vector3d u(b[0] - a[0], b[1] - a[1], b[2] - a[2]), w(c[0] - a[0], c[1] - a[1], c[2] - a[2]);
+    area += 0.5 * u.cross(w).norm();
+  }
+  return area;
+}
+
+PetscErrorCode clampPlane(MPI_Comm comm, const char* option, const std::string& s, const TetMesh& mesh,
+                          std::vector<char>* fixed) {
+  PetscFunctionBeginUser;
+  fixed->assign(3 * mesh.numNodes(), 0);
+  if (s == "none") PetscFunctionReturn(0);
+  PetscCheck(s.size() >= 3 && (s[0] == 'x' || s[0] == 'y' || s[0] == 'z') && s[1] == '=', comm,
+             PETSC_ERR_ARG_WRONG, "%s %s: expected a plane such as x=0 (or none)", option, s.c_str());
+  char* end = nullptr;
+  const double value = std::strtod(s.c_str() + 2, &end);
+  PetscCheck(end && *end == '\0', comm, PETSC_ERR_ARG_WRONG, "%s %s: bad coordinate", option, s.c_str());
+  for (int v : nodesOnPlane(mesh, s[0] - 'x', value))
+    for (int c = 0; c < 3; ++c) (*fixed)[3 * v + c] = 1;
+  PetscFunctionReturn(0);
 }
 
 } // namespace suite::fem

@@ -46,6 +46,12 @@ std::vector<int> nodesOnPlane(const TetMesh& mesh, int axis, double value, doubl
 // Boundary faces (corner node triples, plus the 3 edge nodes for P2: 0,1,2, 01,12,02) whose nodes lie on the
 // plane.
 std::vector<std::vector<int>> facesOnPlane(const TetMesh& mesh, int axis, double value, double tol = 1e-9);
+// Area of boundary faces (of their corner triangles).
+double facesArea(const TetMesh& mesh, const std::vector<std::vector<int>>& faces);
+// A clamped plane "x=0" / "y=1.5" / "z=-2" or "none" (option `option`): fixed[3 v + c] = 1 for every DOF c of
+// the nodes on it (fixed: 3 per node). Collective error on a malformed plane.
+PetscErrorCode clampPlane(MPI_Comm comm, const char* option, const std::string& plane, const TetMesh& mesh,
+                          std::vector<char>* fixed);
 // Node adjacency graph (CSR, no self loops, sorted): nodes sharing an element.
 void nodeGraph(const TetMesh& mesh, std::vector<int>* xadj, std::vector<int>* adj);
 
@@ -53,5 +59,7 @@ void nodeGraph(const TetMesh& mesh, std::vector<int>* xadj, std::vector<int>* ad
 PetscErrorCode readTetGen(MPI_Comm comm, const std::string& basename,
                           TetMesh* mesh);                                       // <base>.node + <base>.ele
 PetscErrorCode readGmsh(MPI_Comm comm, const std::string& path, TetMesh* mesh); // .msh 2.2 ASCII / 4.1 ASCII
+// By name: *.msh is Gmsh, otherwise a TetGen basename (a trailing .node or .ele is dropped).
+PetscErrorCode readMeshFile(MPI_Comm comm, const std::string& path, TetMesh* mesh);
 
 } // namespace suite::fem

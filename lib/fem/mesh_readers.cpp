@@ -4,6 +4,7 @@
 #include "fem/mesh.hpp"
 #include "fem/mesh_parse.hpp"
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -50,6 +51,20 @@ PetscErrorCode readGmsh(MPI_Comm comm, const std::string& path, TetMesh* mesh) {
   }
   PetscCheck(error.empty(), comm, PETSC_ERR_FILE_UNEXPECTED, "Mesh %s", error.c_str());
   PetscCall(checkMesh(comm, *mesh, path.c_str()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readMeshFile(MPI_Comm comm, const std::string& f, TetMesh* mesh) {
+  PetscFunctionBeginUser;
+  if (f.size() > 4 && f.substr(f.size() - 4) == ".msh") {
+    PetscCall(readGmsh(comm, f, mesh));
+  } else {
+    std::string base = f;
+    for (const char* ext : {".node", ".ele"})
+      if (base.size() > 5 && base.substr(base.size() - std::strlen(ext)) == ext)
+        base.resize(base.size() - std::strlen(ext));
+    PetscCall(readTetGen(comm, base, mesh));
+  }
   PetscFunctionReturn(0);
 }
 

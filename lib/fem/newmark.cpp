@@ -402,4 +402,23 @@ PetscErrorCode solveStatic(MPI_Comm comm, SecondOrderSystem* sys, LinearSolver* 
   PetscFunctionReturn(0);
 }
 
+std::vector<suite::Choice> timeSchemeChoices() {
+  return {{"newmark", "Newmark (-newmark_beta, -newmark_gamma)"},
+          {"generalized_alpha", "generalized-alpha (-rho_inf: high-frequency damping)"}};
+}
+
+std::vector<suite::Choice> jacobianChoices() {
+  return {{"tangent", "full Newton: the current tangent"}, {"initial", "K0: factorised once per dt"}};
+}
+
+std::vector<suite::Choice> predictorChoices() {
+  return {{"constant", "Newmark predictor, a_{n+1} = a_n"},
+          {"tangent",
+           "plus one correction with the last step's factorised effective tangent (full Newton only)"}};
+}
+
+std::vector<suite::Choice> massChoices() {
+  return {{"consistent", "consistent mass matrix"}, {"lumped", "lumped mass (HRZ)"}};
+}
+
 } // namespace suite::fem

@@ -5,6 +5,7 @@
 // beta K0, and step rejection with dt halving when an element inverts (det F <= 0) or Newton fails.
 #pragma once
 
+#include "core/named_choice.hpp"
 #include "fem/linear_solver.hpp"
 #include "fem/second_order_system.hpp"
 
@@ -38,6 +39,13 @@ struct NewmarkParams {
 // alpha_f = rho/(rho + 1), gamma = 1/2 - alpha_m + alpha_f, beta = (1 - alpha_m + alpha_f)^2 / 4 for the
 // spectral radius rho = rho_inf in [0, 1] at omega dt -> infinity (second order, unconditionally stable).
 NewmarkParams generalizedAlpha(NewmarkParams p, double rho_inf);
+
+// The named choices of the integrator's options, each with its one-line help (for suite::optionsChoice):
+// -time_scheme, -jacobian, -newton_predictor and -mass.
+std::vector<suite::Choice> timeSchemeChoices();
+std::vector<suite::Choice> jacobianChoices();
+std::vector<suite::Choice> predictorChoices();
+std::vector<suite::Choice> massChoices();
 
 struct StepTimings { // CPU seconds of the calling thread (fem/cpu_timer.hpp)
   double assemble = 0, factor = 0, solve = 0;

@@ -1,4 +1,5 @@
-// Ordering registry: a new ordering is one file plus one line in kOrderings.
+// Ordering registry: a new ordering is one file plus one line in kOrderings (name, function, the one-line help
+// that -help prints under -ordering).
 #include "fem/ordering.hpp"
 
 #include <numeric>
@@ -15,10 +16,16 @@ namespace {
 struct Entry {
   const char* name;
   OrderingFn fn;
+  const char* help;
 };
 const Entry kOrderings[] = {
-    {"natural", orderNatural}, {"cm", orderCuthillMcKee}, {"rcm", orderReverseCuthillMcKee},
-    {"amd", orderAmd},         {"metis", orderMetis},     {"auto", orderAuto},
+    {"natural", orderNatural, "the given node order (no permutation)"},
+    {"cm", orderCuthillMcKee,
+     "Cuthill-McKee from a pseudo-peripheral node (natural if its profile is smaller)"},
+    {"rcm", orderReverseCuthillMcKee, "reverse Cuthill-McKee: bandwidth/profile reducing (same guard)"},
+    {"amd", orderAmd, "approximate minimum degree (SuiteSparse AMD): fill reducing"},
+    {"metis", orderMetis, "nested dissection (METIS_NodeND): fill reducing"},
+    {"auto", orderAuto, "the one of rcm, amd and metis with the smallest symbolic nnz(L)"},
 };
 } // namespace
 
@@ -28,15 +35,18 @@ std::vector<std::string> orderingNames() {
   return n;
 }
 
+std::vector<suite::Choice> orderingChoices() {
+  std::vector<suite::Choice> c;
+  for (const auto& e : kOrderings) c.push_back({e.name, e.help});
+  return c;
+}
+
 PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* fn) {
   PetscFunctionBeginUser;
+  PetscCall(suite::checkChoice(comm, "-ordering", name, orderingChoices()));
   for (const auto& e : kOrderings)
-    if (name == e.name) {
-      *fn = e.fn;
-      PetscFunctionReturn(0);
-    }
-  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -ordering %s (valid: natural|cm|rcm|amd|metis|auto)",
-          name.c_str());
+    if (name == e.name) *fn = e.fn;
+  PetscFunctionReturn(0);
 }
 
 } // namespace suite::fem

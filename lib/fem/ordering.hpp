@@ -3,6 +3,7 @@
 // nnz(L)).
 #pragma once
 
+#include "core/named_choice.hpp"
 #include "fem/sparse.hpp"
 
 #include <petscsys.h>
@@ -26,6 +27,9 @@ std::vector<int> orderAuto(const Graph& g); // the one of rcm/amd/metis with the
 int pseudoPeripheralNode(const Graph& g, int root, const std::vector<char>& mask);
 
 std::vector<std::string> orderingNames(); // natural cm rcm amd metis auto
+// The registry with each ordering's one-line help (for suite::optionsChoice: -help lists them).
+std::vector<suite::Choice> orderingChoices();
+// Collective error naming the known orderings on an unknown name.
 PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* fn);
 
 } // namespace suite::fem

@@ -76,14 +76,21 @@ def main():
         run("-steps", 30, "-snapshot_every", 10, "-checkpoint_dir", p("c1"), "-checkpoint_every", 7,
             "-checkpoint_keep", 5, "-output", p("a.h5"), "-quiet")
         have = ckpt_steps(p("c1"))
-        check(have == [7, 14, 21, 28], f"checkpoints at steps {have} (every 7, keep 5)")
+        # The time loop's rule: a final checkpoint at the end when none was written at the last step.
+        check(have == [7, 14, 21, 28, 30], f"checkpoints at steps {have} (every 7, keep 5, and the final step)")
         check(same(state(p("a.h5")), ref), "a checkpointing run equals the plain run bitwise")
         run("-steps", 30, "-snapshot_every", 10, "-restart", p("c1/femdyn_0000000014.h5"), "-output", p("r14.h5"),
             "-quiet")
         check(same(state(p("r14.h5")), ref), f"restart from step 14 at {NP} rank(s): final u, histories and "
               "snapshots equal the uninterrupted run bitwise")
         run("-steps", 30, "-snapshot_every", 10, "-checkpoint_dir", p("c1"), "-restart", "latest", "-output",
-            p("rl.h5"), "-quiet")
+            p("rl30.h5"), "-quiet")
+        check(same(state(p("rl30.h5")), ref), "restart from latest (the final step 30, no step left) equals the "
+              "uninterrupted run bitwise")
+        os.remove(p("c1/femdyn_0000000030.h5"))
+        # This run writes the final checkpoint (step 30) again: keep 5 so that step 21 stays for the next check.
+        run("-steps", 30, "-snapshot_every", 10, "-checkpoint_dir", p("c1"), "-checkpoint_keep", 5, "-restart",
+            "latest", "-output", p("rl.h5"), "-quiet")
         check(same(state(p("rl.h5")), ref), "restart from latest (step 28) equals the uninterrupted run bitwise")
         # The restarted state at the other rank count (the FEM state is replicated: also bitwise).
         other = 2 if NP == 1 else 1
@@ -128,7 +135,9 @@ def main():
         # Haptic probe: the probe force histories (full model, local model, 1 kHz output) survive a restart.
         probe = ["-probe", "-probe_stiffness", 100, "-steps", 20]
         run(*probe, "-output", p("pref.h5"), "-quiet")
-        run(*probe, "-checkpoint_dir", p("cp"), "-checkpoint_every", 8, "-output", p("pa.h5"), "-quiet")
+        # Checkpoints at steps 8, 16 and the final step 20: keep 3 so that step 8 stays.
+        run(*probe, "-checkpoint_dir", p("cp"), "-checkpoint_every", 8, "-checkpoint_keep", 3, "-output", p("pa.h5"),
+            "-quiet")
         run(*probe, "-checkpoint_dir", p("cp"), "-restart", p("cp/femdyn_0000000008.h5"), "-output", p("pr.h5"),
             "-quiet")
 
@@ -148,7 +157,8 @@ def main():
             label = "probe run" if extra else "run"
             run(*tp, "-output", p("tref.h5"), "-quiet")
             cdir = p("ct_probe" if extra else "ct")
-            run(*tp, "-checkpoint_dir", cdir, "-checkpoint_every", 8, "-output", p("ta.h5"), "-quiet")
+            run(*tp, "-checkpoint_dir", cdir, "-checkpoint_every", 8, "-checkpoint_keep", 3, "-output", p("ta.h5"),
+                "-quiet")
             run(*tp, "-restart", os.path.join(cdir, "femdyn_0000000008.h5"), "-output", p("tr.h5"), "-quiet")
             ref_t = state(p("tref.h5"))
             with h5py.File(os.path.join(cdir, "femdyn_0000000008.h5"), "r") as f:

@@ -1,0 +1,124 @@
+// femdyn's time-stepped side (see femdyn_dynamics.hpp): integrator setup, the start of a fresh run, one
+// Newmark step with its timings and step record, snapshots, the summary line and the final output.
+#include "femdyn_dynamics.hpp"
+
+#include "core/log.hpp"
+#include "core/log_stages.hpp"
+#include "fem/cpu_timer.hpp"
+
+namespace femdyn_app {
+
+using namespace suite::fem;
+
+PetscErrorCode FemdynDynamics::setup() {
+  FemdynRun& r = run_;
+  PetscFunctionBeginUser;
+  SecondOrderSystem* sys = &r.model_;
+  if (r.opt_.probe) {
+    const Options& o = r.opt_;
+    HapticProbeSettings set{{o.probe_point[0], o.probe_point[1], o.probe_point[2]},
+                            o.probe_stiffness,
+                            o.probe_speed,
+                            o.probe_depth,
+                            o.haptic_rate,
+                            o.dt,
+                            o.dirichlet};
+    PetscCall(HapticProbeObserver::create(r.ctx_, set, r.mesh_, &r.model_, r.solver_.get(), r.partial_, s_,
+                                          &r.res_.probe, &probe_));
+    sys = probe_->system();
+  }
+  const double rho = r.opt_.density;
+  auto mass = r.opt_.mass == "lumped" ? r.model_.lumpedMass(rho) : r.model_.consistentMass(rho);
+  const std::vector<double>& fe = r.f_ext_;
+  PetscCall(nm_.setup(r.ctx_.comm(), sys, r.solver_.get(), std::move(mass), r.opt_.newmark,
+                      [&fe](double, double* f) { std::copy(fe.begin(), fe.end(), f); }));
+  s_.u.assign(r.model_.numFree(), 0.0);
+  s_.v.assign(r.model_.numFree(), 0.0);
+  PetscFunctionReturn(0);
+}
+
+// A fresh run: the initial acceleration and the record of step 0 (a restart has its history already).
+PetscErrorCode FemdynDynamics::start(PetscInt, double, bool restarted) {
+  PetscFunctionBeginUser;
+  if (restarted) PetscFunctionReturn(0);
+  PetscCall(nm_.initialize(&s_));
+  record(StepTimings(), 0.0, 0.0);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double, double* dt) {
+  PetscFunctionBeginUser;
+  *dt = run_.opt_.dt;
+  PetscFunctionReturn(0);
+}
+
+// One step (Newton with its own dt halvings; a step that cannot converge is an error of the job).
+PetscErrorCode FemdynDynamics::advance(PetscInt, double, double dt, suite::StepOutcome* out) {
+  StepTimings tm;
+  PetscFunctionBeginUser;
+  const double ts = wallSeconds(), tc = threadCpuSeconds();
+  PetscCall(nm_.step(&s_, dt, &tm));
+  const double dt_wall = wallSeconds() - ts, dt_cpu = threadCpuSeconds() - tc;
+  stepping_ += dt_wall;
+  stepping_cpu_ += dt_cpu;
+  if (!tm.converged && run_.opt_.newmark.newton_max_it > 1) ++unconverged_;
+  record(tm, dt_wall, dt_cpu);
+  out->status = suite::StepStatus::Done;
+  out->t_new = s_.t;
+  PetscFunctionReturn(0);
+}
+
+void FemdynDynamics::record(const StepTimings& tm, double total, double cpu) {
+  StepRecord r{};
+  r.time = s_.t;
+  r.assemble = tm.assemble, r.factor = tm.factor, r.solve = tm.solve, r.total = total, r.cpu = cpu;
+  r.kinetic = nm_.kineticEnergy(s_);
+  r.strain = nm_.strainEnergy(s_);
+  double w = 0;
+  for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
+  r.external = w;
+  r.newton = tm.newton_iterations, r.rejected = tm.rejected, r.converged = tm.converged ? 1 : 0;
+  r.tip_uy = run_.tipDeflection(run_.fullDisplacement(s_.u));
+  run_.res_.steps.push_back(r);
+}
+
+PetscErrorCode FemdynDynamics::writeSnapshot(PetscInt, double) {
+  PetscFunctionBeginUser;
+  run_.res_.snapshots.push_back({s_.t, run_.fullDisplacement(s_.u)});
+  PetscFunctionReturn(0);
+}
+
+// Rates over the steps of this run (a restarted run continues a history that it did not time).
+PetscErrorCode FemdynDynamics::logSummary(const suite::LoopSummary& summary) const {
+  const std::vector<StepRecord>& steps = run_.res_.steps;
+  const int n = (int)summary.stepsTaken();
+  double as = 0, fa = 0, so = 0;
+  int newton = 0;
+  PetscFunctionBeginUser;
+  for (size_t i = 1 + summary.first_step; i < steps.size(); ++i)
+    as += steps[i].assemble, fa += steps[i].factor, so += steps[i].solve, newton += steps[i].newton;
+  const auto& e0 = steps.front();
+  const auto& e1 = steps.back();
+  const double E0 = e0.kinetic + e0.strain - e0.external, E1 = e1.kinetic + e1.strain - e1.external;
+  PetscCall(suite::logInfo(
+      run_.ctx_.comm(), run_.ctx_.quiet(),
+      "femdyn: %d steps, %.2f Newton iterations/step, %.1f Hz cpu (%.3f ms/step: assemble %.3f, "
+      "factor %.3f, solve %.3f; wall %.1f Hz), tip -u_y %.6f, energy %.6e -> %.6e%s",
+      n, n ? (double)newton / n : 0.0, n && stepping_cpu_ > 0 ? n / stepping_cpu_ : 0.0,
+      n ? 1e3 * stepping_cpu_ / n : 0.0, n ? 1e3 * as / n : 0.0, n ? 1e3 * fa / n : 0.0,
+      n ? 1e3 * so / n : 0.0, n && stepping_ > 0 ? n / stepping_ : 0.0, e1.tip_uy, E0, E1,
+      unconverged_ ? " (some steps did not converge: see /steps/converged)" : ""));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
+  PetscFunctionBeginUser;
+  run_.res_.loop_time = summary.wall;
+  run_.res_.u_full = run_.fullDisplacement(s_.u);
+  PetscCall(logSummary(summary));
+  if (probe_) PetscCall(probe_->logSummary());
+  PetscCall(run_.writeOutputStage());
+  PetscFunctionReturn(0);
+}
+
+} // namespace femdyn_app

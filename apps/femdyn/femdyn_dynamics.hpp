@@ -1,0 +1,49 @@
+// femdyn's side of the suite's time loop (suite::TimeStepped): the Newmark / generalized-alpha integrator with
+// Newton on the elastic model (plus the haptic probe's penalty when -probe), a fixed -dt, one step record
+// (timings, energies, tip deflection) per step, snapshots, checkpoints (femdyn_checkpoint.cpp) and the final
+// summary lines and output. The haptic probe itself is an observer of the loop (fem/haptic_probe.hpp).
+#pragma once
+
+#include "core/time_loop.hpp"
+#include "femdyn_run.hpp"
+#include "io/checkpoint.hpp"
+
+#include <memory>
+#include <string>
+
+namespace femdyn_app {
+
+class FemdynDynamics final : public suite::TimeStepped {
+public:
+  explicit FemdynDynamics(FemdynRun& run) : run_(run) {}
+  // The probe (if any), the mass matrix and the integrator; before the loop (a restart needs them).
+  PetscErrorCode setup();
+  suite::fem::HapticProbeObserver* probe() { return probe_.get(); }
+
+  PetscErrorCode start(PetscInt step, double t, bool restarted) override;
+  PetscErrorCode proposeDt(PetscInt step, double t, double* dt) override;
+  PetscErrorCode advance(PetscInt step, double t, double dt, suite::StepOutcome* out) override;
+  PetscErrorCode saveState(const std::string& path, PetscInt step, double t) override;
+  PetscErrorCode loadState(const std::string& path, PetscInt* step, double* t) override;
+  PetscErrorCode writeSnapshot(PetscInt step, double t) override;
+  PetscErrorCode writeFinal(const suite::LoopSummary& summary) override;
+
+private:
+  void record(const suite::fem::StepTimings& tm, double total, double cpu);
+  PetscErrorCode logSummary(const suite::LoopSummary& summary) const;
+  // Checkpoints (femdyn_checkpoint.cpp): the Newmark state u, v, a (and the tangent predictor's point) at the
+  // end of a step, and the step history, snapshots and probe history so far (a restarted run writes the same
+  // output as an uninterrupted one). The state is replicated: rank 0 writes it, every rank reads it.
+  suite::CheckpointHeader checkpointHeader() const;
+  PetscErrorCode checkRestart(const std::string& path, const suite::CheckpointHeader& found,
+                              unsigned long long records) const;
+
+  FemdynRun& run_;
+  suite::fem::Newmark nm_;
+  suite::fem::NewmarkState s_;
+  std::unique_ptr<suite::fem::HapticProbeObserver> probe_;
+  double stepping_ = 0, stepping_cpu_ = 0; // wall and CPU seconds in the steps of this run
+  int unconverged_ = 0;
+};
+
+} // namespace femdyn_app

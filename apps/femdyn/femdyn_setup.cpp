@@ -1,0 +1,127 @@
+// femdyn setup: material, mesh (structured beam or Gmsh/TetGen file, P2 promotion), the clamped Dirichlet
+// plane and the elastic model, the loads (tip traction, gravity), the fill-reducing ordering and the solver's
+// symbolic analysis (with -solver petsc at several ranks: each rank assembles the elements it owns).
+#include "core/log.hpp"
+#include "fem/cpu_timer.hpp"
+#include "fem/material.hpp"
+#include "fem/mesh.hpp"
+#include "femdyn_run.hpp"
+#include "io/h5_output.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace femdyn_app {
+
+using namespace suite::fem;
+
+PetscErrorCode FemdynRun::buildMesh() {
+  MPI_Comm comm = ctx_.comm();
+  PetscFunctionBeginUser;
+  if (opt_.mesh == "beam") {
+    BeamSpec s;
+    s.length = opt_.beam_length;
+    s.size = {opt_.beam_size[0], opt_.beam_size[1]};
+    s.cells = {(int)opt_.beam_cells[0], (int)opt_.beam_cells[1], (int)opt_.beam_cells[2]};
+    mesh_ = makeBeam(s);
+  } else {
+    PetscCheck(!opt_.mesh_file.empty(), comm, PETSC_ERR_ARG_WRONG, "-mesh file needs -mesh_file");
+    PetscCall(readMeshFile(comm, opt_.mesh_file, &mesh_));
+  }
+  if (opt_.order == 2 && mesh_.order() == 1) mesh_ = promoteToP2(mesh_);
+  if (opt_.poisson > 0.45 && mesh_.order() == 1)
+    PetscCall(suite::logInfo(
+        comm, false,
+        "femdyn: warning: -poisson %g with P1 tetrahedra: volumetric locking makes the response "
+        "far too stiff (use -order 2)",
+        opt_.poisson));
+  PetscFunctionReturn(0);
+}
+
+// All DOFs of the nodes on the -dirichlet plane fixed; the elastic model on the free DOFs.
+PetscErrorCode FemdynRun::clampAndSetupModel() {
+  MPI_Comm comm = ctx_.comm();
+  std::vector<char> fixed;
+  PetscFunctionBeginUser;
+  PetscCall(clampPlane(comm, "-dirichlet", opt_.dirichlet, mesh_, &fixed));
+  int nfixed = 0;
+  for (char f : fixed) nfixed += f;
+  PetscCheck(
+      !opt_.is_static || nfixed > 0, comm, PETSC_ERR_ARG_WRONG,
+      "Dirichlet set -dirichlet %s is empty (no mesh node on that plane): the static problem is singular",
+      opt_.dirichlet.c_str());
+  PetscCall(model_.setup(comm, mesh_, *material_, fixed));
+  PetscFunctionReturn(0);
+}
+
+// Tip traction (total -tip_load along -y on the end face x = max) and gravity.
+PetscErrorCode FemdynRun::buildLoads() {
+  PetscFunctionBeginUser;
+  double xmax = -1e300;
+  for (const auto& x : mesh_.nodes) xmax = std::max(xmax, x[0]);
+  tip_nodes_ = nodesOnPlane(mesh_, 0, xmax);
+  f_ext_.assign(model_.numFree(), 0.0);
+  if (opt_.tip_load != 0) {
+    const auto faces = facesOnPlane(mesh_, 0, xmax);
+    const double area = facesArea(mesh_, faces);
+    PetscCheck(area > 0, ctx_.comm(), PETSC_ERR_ARG_WRONG,
+               "-tip_load: no boundary face on the end plane x = %g", xmax);
+    f_ext_ = model_.tractionLoad(faces, {0.0, -opt_.tip_load / area, 0.0});
+  }
+  if (opt_.gravity[0] != 0 || opt_.gravity[1] != 0 || opt_.gravity[2] != 0) {
+    const auto g = model_.bodyForce(
+        {opt_.density * opt_.gravity[0], opt_.density * opt_.gravity[1], opt_.density * opt_.gravity[2]});
+    for (size_t i = 0; i < g.size(); ++i) f_ext_[i] += g[i];
+  }
+  PetscFunctionReturn(0);
+}
+
+// Ordering on the node graph, expanded to the free DOFs; metrics on the DOF matrix; the solver's analysis.
+PetscErrorCode FemdynRun::orderAndAnalyze() {
+  MPI_Comm comm = ctx_.comm();
+  OrderingFn order_fn;
+  PetscFunctionBeginUser;
+  PetscCall(findOrdering(comm, opt_.ordering, &order_fn));
+  const double to = threadCpuSeconds();
+  perm_ = expandToDofs(order_fn(model_.nodeGraphOf()), model_.eq(), model_.numFree());
+  res_.ordering_time = threadCpuSeconds() - to;
+  res_.metrics = computeMetrics(graphOfMatrix(model_.pattern()), perm_);
+  solver_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
+  PetscCall(solver_->analyze(comm, model_.pattern(), perm_));
+  if (solver_->distributedAssembly()) {
+    // Each rank assembles the elements whose first corner node it owns (the solver's METIS node partition).
+    const auto& part = solver_->nodePartition();
+    std::vector<char> owned(mesh_.numElems(), 0);
+    for (int e = 0; e < mesh_.numElems(); ++e) owned[e] = part[mesh_.elem(e)[0]] == ctx_.rank();
+    model_.setOwnedElements(std::move(owned));
+    partial_ = true;
+    opt_.newmark.partial_sums = true;
+  }
+  res_.factor = solver_->stats();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FemdynRun::setup() {
+  MPI_Comm comm = ctx_.comm();
+  Lame lame;
+  PetscFunctionBeginUser;
+  PetscCall(suite::checkOutputWritable(comm, opt_.output, "output"));
+  const double t0 = wallSeconds();
+  PetscCall(lameFromYoung(comm, opt_.young, opt_.poisson, &lame));
+  PetscCall(createMaterial(comm, opt_.material, lame, &material_));
+  PetscCall(buildMesh());
+  PetscCall(clampAndSetupModel());
+  PetscCall(buildLoads());
+  PetscCall(orderAndAnalyze());
+  res_.setup_time = wallSeconds() - t0;
+  PetscCall(suite::logInfo(comm, ctx_.quiet(),
+                           "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
+                           "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",
+                           mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
+                           material_->name(), opt_.ordering.c_str(), 1e3 * res_.ordering_time,
+                           res_.metrics.bandwidth, res_.metrics.profile, res_.metrics.nnz_L,
+                           res_.metrics.flops, solver_->describe().c_str()));
+  PetscFunctionReturn(0);
+}
+
+} // namespace femdyn_app
