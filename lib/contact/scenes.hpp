@@ -10,6 +10,7 @@
 #pragma once
 
 #include "contact/body.hpp"
+#include "core/named_choice.hpp"
 
 #include <string>
 #include <vector>
@@ -36,6 +37,8 @@ struct SceneParams {
 };
 
 std::vector<std::string> sceneNames();
+// The registered scenes with their one-line descriptions (the -scene choices, scenes.cpp's registry).
+std::vector<Choice> sceneChoices();
 // Throws SceneError with a one-line message for bad parameters or an unknown scene.
 std::vector<Body> buildScene(const SceneParams& p);
 std::vector<Body> readSceneFile(const std::string& path);
