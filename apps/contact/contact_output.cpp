@@ -84,29 +84,14 @@ void writeXdmf(const std::string& xmf, const std::string& h5, size_t nb, size_t 
 }
 } // namespace
 
-PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path,
-                                  const std::vector<Body>& bodies, const Recorder& rec,
-                                  const OutputInfo& info) {
-  PetscFunctionBeginUser;
+namespace {
+PetscErrorCode writeBodies(H5Output& out, const std::vector<Body>& bodies) {
   using U = unsigned long long;
-  const U nb = bodies.size(), nf = rec.frame_time.size(), ns = rec.time.size();
-  H5Output out;
-  PetscCall(out.open(ctx.comm(), path));
-  PetscCall(out.writeProvenance(ctx));
-  PetscCall(out.writeAttribute("/", "scene", info.scene));
-  PetscCall(out.writeAttribute("/", "friction", info.friction));
-  PetscCall(out.writeAttribute("/", "lcp_solver", info.lcp_solver));
-  PetscCall(out.writeAttribute("/", "dt", info.dt));
-  PetscCall(out.writeAttribute("/", "mu", info.mu));
-  PetscCall(out.writeAttribute("/", "theta", info.theta));
-  PetscCall(out.writeAttribute("/", "steps_requested", info.steps_requested));
-  PetscCall(out.writeAttribute("/", "steps", info.steps_done));
-  PetscCall(out.writeAttribute("/", "status", info.status));
-  PetscCall(out.writeAttribute("/", "simplifications", info.simplifications));
-  // bodies
+  const U nb = bodies.size();
   std::vector<int> type(nb), is_static(nb);
   std::vector<double> dims(nb * 4), mass(nb);
   std::string names;
+  PetscFunctionBeginUser;
   for (U i = 0; i < nb; ++i) {
     const Body& b = bodies[i];
     type[i] = (int)b.shape.type;
@@ -126,7 +111,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   }
   PetscCall(out.writeAttribute("/bodies", "names", names));
   PetscCall(out.writeAttribute("/bodies", "types", "0 plane, 1 sphere, 2 box, 3 capsule, 4 cylinder"));
-  // frames
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeFrames(H5Output& out, unsigned long long nb, const Recorder& rec) {
+  const unsigned long long nf = rec.frame_time.size();
+  PetscFunctionBeginUser;
   if (nf) {
     PetscCall(out.writeReplicated("/frames/time", rec.frame_time.data(), {nf}, "s"));
     PetscCall(out.writeReplicated("/frames/step", rec.frame_step.data(), {nf}, ""));
@@ -136,7 +126,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   }
   PetscCall(out.writeAttribute("/frames", "orientations", "unit quaternions w, x, y, z (body to world)"));
   PetscCall(out.writeAttribute("/frames", "velocities", "vx, vy, vz (m/s), wx, wy, wz (rad/s), world frame"));
-  // per step
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
+  const unsigned long long ns = rec.time.size();
+  PetscFunctionBeginUser;
   if (ns) {
     PetscCall(out.writeReplicated("/steps/time", rec.time.data(), {ns}, "s"));
     PetscCall(out.writeReplicated("/steps/contacts", rec.contacts.data(), {ns}, ""));
@@ -159,7 +154,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   PetscCall(out.writeAttribute("/steps", "solver_names", sn));
   PetscCall(out.writeAttribute("/steps", "force_ratio",
                                "sum over body pairs |sum tangential impulse| / sum normal"));
-  const U nh = rec.split_errors.size();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeSplitting(H5Output& out, const Recorder& rec) {
+  const unsigned long long nh = rec.split_errors.size(), ns = rec.time.size();
+  PetscFunctionBeginUser;
   if (nh) {
     PetscCall(out.writeReplicated("/splitting/error", rec.split_errors.data(), {nh}, "N s"));
     PetscCall(out.writeReplicated("/splitting/force_ratio", rec.split_ratios.data(), {nh}, ""));
@@ -168,8 +168,34 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
                                  "pass k of step s at offset[s] + k; error = max|delta lambda_n| "
                                  "(pass 1: max lambda_n)"));
   }
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path,
+                                  const std::vector<Body>& bodies, const Recorder& rec,
+                                  const OutputInfo& info) {
+  H5Output out;
+  PetscFunctionBeginUser;
+  PetscCall(out.open(ctx.comm(), path));
+  PetscCall(out.writeProvenance(ctx));
+  PetscCall(out.writeAttribute("/", "scene", info.scene));
+  PetscCall(out.writeAttribute("/", "friction", info.friction));
+  PetscCall(out.writeAttribute("/", "lcp_solver", info.lcp_solver));
+  PetscCall(out.writeAttribute("/", "dt", info.dt));
+  PetscCall(out.writeAttribute("/", "mu", info.mu));
+  PetscCall(out.writeAttribute("/", "theta", info.theta));
+  PetscCall(out.writeAttribute("/", "steps_requested", info.steps_requested));
+  PetscCall(out.writeAttribute("/", "steps", info.steps_done));
+  PetscCall(out.writeAttribute("/", "status", info.status));
+  PetscCall(out.writeAttribute("/", "simplifications", info.simplifications));
+  PetscCall(writeBodies(out, bodies));
+  PetscCall(writeFrames(out, bodies.size(), rec));
+  PetscCall(writeSteps(out, rec));
+  PetscCall(writeSplitting(out, rec));
   PetscCall(out.commit(&ctx));
-  if (ctx.rank() == 0 && nf) writeXdmf(path + ".xmf", path, nb, nf, rec.frame_time);
+  if (ctx.rank() == 0 && !rec.frame_time.empty())
+    writeXdmf(path + ".xmf", path, bodies.size(), rec.frame_time.size(), rec.frame_time);
   PetscFunctionReturn(0);
 }
 

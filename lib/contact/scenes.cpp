@@ -227,15 +227,96 @@ std::vector<Body> readSceneFile(const std::string& path) {
   return parseScene(text, path);
 }
 
+namespace {
+// The keys of one body line, with their defaults.
+struct BodyLine {
+  Shape s;
+  std::string name;
+  Vec3 pos = Vec3::Zero(), normal = Vec3::UnitZ(), vel = Vec3::Zero(), omega = Vec3::Zero();
+  Quat q = Quat::Identity();
+  double density = 1000.0, mass = 0.0;
+  bool is_static = false;
+};
+
+double parseScalar(const std::string& where, const std::string& k, const std::string& v) {
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  require(end && *end == '\0' && !v.empty() && std::isfinite(d), where + ": bad number '" + v + "' for " + k);
+  return d;
+}
+
+// One key=value token (or "static") of a body line.
+void parseKey(const std::string& where, const std::string& tok, BodyLine* b) {
+  if (tok == "static") {
+    b->is_static = true;
+    return;
+  }
+  const auto eq = tok.find('=');
+  require(eq != std::string::npos, where + ": expected key=value, got '" + tok + "'");
+  const std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
+  double deg = 0.0;
+  if (k == "name")
+    b->name = v;
+  else if (k == "pos" || k == "point")
+    b->pos = parseVec(where, k, v, 3, nullptr);
+  else if (k == "normal")
+    b->normal = parseVec(where, k, v, 3, nullptr);
+  else if (k == "vel")
+    b->vel = parseVec(where, k, v, 3, nullptr);
+  else if (k == "omega")
+    b->omega = parseVec(where, k, v, 3, nullptr);
+  else if (k == "half")
+    b->s.half = parseVec(where, k, v, 3, nullptr);
+  else if (k == "axis_angle") {
+    const Vec3 ax = parseVec(where, k, v, 4, &deg);
+    require(ax.norm() > 0, where + ": axis_angle needs a non-zero axis");
+    b->q = Quat(Eigen::AngleAxisd(deg * kDeg, ax.normalized()));
+  } else if (k == "radius")
+    b->s.radius = parseScalar(where, k, v);
+  else if (k == "half_length")
+    b->s.half_length = parseScalar(where, k, v);
+  else if (k == "density")
+    b->density = parseScalar(where, k, v);
+  else if (k == "mass") {
+    b->mass = parseScalar(where, k, v);
+    require(b->mass > 0, where + ": body '" + b->name + "': mass " + v + ": must be > 0 and finite");
+  } else
+    throw SceneError(where + ": unknown key '" + k + "'");
+}
+
+// The body of a line "type key=value ...", default name type<index>; errors name `where`.
+Body parseBody(const std::string& where, const std::string& type, std::stringstream& ss, size_t index) {
+  BodyLine b;
+  try {
+    b.s.type = shapeFromName(type);
+  } catch (const SceneError& e) {
+    throw SceneError(where + ": " + e.what());
+  }
+  b.name = type + std::to_string(index);
+  b.is_static = b.s.type == ShapeType::Plane;
+  for (std::string tok; ss >> tok;) parseKey(where, tok, &b);
+  try {
+    if (b.s.type == ShapeType::Plane) {
+      require(b.normal.norm() > 0, "plane normal must be non-zero");
+      return makePlane(b.name, b.normal, b.pos);
+    }
+    Body body = makeBody(b.name, b.s, b.density, b.mass, b.pos, b.q, b.is_static);
+    body.v = b.vel;
+    body.w = b.omega;
+    return body;
+  } catch (const SceneError& e) {
+    throw SceneError(where + ": " + e.what());
+  }
+}
+} // namespace
+
 std::vector<Body> parseScene(const std::string& text, const std::string& path) {
   require(text.size() <= (size_t)kMaxSceneBytes,
           "scene file " + path + ": larger than " + std::to_string(kMaxSceneBytes) + " bytes");
   std::istringstream in(text);
   std::vector<Body> bodies;
   std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
+  for (int lineno = 1; std::getline(in, line); ++lineno) {
     require(bodies.size() < (size_t)kMaxSceneBodies, path + ":" + std::to_string(lineno) + ": more than " +
                                                          std::to_string(kMaxSceneBodies) + " bodies");
     const auto hash = line.find('#');
@@ -243,77 +324,7 @@ std::vector<Body> parseScene(const std::string& text, const std::string& path) {
     std::stringstream ss(line);
     std::string type;
     if (!(ss >> type)) continue;
-    const std::string where = path + ":" + std::to_string(lineno);
-    ShapeType t;
-    try {
-      t = shapeFromName(type);
-    } catch (const SceneError& e) {
-      throw SceneError(where + ": " + e.what());
-    }
-    Shape s;
-    s.type = t;
-    std::string name = type + std::to_string(bodies.size());
-    Vec3 pos = Vec3::Zero(), normal = Vec3::UnitZ(), vel = Vec3::Zero(), omega = Vec3::Zero();
-    Quat q = Quat::Identity();
-    double density = 1000.0, mass = 0.0;
-    bool is_static = t == ShapeType::Plane;
-    std::string tok;
-    while (ss >> tok) {
-      if (tok == "static") {
-        is_static = true;
-        continue;
-      }
-      const auto eq = tok.find('=');
-      require(eq != std::string::npos, where + ": expected key=value, got '" + tok + "'");
-      const std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
-      double deg = 0.0;
-      auto scalar = [&]() {
-        char* end = nullptr;
-        const double d = std::strtod(v.c_str(), &end);
-        require(end && *end == '\0' && !v.empty() && std::isfinite(d),
-                where + ": bad number '" + v + "' for " + k);
-        return d;
-      };
-      if (k == "name")
-        name = v;
-      else if (k == "pos" || k == "point")
-        pos = parseVec(where, k, v, 3, nullptr);
-      else if (k == "normal")
-        normal = parseVec(where, k, v, 3, nullptr);
-      else if (k == "vel")
-        vel = parseVec(where, k, v, 3, nullptr);
-      else if (k == "omega")
-        omega = parseVec(where, k, v, 3, nullptr);
-      else if (k == "half")
-        s.half = parseVec(where, k, v, 3, nullptr);
-      else if (k == "axis_angle") {
-        const Vec3 ax = parseVec(where, k, v, 4, &deg);
-        require(ax.norm() > 0, where + ": axis_angle needs a non-zero axis");
-        q = Quat(Eigen::AngleAxisd(deg * kDeg, ax.normalized()));
-      } else if (k == "radius")
-        s.radius = scalar();
-      else if (k == "half_length")
-        s.half_length = scalar();
-      else if (k == "density")
-        density = scalar();
-      else if (k == "mass") {
-        mass = scalar();
-        require(mass > 0, where + ": body '" + name + "': mass " + v + ": must be > 0 and finite");
-      } else
-        throw SceneError(where + ": unknown key '" + k + "'");
-    }
-    try {
-      if (t == ShapeType::Plane) {
-        require(normal.norm() > 0, "plane normal must be non-zero");
-        bodies.push_back(makePlane(name, normal, pos));
-      } else {
-        bodies.push_back(makeBody(name, s, density, mass, pos, q, is_static));
-        bodies.back().v = vel;
-        bodies.back().w = omega;
-      }
-    } catch (const SceneError& e) {
-      throw SceneError(where + ": " + e.what());
-    }
+    bodies.push_back(parseBody(path + ":" + std::to_string(lineno), type, ss, bodies.size()));
   }
   require(!bodies.empty(), "scene file " + path + ": no bodies");
   return bodies;
