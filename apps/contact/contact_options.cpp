@@ -28,141 +28,124 @@ std::string joinList(const std::vector<std::string>& v) {
   return s;
 }
 
-// An int option through PetscInt.
-PetscErrorCode optionInt(PetscOptionItems* PetscOptionsObject, const char* name, const char* text, int* v) {
-  PetscInt x = *v;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsInt(name, text, nullptr, x, &x, nullptr));
-  *v = (int)x;
-  PetscFunctionReturn(0);
-}
+// One-line option declarations inside the PetscOptionsBegin/End block (each documented by -help).
+struct Reader {
+  PetscOptionItems* po;
+  PetscErrorCode real(const char* name, const char* text, double* v) const {
+    return PetscOptionsReal_Private(po, name, text, nullptr, *v, v, nullptr);
+  }
+  template <class I> PetscErrorCode integer(const char* name, const char* text, I* v) const {
+    PetscInt x = (PetscInt)*v;
+    PetscFunctionBeginUser;
+    PetscCall(PetscOptionsInt_Private(po, name, text, nullptr, x, &x, nullptr, PETSC_MIN_INT, PETSC_MAX_INT));
+    *v = (I)x;
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode boolean(const char* name, const char* text, bool* v) const {
+    PetscBool x = *v ? PETSC_TRUE : PETSC_FALSE;
+    PetscFunctionBeginUser;
+    PetscCall(PetscOptionsBool_Private(po, name, text, nullptr, x, &x, nullptr));
+    *v = x;
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode string(const char* name, const char* text, std::string* v) const {
+    char buf[PETSC_MAX_PATH_LEN];
+    PetscFunctionBeginUser;
+    PetscCall(PetscStrncpy(buf, v->c_str(), sizeof buf));
+    PetscCall(PetscOptionsString_Private(po, name, text, nullptr, buf, buf, sizeof buf, nullptr));
+    *v = buf;
+    PetscFunctionReturn(0);
+  }
+};
 
-// A string option through a buffer.
-PetscErrorCode optionString(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
-                            std::string* v) {
-  char buf[PETSC_MAX_PATH_LEN];
+PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(buf, v->c_str(), sizeof buf));
-  PetscCall(PetscOptionsString(name, text, nullptr, buf, buf, sizeof buf, nullptr));
-  *v = buf;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode sceneOptions(PetscOptionItems* PetscOptionsObject, SceneParams* s) {
-  PetscFunctionBeginUser;
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-scene", "Scene", sceneChoices(), &s->scene));
-  PetscCall(optionString(PetscOptionsObject, "-scene_file",
-                         "Scene file for -scene file (format: lib/contact/scenes.hpp)", &s->file));
-  PetscCall(
-      PetscOptionsReal("-theta", "Incline angle (degrees)", nullptr, s->theta_deg, &s->theta_deg, nullptr));
-  PetscCall(PetscOptionsReal("-size", "Box edge / sphere diameter (m)", nullptr, s->size, &s->size, nullptr));
-  PetscCall(PetscOptionsReal("-density", "Density (kg/m^3)", nullptr, s->density, &s->density, nullptr));
-  PetscCall(PetscOptionsReal("-mass", "Mass of the incline/drop body (kg, 0: from density)", nullptr, s->mass,
-                             &s->mass, nullptr));
-  PetscCall(PetscOptionsReal("-v0", "Initial speed (incline: downhill, drop: along x)", nullptr, s->v0,
-                             &s->v0, nullptr));
-  PetscCall(PetscOptionsReal("-height", "Drop: initial gap (m)", nullptr, s->height, &s->height, nullptr));
-  PetscCall(PetscOptionsReal("-tilt", "Drop: initial rotation about x (degrees)", nullptr, s->tilt_deg,
-                             &s->tilt_deg, nullptr));
-  PetscCall(PetscOptionsReal("-spin", "Drop: initial angular velocity about y (rad/s)", nullptr, s->spin,
-                             &s->spin, nullptr));
-  PetscCall(
-      optionString(PetscOptionsObject, "-drop_body", "Drop: sphere, box, capsule, cylinder", &s->drop_body));
-  PetscCall(optionInt(PetscOptionsObject, "-stack_height", "box_stack: number of boxes", &s->stack_height));
-  PetscCall(
-      optionInt(PetscOptionsObject, "-pyramid_base", "pyramid: boxes in the bottom row", &s->pyramid_base));
-  PetscCall(optionInt(PetscOptionsObject, "-n_logs", "log_heap: number of logs", &s->n_logs));
-  PetscCall(PetscOptionsReal("-log_radius", "log_heap: log radius (m)", nullptr, s->log_radius,
-                             &s->log_radius, nullptr));
-  PetscCall(PetscOptionsReal("-log_length", "log_heap: log length (m)", nullptr, s->log_length,
-                             &s->log_length, nullptr));
-  PetscInt seed = (PetscInt)s->seed;
-  PetscCall(PetscOptionsInt("-seed", "log_heap: random seed", nullptr, seed, &seed, nullptr));
-  s->seed = (unsigned)seed;
+  PetscCall(suite::optionsChoice(r.po, "-scene", "Scene", sceneChoices(), &s->scene));
+  PetscCall(r.string("-scene_file", "Scene file for -scene file (format: lib/contact/scenes.hpp)", &s->file));
+  PetscCall(r.real("-theta", "Incline angle (degrees)", &s->theta_deg));
+  PetscCall(r.real("-size", "Box edge / sphere diameter (m)", &s->size));
+  PetscCall(r.real("-density", "Density (kg/m^3)", &s->density));
+  PetscCall(r.real("-mass", "Mass of the incline/drop body (kg, 0: from density)", &s->mass));
+  PetscCall(r.real("-v0", "Initial speed (incline: downhill, drop: along x)", &s->v0));
+  PetscCall(r.real("-height", "Drop: initial gap (m)", &s->height));
+  PetscCall(r.real("-tilt", "Drop: initial rotation about x (degrees)", &s->tilt_deg));
+  PetscCall(r.real("-spin", "Drop: initial angular velocity about y (rad/s)", &s->spin));
+  PetscCall(r.string("-drop_body", "Drop: sphere, box, capsule, cylinder", &s->drop_body));
+  PetscCall(r.integer("-stack_height", "box_stack: number of boxes", &s->stack_height));
+  PetscCall(r.integer("-pyramid_base", "pyramid: boxes in the bottom row", &s->pyramid_base));
+  PetscCall(r.integer("-n_logs", "log_heap: number of logs", &s->n_logs));
+  PetscCall(r.real("-log_radius", "log_heap: log radius (m)", &s->log_radius));
+  PetscCall(r.real("-log_length", "log_heap: log length (m)", &s->log_length));
+  PetscCall(r.integer("-seed", "log_heap: random seed", &s->seed));
   PetscFunctionReturn(0);
 }
 
 // Friction model and the LCP solvers.
-PetscErrorCode frictionOptions(PetscOptionItems* PetscOptionsObject, MPI_Comm comm, StepperOptions* t) {
+PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
   std::string friction = frictionName(t->friction), fallback = joinList(t->fallback_solvers),
               poly = joinList(t->polyhedral_solvers);
   PetscFunctionBeginUser;
-  PetscCall(
-      suite::optionsChoice(PetscOptionsObject, "-friction", "Friction model", frictionChoices(), &friction));
+  PetscCall(suite::optionsChoice(r.po, "-friction", "Friction model", frictionChoices(), &friction));
   PetscCheck(frictionFromName(friction, &t->friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model", friction.c_str());
-  PetscCall(PetscOptionsReal("-mu", "Friction coefficient", nullptr, t->mu, &t->mu, nullptr));
-  PetscCall(optionString(PetscOptionsObject, "-lcp_solver", "LCP solver (lib/lcp registry)", &t->lcp_solver));
-  PetscCall(optionString(PetscOptionsObject, "-fallback_solvers",
-                         "Comma list tried when the solver fails ('none': stop)", &fallback));
-  PetscCall(PetscOptionsReal("-lcp_tol", "Acceptance: natural-map residual <= tol (1 + |q|_inf)", nullptr,
-                             t->lcp_tol, &t->lcp_tol, nullptr));
-  PetscCall(optionInt(PetscOptionsObject, "-lcp_max_iterations",
-                      "Iteration cap of the primary LCP solver (0: its default)", &t->lcp_max_iterations));
+  PetscCall(r.real("-mu", "Friction coefficient", &t->mu));
+  PetscCall(r.string("-lcp_solver", "LCP solver (lib/lcp registry)", &t->lcp_solver));
+  PetscCall(
+      r.string("-fallback_solvers", "Comma list tried when the solver fails ('none': stop)", &fallback));
+  PetscCall(r.real("-lcp_tol", "Acceptance: natural-map residual <= tol (1 + |q|_inf)", &t->lcp_tol));
+  PetscCall(r.integer("-lcp_max_iterations", "Iteration cap of the primary LCP solver (0: its default)",
+                      &t->lcp_max_iterations));
+  PetscCall(r.string("-polyhedral_solvers",
+                     "Polyhedral: solver chain, first the reference (each answer verified)", &poly));
   t->fallback_solvers = splitList(fallback);
-  PetscCall(optionString(PetscOptionsObject, "-polyhedral_solvers",
-                         "Polyhedral: solver chain, first the reference (each answer verified)", &poly));
   t->polyhedral_solvers = splitList(poly);
   PetscFunctionReturn(0);
 }
 
 // Integration, stabilisation, splitting, polyhedral cone and sleeping.
-PetscErrorCode stepperOptions(PetscOptionItems* PetscOptionsObject, MPI_Comm comm, StepperOptions* t) {
+PetscErrorCode stepperOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
   std::string start = splitStartName(t->split_start);
-  PetscReal g = 9.81;
-  PetscBool poly_scaling = t->polyhedral_scaling ? PETSC_TRUE : PETSC_FALSE,
-            sleep = t->sleep ? PETSC_TRUE : PETSC_FALSE;
+  double g = 9.81;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsReal("-dt", "Time step (s)", nullptr, t->dt, &t->dt, nullptr));
-  PetscCall(PetscOptionsReal("-gravity", "Gravity (m/s^2, along -z)", nullptr, g, &g, nullptr));
+  PetscCall(r.real("-dt", "Time step (s)", &t->dt));
+  PetscCall(r.real("-gravity", "Gravity (m/s^2, along -z)", &g));
   t->gravity = Vec3(0, 0, -g);
-  PetscCall(PetscOptionsReal("-baumgarte", "Baumgarte factor for penetration (0, 1]", nullptr, t->baumgarte,
-                             &t->baumgarte, nullptr));
-  PetscCall(PetscOptionsReal("-regularisation", "Relative compliance of the normal rows", nullptr,
-                             t->regularisation, &t->regularisation, nullptr));
-  PetscCall(PetscOptionsReal("-regularisation_t", "Relative compliance of the tangent rows", nullptr,
-                             t->regularisation_t, &t->regularisation_t, nullptr));
-  PetscCall(PetscOptionsReal("-margin", "Contact margin (m)", nullptr, t->margin, &t->margin, nullptr));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-splitting_start",
-                                 "Splitting: first estimate of the normal impulse", splitStartChoices(),
-                                 &start));
+  PetscCall(r.real("-baumgarte", "Baumgarte factor for penetration (0, 1]", &t->baumgarte));
+  PetscCall(r.real("-regularisation", "Relative compliance of the normal rows", &t->regularisation));
+  PetscCall(r.real("-regularisation_t", "Relative compliance of the tangent rows", &t->regularisation_t));
+  PetscCall(r.real("-margin", "Contact margin (m)", &t->margin));
+  PetscCall(suite::optionsChoice(r.po, "-splitting_start", "Splitting: first estimate of the normal impulse",
+                                 splitStartChoices(), &start));
   PetscCheck(splitStartFromName(start, &t->split_start), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-splitting_start %s: unknown", start.c_str());
-  PetscCall(optionInt(PetscOptionsObject, "-splitting_max_it", "Splitting: pass cap", &t->splitting_max_it));
-  PetscCall(PetscOptionsReal("-splitting_tol", "Splitting: relative tolerance on max|delta lambda_n|",
-                             nullptr, t->splitting_tol, &t->splitting_tol, nullptr));
-  PetscCall(optionInt(PetscOptionsObject, "-polyhedral_directions",
-                      "Polyhedral: friction directions per contact", &t->polyhedral_directions));
-  PetscCall(PetscOptionsReal("-polyhedral_gamma_reg", "Polyhedral: compliance of the cone rows (x 1/A_tt)",
-                             nullptr, t->polyhedral_gamma_reg, &t->polyhedral_gamma_reg, nullptr));
-  PetscCall(PetscOptionsBool("-polyhedral_scaling", "Polyhedral: equilibrate the LCP before solving", nullptr,
-                             poly_scaling, &poly_scaling, nullptr));
-  t->polyhedral_scaling = poly_scaling;
-  PetscCall(PetscOptionsBool("-sleep",
-                             "Put bodies at rest to sleep (not integrated, their contacts not solved)",
-                             nullptr, sleep, &sleep, nullptr));
-  t->sleep = sleep;
-  PetscCall(PetscOptionsReal("-sleep_velocity",
-                             "Sleep: speed |v| + |w| r below which a body is at rest (m/s)", nullptr,
-                             t->sleep_velocity, &t->sleep_velocity, nullptr));
+  PetscCall(r.integer("-splitting_max_it", "Splitting: pass cap", &t->splitting_max_it));
   PetscCall(
-      optionInt(PetscOptionsObject, "-sleep_steps", "Sleep: steps at rest before sleeping", &t->sleep_steps));
+      r.real("-splitting_tol", "Splitting: relative tolerance on max|delta lambda_n|", &t->splitting_tol));
+  PetscCall(r.integer("-polyhedral_directions", "Polyhedral: friction directions per contact",
+                      &t->polyhedral_directions));
+  PetscCall(r.real("-polyhedral_gamma_reg", "Polyhedral: compliance of the cone rows (x 1/A_tt)",
+                   &t->polyhedral_gamma_reg));
+  PetscCall(r.boolean("-polyhedral_scaling", "Polyhedral: equilibrate the LCP before solving",
+                      &t->polyhedral_scaling));
+  PetscCall(r.boolean("-sleep", "Put bodies at rest to sleep (not integrated, their contacts not solved)",
+                      &t->sleep));
+  PetscCall(r.real("-sleep_velocity", "Sleep: speed |v| + |w| r below which a body is at rest (m/s)",
+                   &t->sleep_velocity));
+  PetscCall(r.integer("-sleep_steps", "Sleep: steps at rest before sleeping", &t->sleep_steps));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode runOptions(PetscOptionItems* PetscOptionsObject, AppOptions* o) {
+PetscErrorCode runOptions(const Reader& r, AppOptions* o) {
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsInt("-steps", "Number of steps", nullptr, o->steps, &o->steps, nullptr));
-  PetscCall(PetscOptionsReal("-overlap_tol", "Largest allowed overlap of static bodies (m)", nullptr,
-                             o->overlap_tol, &o->overlap_tol, nullptr));
-  PetscCall(PetscOptionsInt("-output_every", "Frame interval in steps", nullptr, o->output_every,
-                            &o->output_every, nullptr));
-  PetscCall(PetscOptionsString("-output", "HDF5 output file", nullptr, o->output, o->output, sizeof o->output,
-                               nullptr));
-  PetscCall(PetscOptionsString("-dump_problems", "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5",
-                               nullptr, o->dump, o->dump, sizeof o->dump, nullptr));
-  PetscCall(
-      PetscOptionsInt("-dump_max", "Most problems dumped", nullptr, o->dump_max, &o->dump_max, nullptr));
+  PetscCall(r.integer("-steps", "Number of steps", &o->steps));
+  PetscCall(r.real("-overlap_tol", "Largest allowed overlap of static bodies (m)", &o->overlap_tol));
+  PetscCall(r.integer("-output_every", "Frame interval in steps", &o->output_every));
+  PetscCall(PetscOptionsString_Private(r.po, "-output", "HDF5 output file", nullptr, o->output, o->output,
+                                       sizeof o->output, nullptr));
+  PetscCall(PetscOptionsString_Private(r.po, "-dump_problems",
+                                       "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5", nullptr,
+                                       o->dump, o->dump, sizeof o->dump, nullptr));
+  PetscCall(r.integer("-dump_max", "Most problems dumped", &o->dump_max));
   PetscFunctionReturn(0);
 }
 
@@ -223,10 +206,11 @@ PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
 PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "Contact app options", nullptr);
-  PetscCall(sceneOptions(PetscOptionsObject, &o->scene));
-  PetscCall(frictionOptions(PetscOptionsObject, comm, &o->step));
-  PetscCall(stepperOptions(PetscOptionsObject, comm, &o->step));
-  PetscCall(runOptions(PetscOptionsObject, o));
+  const Reader r{PetscOptionsObject};
+  PetscCall(sceneOptions(r, &o->scene));
+  PetscCall(frictionOptions(r, comm, &o->step));
+  PetscCall(stepperOptions(r, comm, &o->step));
+  PetscCall(runOptions(r, o));
   PetscOptionsEnd();
   PetscCall(checkSolvers(comm, o->step));
   PetscCall(checkRanges(comm, *o));

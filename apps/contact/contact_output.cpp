@@ -1,88 +1,10 @@
 // Output of the contact app (HDF5 via suite::H5Output, replicated data written by rank 0; XDMF sidecar).
 #include "contact_output.hpp"
 
+#include "contact/xdmf_points.hpp"
 #include "io/h5_output.hpp"
 
-#include <cstdio>
-#include <fstream>
-
 namespace suite::contact {
-
-void Recorder::frame(const std::vector<Body>& bodies, long long step, double t) {
-  frame_time.push_back(t);
-  frame_step.push_back(step);
-  for (const Body& b : bodies) {
-    pos.insert(pos.end(), {b.x.x(), b.x.y(), b.x.z()});
-    quat.insert(quat.end(), {b.q.w(), b.q.x(), b.q.y(), b.q.z()});
-    vel.insert(vel.end(), {b.v.x(), b.v.y(), b.v.z(), b.w.x(), b.w.y(), b.w.z()});
-  }
-}
-
-void Recorder::step(const StepStats& s, double t, double energy_value, double wall) {
-  time.push_back(t);
-  contacts.push_back(s.contacts);
-  sleeping.push_back(s.sleeping);
-  rows.push_back(s.rows);
-  int idx = -1;
-  for (size_t k = 0; k < solver_names.size(); ++k)
-    if (solver_names[k] == s.solver) idx = (int)k;
-  if (idx < 0 && !s.solver.empty()) {
-    solver_names.push_back(s.solver);
-    idx = (int)solver_names.size() - 1;
-  }
-  solver_index.push_back(idx);
-  iterations.push_back(s.iterations);
-  pivots.push_back(s.pivots);
-  splitting_iterations.push_back(s.splitting_iterations);
-  fallbacks.push_back(s.fallbacks);
-  force_ratio.push_back(s.force_ratio);
-  cone_violation.push_back(s.cone_violation);
-  residual.push_back(s.residual);
-  splitting_error.push_back(s.splitting_error);
-  energy.push_back(energy_value);
-  step_wall.push_back(wall);
-  split_errors.insert(split_errors.end(), s.split_errors.begin(), s.split_errors.end());
-  split_ratios.insert(split_ratios.end(), s.split_ratios.begin(), s.split_ratios.end());
-  split_offset.push_back((long long)split_errors.size());
-}
-
-namespace {
-std::string baseName(const std::string& p) {
-  const auto k = p.find_last_of('/');
-  return k == std::string::npos ? p : p.substr(k + 1);
-}
-
-// Point cloud of the body centres per frame (ParaView: open the .xmf, play; glyph by orientation).
-void writeXdmf(const std::string& xmf, const std::string& h5, size_t nb, size_t nf,
-               const std::vector<double>& t) {
-  const std::string tmp = xmf + ".tmp";
-  std::ofstream o(tmp);
-  const std::string f = baseName(h5);
-  o << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
-    << "<Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  auto slab = [&](const char* ds, size_t k, size_t comps) {
-    o << "  <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nb << " " << comps << "\">\n"
-      << "   <DataItem Dimensions=\"3 3\" Format=\"XML\">" << k << " 0 0 1 1 1 1 " << nb << " " << comps
-      << "</DataItem>\n"
-      << "   <DataItem Dimensions=\"" << nf << " " << nb << " " << comps << "\" Format=\"HDF\">" << f << ":"
-      << ds << "</DataItem>\n  </DataItem>\n";
-  };
-  for (size_t k = 0; k < nf; ++k) {
-    o << " <Grid Name=\"frame" << k << "\" GridType=\"Uniform\">\n  <Time Value=\"" << t[k] << "\"/>\n"
-      << "  <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << nb << "\"/>\n"
-      << "  <Geometry GeometryType=\"XYZ\">\n";
-    slab("/frames/positions", k, 3);
-    o << "  </Geometry>\n  <Attribute Name=\"orientation_wxyz\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    slab("/frames/orientations", k, 4);
-    o << "  </Attribute>\n  <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    slab("/frames/velocities", k, 6);
-    o << "  </Attribute>\n </Grid>\n";
-  }
-  o << "</Grid>\n</Domain>\n</Xdmf>\n";
-  o.close();
-  std::rename(tmp.c_str(), xmf.c_str());
-}
-} // namespace
 
 namespace {
 PetscErrorCode writeBodies(H5Output& out, const std::vector<Body>& bodies) {

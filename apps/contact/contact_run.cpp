@@ -8,14 +8,12 @@
 
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
-#include "core/run_context.hpp"
 #include "core/time_loop.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/readers.hpp"
 
 #include <chrono>
-#include <cmath>
 
 namespace contact_app {
 
@@ -139,18 +137,12 @@ PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
   PetscFunctionReturn(0);
 }
 
-// The scene, validated, with a contact generator for every pair it can produce.
+// The scene, validated (a collective error on a bad one).
 PetscErrorCode buildBodies(MPI_Comm comm, const AppOptions& o, std::vector<Body>* bodies) {
   std::string scene_error;
   PetscFunctionBeginUser;
   try {
-    *bodies = buildScene(o.scene);
-    validateScene(*bodies, o.overlap_tol);
-    for (size_t i = 0; i < bodies->size(); ++i)
-      for (size_t j = i + 1; j < bodies->size(); ++j) {
-        std::vector<Contact> tmp;
-        collide(*bodies, (int)i, (int)j, -INFINITY, &tmp);
-      }
+    *bodies = buildValidScene(o.scene, o.overlap_tol);
   } catch (const SceneError& e) {
     scene_error = e.what();
   }

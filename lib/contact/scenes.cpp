@@ -330,6 +330,17 @@ std::vector<Body> parseScene(const std::string& text, const std::string& path) {
   return bodies;
 }
 
+std::vector<Body> buildValidScene(const SceneParams& p, double overlap_tol) {
+  std::vector<Body> bodies = buildScene(p);
+  validateScene(bodies, overlap_tol);
+  for (size_t i = 0; i < bodies.size(); ++i) // every pair the scene can produce has a contact generator
+    for (size_t j = i + 1; j < bodies.size(); ++j) {
+      std::vector<Contact> tmp;
+      collide(bodies, (int)i, (int)j, -INFINITY, &tmp);
+    }
+  return bodies;
+}
+
 void validateScene(const std::vector<Body>& bodies, double tol) {
   for (auto& [i, j] : broadPhase(bodies, 0.0, true)) {
     if (!bodies[i].is_static || !bodies[j].is_static) continue;

@@ -49,6 +49,8 @@ constexpr int kMaxSceneBodies = 1000000;
 std::vector<Body> parseScene(const std::string& text, const std::string& path = "scene");
 // Throws SceneError if two static bodies (other than planes) overlap by more than tol.
 void validateScene(const std::vector<Body>& bodies, double tol);
+// buildScene, validateScene, and a check that every pair of bodies has a contact generator (throws SceneError).
+std::vector<Body> buildValidScene(const SceneParams& p, double overlap_tol);
 // A static plane with world normal n through point.
 Body makePlane(const std::string& name, const Vec3& n, const Vec3& point);
 
