@@ -1,112 +1,19 @@
 // Output of the contact app (HDF5 via suite::H5Output, replicated data written by rank 0; XDMF sidecar).
 #include "contact_output.hpp"
 
+#include "contact/xdmf_points.hpp"
 #include "io/h5_output.hpp"
-
-#include <cstdio>
-#include <fstream>
 
 namespace suite::contact {
 
-void Recorder::frame(const std::vector<Body>& bodies, long long step, double t) {
-  frame_time.push_back(t);
-  frame_step.push_back(step);
-  for (const Body& b : bodies) {
-    pos.insert(pos.end(), {b.x.x(), b.x.y(), b.x.z()});
-    quat.insert(quat.end(), {b.q.w(), b.q.x(), b.q.y(), b.q.z()});
-    vel.insert(vel.end(), {b.v.x(), b.v.y(), b.v.z(), b.w.x(), b.w.y(), b.w.z()});
-  }
-}
-
-void Recorder::step(const StepStats& s, double t, double energy_value, double wall) {
-  time.push_back(t);
-  contacts.push_back(s.contacts);
-  sleeping.push_back(s.sleeping);
-  rows.push_back(s.rows);
-  int idx = -1;
-  for (size_t k = 0; k < solver_names.size(); ++k)
-    if (solver_names[k] == s.solver) idx = (int)k;
-  if (idx < 0 && !s.solver.empty()) {
-    solver_names.push_back(s.solver);
-    idx = (int)solver_names.size() - 1;
-  }
-  solver_index.push_back(idx);
-  iterations.push_back(s.iterations);
-  pivots.push_back(s.pivots);
-  splitting_iterations.push_back(s.splitting_iterations);
-  fallbacks.push_back(s.fallbacks);
-  force_ratio.push_back(s.force_ratio);
-  cone_violation.push_back(s.cone_violation);
-  residual.push_back(s.residual);
-  splitting_error.push_back(s.splitting_error);
-  energy.push_back(energy_value);
-  step_wall.push_back(wall);
-  split_errors.insert(split_errors.end(), s.split_errors.begin(), s.split_errors.end());
-  split_ratios.insert(split_ratios.end(), s.split_ratios.begin(), s.split_ratios.end());
-  split_offset.push_back((long long)split_errors.size());
-}
-
 namespace {
-std::string baseName(const std::string& p) {
-  const auto k = p.find_last_of('/');
-  return k == std::string::npos ? p : p.substr(k + 1);
-}
-
-// Point cloud of the body centres per frame (ParaView: open the .xmf, play; glyph by orientation).
-void writeXdmf(const std::string& xmf, const std::string& h5, size_t nb, size_t nf,
-               const std::vector<double>& t) {
-  const std::string tmp = xmf + ".tmp";
-  std::ofstream o(tmp);
-  const std::string f = baseName(h5);
-  o << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
-    << "<Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  auto slab = [&](const char* ds, size_t k, size_t comps) {
-    o << "  <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nb << " " << comps << "\">\n"
-      << "   <DataItem Dimensions=\"3 3\" Format=\"XML\">" << k << " 0 0 1 1 1 1 " << nb << " " << comps
-      << "</DataItem>\n"
-      << "   <DataItem Dimensions=\"" << nf << " " << nb << " " << comps << "\" Format=\"HDF\">" << f << ":"
-      << ds << "</DataItem>\n  </DataItem>\n";
-  };
-  for (size_t k = 0; k < nf; ++k) {
-    o << " <Grid Name=\"frame" << k << "\" GridType=\"Uniform\">\n  <Time Value=\"" << t[k] << "\"/>\n"
-      << "  <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << nb << "\"/>\n"
-      << "  <Geometry GeometryType=\"XYZ\">\n";
-    slab("/frames/positions", k, 3);
-    o << "  </Geometry>\n  <Attribute Name=\"orientation_wxyz\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    slab("/frames/orientations", k, 4);
-    o << "  </Attribute>\n  <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    slab("/frames/velocities", k, 6);
-    o << "  </Attribute>\n </Grid>\n";
-  }
-  o << "</Grid>\n</Domain>\n</Xdmf>\n";
-  o.close();
-  std::rename(tmp.c_str(), xmf.c_str());
-}
-} // namespace
-
-PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path,
-                                  const std::vector<Body>& bodies, const Recorder& rec,
-                                  const OutputInfo& info) {
-  PetscFunctionBeginUser;
+PetscErrorCode writeBodies(H5Output& out, const std::vector<Body>& bodies) {
   using U = unsigned long long;
-  const U nb = bodies.size(), nf = rec.frame_time.size(), ns = rec.time.size();
-  H5Output out;
-  PetscCall(out.open(ctx.comm(), path));
-  PetscCall(out.writeProvenance(ctx));
-  PetscCall(out.writeAttribute("/", "scene", info.scene));
-  PetscCall(out.writeAttribute("/", "friction", info.friction));
-  PetscCall(out.writeAttribute("/", "lcp_solver", info.lcp_solver));
-  PetscCall(out.writeAttribute("/", "dt", info.dt));
-  PetscCall(out.writeAttribute("/", "mu", info.mu));
-  PetscCall(out.writeAttribute("/", "theta", info.theta));
-  PetscCall(out.writeAttribute("/", "steps_requested", info.steps_requested));
-  PetscCall(out.writeAttribute("/", "steps", info.steps_done));
-  PetscCall(out.writeAttribute("/", "status", info.status));
-  PetscCall(out.writeAttribute("/", "simplifications", info.simplifications));
-  // bodies
+  const U nb = bodies.size();
   std::vector<int> type(nb), is_static(nb);
   std::vector<double> dims(nb * 4), mass(nb);
   std::string names;
+  PetscFunctionBeginUser;
   for (U i = 0; i < nb; ++i) {
     const Body& b = bodies[i];
     type[i] = (int)b.shape.type;
@@ -126,7 +33,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   }
   PetscCall(out.writeAttribute("/bodies", "names", names));
   PetscCall(out.writeAttribute("/bodies", "types", "0 plane, 1 sphere, 2 box, 3 capsule, 4 cylinder"));
-  // frames
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeFrames(H5Output& out, unsigned long long nb, const Recorder& rec) {
+  const unsigned long long nf = rec.frame_time.size();
+  PetscFunctionBeginUser;
   if (nf) {
     PetscCall(out.writeReplicated("/frames/time", rec.frame_time.data(), {nf}, "s"));
     PetscCall(out.writeReplicated("/frames/step", rec.frame_step.data(), {nf}, ""));
@@ -136,7 +48,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   }
   PetscCall(out.writeAttribute("/frames", "orientations", "unit quaternions w, x, y, z (body to world)"));
   PetscCall(out.writeAttribute("/frames", "velocities", "vx, vy, vz (m/s), wx, wy, wz (rad/s), world frame"));
-  // per step
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
+  const unsigned long long ns = rec.time.size();
+  PetscFunctionBeginUser;
   if (ns) {
     PetscCall(out.writeReplicated("/steps/time", rec.time.data(), {ns}, "s"));
     PetscCall(out.writeReplicated("/steps/contacts", rec.contacts.data(), {ns}, ""));
@@ -159,7 +76,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   PetscCall(out.writeAttribute("/steps", "solver_names", sn));
   PetscCall(out.writeAttribute("/steps", "force_ratio",
                                "sum over body pairs |sum tangential impulse| / sum normal"));
-  const U nh = rec.split_errors.size();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeSplitting(H5Output& out, const Recorder& rec) {
+  const unsigned long long nh = rec.split_errors.size(), ns = rec.time.size();
+  PetscFunctionBeginUser;
   if (nh) {
     PetscCall(out.writeReplicated("/splitting/error", rec.split_errors.data(), {nh}, "N s"));
     PetscCall(out.writeReplicated("/splitting/force_ratio", rec.split_ratios.data(), {nh}, ""));
@@ -168,8 +90,34 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
                                  "pass k of step s at offset[s] + k; error = max|delta lambda_n| "
                                  "(pass 1: max lambda_n)"));
   }
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path,
+                                  const std::vector<Body>& bodies, const Recorder& rec,
+                                  const OutputInfo& info) {
+  H5Output out;
+  PetscFunctionBeginUser;
+  PetscCall(out.open(ctx.comm(), path));
+  PetscCall(out.writeProvenance(ctx));
+  PetscCall(out.writeAttribute("/", "scene", info.scene));
+  PetscCall(out.writeAttribute("/", "friction", info.friction));
+  PetscCall(out.writeAttribute("/", "lcp_solver", info.lcp_solver));
+  PetscCall(out.writeAttribute("/", "dt", info.dt));
+  PetscCall(out.writeAttribute("/", "mu", info.mu));
+  PetscCall(out.writeAttribute("/", "theta", info.theta));
+  PetscCall(out.writeAttribute("/", "steps_requested", info.steps_requested));
+  PetscCall(out.writeAttribute("/", "steps", info.steps_done));
+  PetscCall(out.writeAttribute("/", "status", info.status));
+  PetscCall(out.writeAttribute("/", "simplifications", info.simplifications));
+  PetscCall(writeBodies(out, bodies));
+  PetscCall(writeFrames(out, bodies.size(), rec));
+  PetscCall(writeSteps(out, rec));
+  PetscCall(writeSplitting(out, rec));
   PetscCall(out.commit(&ctx));
-  if (ctx.rank() == 0 && nf) writeXdmf(path + ".xmf", path, nb, nf, rec.frame_time);
+  if (ctx.rank() == 0 && !rec.frame_time.empty())
+    writeXdmf(path + ".xmf", path, bodies.size(), rec.frame_time.size(), rec.frame_time);
   PetscFunctionReturn(0);
 }
 

@@ -1,4 +1,5 @@
-// The contact app's run (see contact_run.hpp).
+// The contact app's run (see contact_run.hpp): setup, then the steps on the suite's one time loop
+// (core/time_loop.hpp) through ContactStepping, the app's side of it.
 #include "contact_run.hpp"
 
 #include "contact_checkpoint.hpp"
@@ -7,18 +8,149 @@
 
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
-#include "core/progress.hpp"
-#include "core/run_context.hpp"
+#include "core/time_loop.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/readers.hpp"
-#include "lcp/solver.hpp"
 
 #include <chrono>
-#include <cmath>
-#include <sstream>
 
 namespace contact_app {
+
+namespace {
+
+// The contact app on the time loop: fixed dt, one Stepper::step per step, frames every -output_every steps,
+// the problems of each step dumped on request, a failed step's problem dumped next to the output.
+class ContactStepping : public suite::TimeStepped {
+public:
+  ContactStepping(const suite::RunContext& ctx, const AppOptions& o, std::vector<Body> bodies)
+      : ctx_(ctx), o_(o), bodies_(std::move(bodies)), stepper_(o.step),
+        scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
+    stepper_.keepProblems(o.dump[0] != 0);
+  }
+  PetscErrorCode start(PetscInt step, double t, bool restarted) override {
+    if (restarted) rec_.frame(bodies_, step, t); // a fresh run's first frame is its step-0 snapshot
+    return 0;
+  }
+  PetscErrorCode proposeDt(PetscInt, double, double* dt) override {
+    *dt = o_.step.dt;
+    return 0;
+  }
+  PetscErrorCode advance(PetscInt step, double t, double dt, suite::StepOutcome* out) override;
+  PetscErrorCode saveState(const std::string& path, PetscInt step, double t) override {
+    return writeContactCheckpoint(ctx_.comm(), path, scheme_, step, t, o_.step.dt, bodies_, stepper_);
+  }
+  PetscErrorCode loadState(const std::string& path, PetscInt* step, double* t) override {
+    long long s = 0;
+    PetscFunctionBeginUser;
+    PetscCall(readContactCheckpoint(ctx_.comm(), path, scheme_, o_.step.dt, &bodies_, &stepper_, &s, t));
+    *step = (PetscInt)s;
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode writeSnapshot(PetscInt step, double t) override {
+    rec_.frame(bodies_, step, t);
+    return 0;
+  }
+  PetscErrorCode writeFinal(const suite::LoopSummary& sum) override;
+
+private:
+  PetscErrorCode dumpProblems(PetscInt step);
+  PetscErrorCode failed(PetscInt step, const StepStats& st, suite::StepOutcome* out);
+
+  const suite::RunContext& ctx_;
+  const AppOptions& o_;
+  std::vector<Body> bodies_;
+  Stepper stepper_;
+  const std::string scheme_;
+  Recorder rec_;
+  long long dumped_ = 0;
+  std::string failure_; // "step N: why; problem dumped to FILE"
+};
+
+PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suite::StepOutcome* out) {
+  PetscFunctionBeginUser;
+  const auto t0 = std::chrono::steady_clock::now();
+  const StepStats st = stepper_.step(&bodies_);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  PetscCall(dumpProblems(step + 1));
+  if (st.failed) {
+    PetscCall(failed(step + 1, st, out));
+    PetscFunctionReturn(0);
+  }
+  out->status = suite::StepStatus::Done;
+  out->t_new = t + dt;
+  rec_.step(st, out->t_new, mechanicalEnergy(bodies_, o_.step.gravity), wall);
+  PetscFunctionReturn(0);
+}
+
+// -dump_problems: every problem of the step (one per splitting pass), at most -dump_max in the run.
+PetscErrorCode ContactStepping::dumpProblems(PetscInt step) {
+  PetscFunctionBeginUser;
+  if (!o_.dump[0]) PetscFunctionReturn(0);
+  const auto& ps = stepper_.lastProblems();
+  for (size_t k = 0; k < ps.size() && dumped_ < o_.dump_max; ++k, ++dumped_) {
+    char tag[64];
+    std::snprintf(tag, sizeof tag, "_step%06d_pass%02d.h5", (int)step, (int)k + 1);
+    const std::string name = o_.dump + std::string(tag);
+    PetscCall(suite::lcp::writeProblemH5(ctx_.comm(), name, ps[k]));
+  }
+  PetscFunctionReturn(0);
+}
+
+// A failed step: the bodies are unchanged; its (last) problem is dumped next to the output.
+PetscErrorCode ContactStepping::failed(PetscInt step, const StepStats& st, suite::StepOutcome* out) {
+  PetscFunctionBeginUser;
+  std::string dump = std::string(o_.output) + ".failed_step" + std::to_string(step) + ".h5";
+  if (!stepper_.lastProblems().empty())
+    PetscCall(suite::lcp::writeProblemH5(ctx_.comm(), dump, stepper_.lastProblems().back()));
+  else
+    dump = "(no problem)";
+  const std::string why = st.message + "problem dumped to " + dump;
+  failure_ = "step " + std::to_string(step) + ": " + why;
+  out->status = suite::StepStatus::Failed;
+  out->message = why + " (output up to step " + std::to_string(step - 1) + " in " + o_.output + ")";
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
+  suite::LogStages stages;
+  PetscFunctionBeginUser;
+  PetscCall(suite::LogStages::get(&stages));
+  PetscCall(PetscLogStagePush(stages.output));
+  OutputInfo info{o_.scene.scene,
+                  frictionName(o_.step.friction),
+                  o_.step.lcp_solver,
+                  "completed",
+                  "",
+                  o_.step.dt,
+                  o_.step.mu,
+                  o_.scene.theta_deg,
+                  (long long)o_.steps,
+                  (long long)sum.steps};
+  info.simplifications = simplifications(o_, bodies_);
+  if (sum.failed) info.status = "failed: " + failure_;
+  if (sum.stopped)
+    info.status = "stopped at step " + std::to_string(sum.steps) + " (" + sum.stop_reason + ")";
+  if (rec_.frame_step.back() != sum.steps) rec_.frame(bodies_, sum.steps, sum.t);
+  PetscCall(writeContactOutput(ctx_, o_.output, bodies_, rec_, info));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+// The scene, validated (a collective error on a bad one).
+PetscErrorCode buildBodies(MPI_Comm comm, const AppOptions& o, std::vector<Body>* bodies) {
+  std::string scene_error;
+  PetscFunctionBeginUser;
+  try {
+    *bodies = buildValidScene(o.scene, o.overlap_tol);
+  } catch (const SceneError& e) {
+    scene_error = e.what();
+  }
+  PetscCheck(scene_error.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", scene_error.c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace
 
 PetscErrorCode run(suite::RunContext& ctx) {
   PetscFunctionBeginUser;
@@ -36,20 +168,7 @@ PetscErrorCode run(suite::RunContext& ctx) {
   }
   PetscCall(suite::checkOutputWritable(ctx.comm(), o.output, "output"));
   std::vector<Body> bodies;
-  std::string scene_error;
-  try {
-    bodies = buildScene(o.scene);
-    validateScene(bodies, o.overlap_tol);
-    // every pair the scene can produce must have a contact generator
-    for (size_t i = 0; i < bodies.size(); ++i)
-      for (size_t j = i + 1; j < bodies.size(); ++j) {
-        std::vector<Contact> tmp;
-        collide(bodies, (int)i, (int)j, -INFINITY, &tmp);
-      }
-  } catch (const SceneError& e) {
-    scene_error = e.what();
-  }
-  PetscCheck(scene_error.empty(), ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE, "%s", scene_error.c_str());
+  PetscCall(buildBodies(ctx.comm(), o, &bodies));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
                            "contact: scene %s, %zu bodies, friction %s (mu %g), solver %s",
                            o.scene.scene.c_str(), bodies.size(), frictionName(o.step.friction), o.step.mu,
@@ -57,93 +176,16 @@ PetscErrorCode run(suite::RunContext& ctx) {
   PetscCall(PetscLogStagePop());
 
   PetscCall(PetscLogStagePush(stages.solve));
-  Stepper stepper(o.step);
-  stepper.keepProblems(o.dump[0] != 0);
-  const std::string scheme = checkpointScheme(o.scene.scene, o.step.friction);
-  long long s0 = 0;
-  double t = 0.0;
-  if (policy.restartRequested()) {
-    std::string path;
-    PetscCall(policy.restartPath(&path));
-    PetscCall(readContactCheckpoint(ctx.comm(), path, scheme, o.step.dt, &bodies, &stepper, &s0, &t));
-    PetscCheck(s0 <= o.steps, ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE,
-               "restart %s: checkpoint at step %lld is past -steps %d", path.c_str(), s0, (int)o.steps);
-    PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "restarted from %s at step %lld (t = %g)", path.c_str(),
-                             s0, t));
-  }
-  Recorder rec;
-  OutputInfo info{o.scene.scene,
-                  frictionName(o.step.friction),
-                  o.step.lcp_solver,
-                  "completed",
-                  "",
-                  o.step.dt,
-                  o.step.mu,
-                  o.scene.theta_deg,
-                  (long long)o.steps,
-                  0};
-  info.simplifications = simplifications(o, bodies);
-  rec.frame(bodies, s0, t);
-  suite::Progress progress(ctx.comm(), ctx.quiet(), ctx.progressInterval(), o.steps * o.step.dt);
-  long long dumped = 0;
-  std::string failure;
-  PetscInt s = (PetscInt)s0;
-  for (; s < o.steps; ++s) {
-    bool stop = false;
-    PetscCall(ctx.stopRequested(&stop));
-    if (stop) {
-      if (policy.enabled()) {
-        PetscCall(writeContactCheckpoint(ctx.comm(), policy.pathForStep(s), scheme, s, t, o.step.dt, bodies,
-                                         stepper));
-        PetscCall(policy.written(s));
-        PetscCall(suite::logInfo(ctx.comm(), false, "final checkpoint %s", policy.pathForStep(s).c_str()));
-      }
-      info.status = "stopped at step " + std::to_string(s) + " (" + ctx.stopReason() + ")";
-      PetscCall(suite::logInfo(ctx.comm(), false, "stop requested (%s) at step %d", ctx.stopReason().c_str(),
-                               (int)s));
-      break;
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    StepStats st = stepper.step(&bodies);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o.dump[0]) {
-      const auto& ps = stepper.lastProblems();
-      for (size_t k = 0; k < ps.size() && dumped < o.dump_max; ++k, ++dumped) {
-        char name[PETSC_MAX_PATH_LEN];
-        std::snprintf(name, sizeof name, "%s_step%06d_pass%02d.h5", o.dump, (int)(s + 1), (int)k + 1);
-        PetscCall(suite::lcp::writeProblemH5(ctx.comm(), name, ps[k]));
-      }
-    }
-    if (st.failed) {
-      std::string dump = std::string(o.output) + ".failed_step" + std::to_string(s + 1) + ".h5";
-      if (!stepper.lastProblems().empty())
-        PetscCall(suite::lcp::writeProblemH5(ctx.comm(), dump, stepper.lastProblems().back()));
-      else
-        dump = "(no problem)";
-      failure = "step " + std::to_string(s + 1) + ": " + st.message + "problem dumped to " + dump;
-      info.status = "failed: " + failure;
-      break;
-    }
-    t += o.step.dt;
-    rec.step(st, t, mechanicalEnergy(bodies, o.step.gravity), wall);
-    if ((s + 1) % o.output_every == 0 || s + 1 == o.steps) rec.frame(bodies, s + 1, t);
-    bool due = false;
-    PetscCall(policy.due(s + 1, &due));
-    if (due) {
-      PetscCall(writeContactCheckpoint(ctx.comm(), policy.pathForStep(s + 1), scheme, s + 1, t, o.step.dt,
-                                       bodies, stepper));
-      PetscCall(policy.written(s + 1));
-    }
-    PetscCall(progress.update(s + 1, t, o.step.dt));
-  }
-  info.steps_done = s;
+  ContactStepping app(ctx, o, std::move(bodies));
+  suite::TimeLoopSettings set;
+  set.app = "contact";
+  set.max_steps = o.steps;
+  set.snapshot_every = o.output_every;
+  set.eta_time = o.steps * o.step.dt;
+  suite::TimeLoop loop(ctx, policy, set);
+  const PetscErrorCode ierr = loop.run(app);
   PetscCall(PetscLogStagePop());
-  PetscCall(PetscLogStagePush(stages.output));
-  if (rec.frame_step.back() != s) rec.frame(bodies, s, t);
-  PetscCall(writeContactOutput(ctx, o.output, bodies, rec, info));
-  PetscCall(PetscLogStagePop());
-  PetscCheck(failure.empty(), ctx.comm(), PETSC_ERR_NOT_CONVERGED, "%s (output up to step %d in %s)",
-             failure.c_str(), (int)s, o.output);
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 

@@ -34,121 +34,165 @@ Shape boxShape(double edge) {
 
 } // namespace
 
-std::vector<std::string> sceneNames() {
-  return {"incline", "drop", "box_stack", "pyramid", "log_heap", "file"};
-}
-
 Body makePlane(const std::string& name, const Vec3& n, const Vec3& point) {
   Shape s;
   s.type = ShapeType::Plane;
   return makeBody(name, s, 0.0, 0.0, point, Quat::FromTwoVectors(Vec3::UnitZ(), n.normalized()), true);
 }
 
-std::vector<Body> buildScene(const SceneParams& p) {
+namespace {
+
+std::vector<Body> inclineScene(const SceneParams& p) {
+  require(p.theta_deg >= 0 && p.theta_deg < 90,
+          "-theta " + num(p.theta_deg) + ": must be in [0, 90) degrees");
+  const Quat q(Eigen::AngleAxisd(-p.theta_deg * kDeg, Vec3::UnitY()));
+  const Vec3 n = q * Vec3::UnitZ();
+  Shape s;
+  s.type = ShapeType::Plane;
   std::vector<Body> b;
+  b.push_back(makeBody("incline", s, 0, 0, Vec3::Zero(), q, true));
+  b.push_back(makeBody("box", boxShape(p.size), p.density, p.mass, 0.5 * p.size * n, q, false));
+  const Vec3 downhill = q * Vec3(-1, 0, 0);
+  b.back().v = p.v0 * downhill;
+  return b;
+}
+
+// Height of the body's lowest point below its centre (orientation R).
+double lowestPoint(const Shape& s, const Mat3& R) {
+  switch (s.type) {
+  case ShapeType::Sphere:
+    return s.radius;
+  case ShapeType::Box:
+    return (R.transpose() * Vec3::UnitZ()).cwiseAbs().dot(s.half);
+  case ShapeType::Capsule:
+    return s.radius + s.half_length * std::abs(R(2, 2));
+  case ShapeType::Cylinder:
+    return s.half_length * std::abs(R(2, 2)) + s.radius * std::sqrt(std::max(0.0, 1 - R(2, 2) * R(2, 2)));
+  default:
+    return 0.0;
+  }
+}
+
+std::vector<Body> dropScene(const SceneParams& p) {
+  std::vector<Body> b{makePlane("ground", Vec3::UnitZ(), Vec3::Zero())};
+  require(p.height >= 0, "-height " + num(p.height) + ": must be >= 0");
+  Shape s;
+  s.type = shapeFromName(p.drop_body);
+  require(s.type != ShapeType::Plane, "-drop_body plane: a plane cannot be dropped");
+  s.radius = 0.5 * p.size;
+  s.half = Vec3::Constant(0.5 * p.size);
+  s.half_length = 0.5 * p.size;
+  const Quat q(Eigen::AngleAxisd(p.tilt_deg * kDeg, Vec3::UnitX()));
+  Body body = makeBody(p.drop_body, s, p.density, p.mass, Vec3::Zero(), q, false);
+  body.x = Vec3(0, 0, lowestPoint(s, body.R()) + p.height); // lowest point at 'height' above the plane
+  body.v = Vec3(p.v0, 0, 0);
+  body.w = Vec3(0, p.spin, 0);
+  b.push_back(body);
+  return b;
+}
+
+std::vector<Body> boxStackScene(const SceneParams& p) {
+  require(p.stack_height >= 1, "-stack_height " + std::to_string(p.stack_height) + ": must be >= 1");
+  std::vector<Body> b{makePlane("ground", Vec3::UnitZ(), Vec3::Zero())};
+  for (int i = 0; i < p.stack_height; ++i)
+    b.push_back(makeBody("box" + std::to_string(i), boxShape(p.size), p.density, 0.0,
+                         Vec3(0, 0, (i + 0.5) * p.size), Quat::Identity(), false));
+  return b;
+}
+
+std::vector<Body> pyramidScene(const SceneParams& p) {
+  require(p.pyramid_base >= 1, "-pyramid_base " + std::to_string(p.pyramid_base) + ": must be >= 1");
+  std::vector<Body> b{makePlane("ground", Vec3::UnitZ(), Vec3::Zero())};
+  const double pitch = 1.1 * p.size; // gap of 0.1 size between neighbours of a row
+  for (int k = 0; k < p.pyramid_base; ++k)
+    for (int j = 0; j < p.pyramid_base - k; ++j) {
+      const double x = (j - 0.5 * (p.pyramid_base - k - 1)) * pitch;
+      b.push_back(makeBody("box" + std::to_string(k) + "_" + std::to_string(j), boxShape(p.size), p.density,
+                           0.0, Vec3(x, 0, (k + 0.5) * p.size), Quat::Identity(), false));
+    }
+  return b;
+}
+
+std::vector<Body> logHeapScene(const SceneParams& p) {
+  require(p.n_logs >= 1, "-n_logs " + std::to_string(p.n_logs) + ": must be >= 1");
+  require(p.log_radius > 0, "-log_radius " + num(p.log_radius) + ": must be > 0");
+  require(p.log_length > 0, "-log_length " + num(p.log_length) + ": must be > 0");
+  const double r = p.log_radius, hl = 0.5 * p.log_length;
+  const int per_layer = 5;
+  const double pitch = 3.0 * r;
+  const double wx = 0.5 * per_layer * pitch + 2 * r, wy = hl + r + 0.3 * p.log_length;
+  std::vector<Body> b{makePlane("ground", Vec3::UnitZ(), Vec3::Zero()),
+                      makePlane("wall_xm", Vec3::UnitX(), Vec3(-wx, 0, 0)),
+                      makePlane("wall_xp", -Vec3::UnitX(), Vec3(wx, 0, 0)),
+                      makePlane("wall_ym", Vec3::UnitY(), Vec3(0, -wy, 0)),
+                      makePlane("wall_yp", -Vec3::UnitY(), Vec3(0, wy, 0))};
+  std::mt19937 rng(p.seed);
+  std::uniform_real_distribution<double> jitter(-1.0, 1.0);
+  Shape s;
+  s.type = ShapeType::Capsule;
+  s.radius = r;
+  s.half_length = hl;
+  for (int i = 0; i < p.n_logs; ++i) {
+    const int layer = i / per_layer, j = i % per_layer;
+    const double x = (j - 0.5 * (per_layer - 1)) * pitch + 0.3 * r * jitter(rng);
+    const double z = r + 0.5 * r + layer * 3.0 * r;
+    const double yaw = 0.15 * jitter(rng), pitch_ang = 0.1 * jitter(rng);
+    const Quat q = Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ())) *
+                   Quat(Eigen::AngleAxisd(pitch_ang, Vec3::UnitY())) *
+                   Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())); // axis along y
+    b.push_back(
+        makeBody("log" + std::to_string(i), s, p.density, 0.0, Vec3(x, 0.1 * r * jitter(rng), z), q, false));
+  }
+  return b;
+}
+
+std::vector<Body> fileScene(const SceneParams& p) {
+  require(!p.file.empty(), "-scene file needs -scene_file PATH");
+  return readSceneFile(p.file);
+}
+
+// The scene registry: one line per scene (name, one-line description for -help, builder).
+struct SceneEntry {
+  const char* name;
+  const char* help;
+  std::vector<Body> (*build)(const SceneParams&);
+};
+
+const std::vector<SceneEntry>& registry() {
+  static const std::vector<SceneEntry> r = {
+      {"incline", "a box on a plane inclined by -theta degrees", inclineScene},
+      {"drop", "one -drop_body dropped from -height onto a plane", dropScene},
+      {"box_stack", "a column of -stack_height boxes on the ground", boxStackScene},
+      {"pyramid", "a pyramid of boxes, -pyramid_base in the bottom row", pyramidScene},
+      {"log_heap", "-n_logs capsule logs dropped between four walls (Lacoursiere 2003)", logHeapScene},
+      {"file", "the bodies of -scene_file (format: lib/contact/scenes.hpp)", fileScene},
+  };
+  return r;
+}
+
+} // namespace
+
+std::vector<std::string> sceneNames() {
+  std::vector<std::string> v;
+  for (const SceneEntry& e : registry()) v.push_back(e.name);
+  return v;
+}
+
+std::vector<Choice> sceneChoices() {
+  std::vector<Choice> v;
+  for (const SceneEntry& e : registry()) v.push_back({e.name, e.help});
+  return v;
+}
+
+std::vector<Body> buildScene(const SceneParams& p) {
   require(p.size > 0 && std::isfinite(p.size), "-size " + num(p.size) + ": must be > 0");
   require(p.density > 0 && std::isfinite(p.density), "-density " + num(p.density) + ": must be > 0");
   require(p.mass >= 0 && std::isfinite(p.mass), "-mass " + num(p.mass) + ": must be > 0 (0 = from -density)");
-  if (p.scene == "incline") {
-    require(p.theta_deg >= 0 && p.theta_deg < 90,
-            "-theta " + num(p.theta_deg) + ": must be in [0, 90) degrees");
-    const Quat q(Eigen::AngleAxisd(-p.theta_deg * kDeg, Vec3::UnitY()));
-    const Vec3 n = q * Vec3::UnitZ();
-    Shape s;
-    s.type = ShapeType::Plane;
-    b.push_back(makeBody("incline", s, 0, 0, Vec3::Zero(), q, true));
-    b.push_back(makeBody("box", boxShape(p.size), p.density, p.mass, 0.5 * p.size * n, q, false));
-    const Vec3 downhill = q * Vec3(-1, 0, 0);
-    b.back().v = p.v0 * downhill;
-  } else if (p.scene == "drop") {
-    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
-    require(p.height >= 0, "-height " + num(p.height) + ": must be >= 0");
-    Shape s;
-    s.type = shapeFromName(p.drop_body);
-    require(s.type != ShapeType::Plane, "-drop_body plane: a plane cannot be dropped");
-    s.radius = 0.5 * p.size;
-    s.half = Vec3::Constant(0.5 * p.size);
-    s.half_length = 0.5 * p.size;
-    const Quat q(Eigen::AngleAxisd(p.tilt_deg * kDeg, Vec3::UnitX()));
-    Body body = makeBody(p.drop_body, s, p.density, p.mass, Vec3::Zero(), q, false);
-    // lowest point of the body above the plane at 'height'
-    double low = 0.0;
-    const Mat3 R = body.R();
-    switch (s.type) {
-    case ShapeType::Sphere:
-      low = s.radius;
-      break;
-    case ShapeType::Box:
-      low = (R.transpose() * Vec3::UnitZ()).cwiseAbs().dot(s.half);
-      break;
-    case ShapeType::Capsule:
-      low = s.radius + s.half_length * std::abs(R(2, 2));
-      break;
-    case ShapeType::Cylinder:
-      low = s.half_length * std::abs(R(2, 2)) + s.radius * std::sqrt(std::max(0.0, 1 - R(2, 2) * R(2, 2)));
-      break;
-    default:
-      break;
-    }
-    body.x = Vec3(0, 0, low + p.height);
-    body.v = Vec3(p.v0, 0, 0);
-    body.w = Vec3(0, p.spin, 0);
-    b.push_back(body);
-  } else if (p.scene == "box_stack") {
-    require(p.stack_height >= 1, "-stack_height " + std::to_string(p.stack_height) + ": must be >= 1");
-    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
-    for (int i = 0; i < p.stack_height; ++i)
-      b.push_back(makeBody("box" + std::to_string(i), boxShape(p.size), p.density, 0.0,
-                           Vec3(0, 0, (i + 0.5) * p.size), Quat::Identity(), false));
-  } else if (p.scene == "pyramid") {
-    require(p.pyramid_base >= 1, "-pyramid_base " + std::to_string(p.pyramid_base) + ": must be >= 1");
-    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
-    const double pitch = 1.1 * p.size; // gap of 0.1 size between neighbours of a row
-    for (int k = 0; k < p.pyramid_base; ++k)
-      for (int j = 0; j < p.pyramid_base - k; ++j) {
-        const double x = (j - 0.5 * (p.pyramid_base - k - 1)) * pitch;
-        b.push_back(makeBody("box" + std::to_string(k) + "_" + std::to_string(j), boxShape(p.size), p.density,
-                             0.0, Vec3(x, 0, (k + 0.5) * p.size), Quat::Identity(), false));
-      }
-  } else if (p.scene == "log_heap") {
-    require(p.n_logs >= 1, "-n_logs " + std::to_string(p.n_logs) + ": must be >= 1");
-    require(p.log_radius > 0, "-log_radius " + num(p.log_radius) + ": must be > 0");
-    require(p.log_length > 0, "-log_length " + num(p.log_length) + ": must be > 0");
-    const double r = p.log_radius, hl = 0.5 * p.log_length;
-    const int per_layer = 5;
-    const double pitch = 3.0 * r;
-    const double wx = 0.5 * per_layer * pitch + 2 * r, wy = hl + r + 0.3 * p.log_length;
-    b.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
-    b.push_back(makePlane("wall_xm", Vec3::UnitX(), Vec3(-wx, 0, 0)));
-    b.push_back(makePlane("wall_xp", -Vec3::UnitX(), Vec3(wx, 0, 0)));
-    b.push_back(makePlane("wall_ym", Vec3::UnitY(), Vec3(0, -wy, 0)));
-    b.push_back(makePlane("wall_yp", -Vec3::UnitY(), Vec3(0, wy, 0)));
-    std::mt19937 rng(p.seed);
-    std::uniform_real_distribution<double> jitter(-1.0, 1.0);
-    Shape s;
-    s.type = ShapeType::Capsule;
-    s.radius = r;
-    s.half_length = hl;
-    for (int i = 0; i < p.n_logs; ++i) {
-      const int layer = i / per_layer, j = i % per_layer;
-      const double x = (j - 0.5 * (per_layer - 1)) * pitch + 0.3 * r * jitter(rng);
-      const double z = r + 0.5 * r + layer * 3.0 * r;
-      const double yaw = 0.15 * jitter(rng), pitch_ang = 0.1 * jitter(rng);
-      const Quat q = Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ())) *
-                     Quat(Eigen::AngleAxisd(pitch_ang, Vec3::UnitY())) *
-                     Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())); // axis along y
-      b.push_back(makeBody("log" + std::to_string(i), s, p.density, 0.0, Vec3(x, 0.1 * r * jitter(rng), z), q,
-                           false));
-    }
-  } else if (p.scene == "file") {
-    require(!p.file.empty(), "-scene file needs -scene_file PATH");
-    b = readSceneFile(p.file);
-  } else {
-    std::string list;
-    for (const auto& s : sceneNames()) list += (list.empty() ? "" : ", ") + s;
-    throw SceneError("-scene " + p.scene + ": unknown scene (" + list + ")");
-  }
-  return b;
+  for (const SceneEntry& e : registry())
+    if (p.scene == e.name) return e.build(p);
+  std::string list;
+  for (const auto& s : sceneNames()) list += (list.empty() ? "" : ", ") + s;
+  throw SceneError("-scene " + p.scene + ": unknown scene (" + list + ")");
 }
 
 namespace {
@@ -183,15 +227,96 @@ std::vector<Body> readSceneFile(const std::string& path) {
   return parseScene(text, path);
 }
 
+namespace {
+// The keys of one body line, with their defaults.
+struct BodyLine {
+  Shape s;
+  std::string name;
+  Vec3 pos = Vec3::Zero(), normal = Vec3::UnitZ(), vel = Vec3::Zero(), omega = Vec3::Zero();
+  Quat q = Quat::Identity();
+  double density = 1000.0, mass = 0.0;
+  bool is_static = false;
+};
+
+double parseScalar(const std::string& where, const std::string& k, const std::string& v) {
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  require(end && *end == '\0' && !v.empty() && std::isfinite(d), where + ": bad number '" + v + "' for " + k);
+  return d;
+}
+
+// One key=value token (or "static") of a body line.
+void parseKey(const std::string& where, const std::string& tok, BodyLine* b) {
+  if (tok == "static") {
+    b->is_static = true;
+    return;
+  }
+  const auto eq = tok.find('=');
+  require(eq != std::string::npos, where + ": expected key=value, got '" + tok + "'");
+  const std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
+  double deg = 0.0;
+  if (k == "name")
+    b->name = v;
+  else if (k == "pos" || k == "point")
+    b->pos = parseVec(where, k, v, 3, nullptr);
+  else if (k == "normal")
+    b->normal = parseVec(where, k, v, 3, nullptr);
+  else if (k == "vel")
+    b->vel = parseVec(where, k, v, 3, nullptr);
+  else if (k == "omega")
+    b->omega = parseVec(where, k, v, 3, nullptr);
+  else if (k == "half")
+    b->s.half = parseVec(where, k, v, 3, nullptr);
+  else if (k == "axis_angle") {
+    const Vec3 ax = parseVec(where, k, v, 4, &deg);
+    require(ax.norm() > 0, where + ": axis_angle needs a non-zero axis");
+    b->q = Quat(Eigen::AngleAxisd(deg * kDeg, ax.normalized()));
+  } else if (k == "radius")
+    b->s.radius = parseScalar(where, k, v);
+  else if (k == "half_length")
+    b->s.half_length = parseScalar(where, k, v);
+  else if (k == "density")
+    b->density = parseScalar(where, k, v);
+  else if (k == "mass") {
+    b->mass = parseScalar(where, k, v);
+    require(b->mass > 0, where + ": body '" + b->name + "': mass " + v + ": must be > 0 and finite");
+  } else
+    throw SceneError(where + ": unknown key '" + k + "'");
+}
+
+// The body of a line "type key=value ...", default name type<index>; errors name `where`.
+Body parseBody(const std::string& where, const std::string& type, std::stringstream& ss, size_t index) {
+  BodyLine b;
+  try {
+    b.s.type = shapeFromName(type);
+  } catch (const SceneError& e) {
+    throw SceneError(where + ": " + e.what());
+  }
+  b.name = type + std::to_string(index);
+  b.is_static = b.s.type == ShapeType::Plane;
+  for (std::string tok; ss >> tok;) parseKey(where, tok, &b);
+  try {
+    if (b.s.type == ShapeType::Plane) {
+      require(b.normal.norm() > 0, "plane normal must be non-zero");
+      return makePlane(b.name, b.normal, b.pos);
+    }
+    Body body = makeBody(b.name, b.s, b.density, b.mass, b.pos, b.q, b.is_static);
+    body.v = b.vel;
+    body.w = b.omega;
+    return body;
+  } catch (const SceneError& e) {
+    throw SceneError(where + ": " + e.what());
+  }
+}
+} // namespace
+
 std::vector<Body> parseScene(const std::string& text, const std::string& path) {
   require(text.size() <= (size_t)kMaxSceneBytes,
           "scene file " + path + ": larger than " + std::to_string(kMaxSceneBytes) + " bytes");
   std::istringstream in(text);
   std::vector<Body> bodies;
   std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
+  for (int lineno = 1; std::getline(in, line); ++lineno) {
     require(bodies.size() < (size_t)kMaxSceneBodies, path + ":" + std::to_string(lineno) + ": more than " +
                                                          std::to_string(kMaxSceneBodies) + " bodies");
     const auto hash = line.find('#');
@@ -199,79 +324,20 @@ std::vector<Body> parseScene(const std::string& text, const std::string& path) {
     std::stringstream ss(line);
     std::string type;
     if (!(ss >> type)) continue;
-    const std::string where = path + ":" + std::to_string(lineno);
-    ShapeType t;
-    try {
-      t = shapeFromName(type);
-    } catch (const SceneError& e) {
-      throw SceneError(where + ": " + e.what());
-    }
-    Shape s;
-    s.type = t;
-    std::string name = type + std::to_string(bodies.size());
-    Vec3 pos = Vec3::Zero(), normal = Vec3::UnitZ(), vel = Vec3::Zero(), omega = Vec3::Zero();
-    Quat q = Quat::Identity();
-    double density = 1000.0, mass = 0.0;
-    bool is_static = t == ShapeType::Plane;
-    std::string tok;
-    while (ss >> tok) {
-      if (tok == "static") {
-        is_static = true;
-        continue;
-      }
-      const auto eq = tok.find('=');
-      require(eq != std::string::npos, where + ": expected key=value, got '" + tok + "'");
-      const std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
-      double deg = 0.0;
-      auto scalar = [&]() {
-        char* end = nullptr;
-        const double d = std::strtod(v.c_str(), &end);
-        require(end && *end == '\0' && !v.empty() && std::isfinite(d),
-                where + ": bad number '" + v + "' for " + k);
-        return d;
-      };
-      if (k == "name")
-        name = v;
-      else if (k == "pos" || k == "point")
-        pos = parseVec(where, k, v, 3, nullptr);
-      else if (k == "normal")
-        normal = parseVec(where, k, v, 3, nullptr);
-      else if (k == "vel")
-        vel = parseVec(where, k, v, 3, nullptr);
-      else if (k == "omega")
-        omega = parseVec(where, k, v, 3, nullptr);
-      else if (k == "half")
-        s.half = parseVec(where, k, v, 3, nullptr);
-      else if (k == "axis_angle") {
-        const Vec3 ax = parseVec(where, k, v, 4, &deg);
-        require(ax.norm() > 0, where + ": axis_angle needs a non-zero axis");
-        q = Quat(Eigen::AngleAxisd(deg * kDeg, ax.normalized()));
-      } else if (k == "radius")
-        s.radius = scalar();
-      else if (k == "half_length")
-        s.half_length = scalar();
-      else if (k == "density")
-        density = scalar();
-      else if (k == "mass") {
-        mass = scalar();
-        require(mass > 0, where + ": body '" + name + "': mass " + v + ": must be > 0 and finite");
-      } else
-        throw SceneError(where + ": unknown key '" + k + "'");
-    }
-    try {
-      if (t == ShapeType::Plane) {
-        require(normal.norm() > 0, "plane normal must be non-zero");
-        bodies.push_back(makePlane(name, normal, pos));
-      } else {
-        bodies.push_back(makeBody(name, s, density, mass, pos, q, is_static));
-        bodies.back().v = vel;
-        bodies.back().w = omega;
-      }
-    } catch (const SceneError& e) {
-      throw SceneError(where + ": " + e.what());
-    }
+    bodies.push_back(parseBody(path + ":" + std::to_string(lineno), type, ss, bodies.size()));
   }
   require(!bodies.empty(), "scene file " + path + ": no bodies");
+  return bodies;
+}
+
+std::vector<Body> buildValidScene(const SceneParams& p, double overlap_tol) {
+  std::vector<Body> bodies = buildScene(p);
+  validateScene(bodies, overlap_tol);
+  for (size_t i = 0; i < bodies.size(); ++i) // every pair the scene can produce has a contact generator
+    for (size_t j = i + 1; j < bodies.size(); ++j) {
+      std::vector<Contact> tmp;
+      collide(bodies, (int)i, (int)j, -INFINITY, &tmp);
+    }
   return bodies;
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "contact/body.hpp"
+#include "core/named_choice.hpp"
 
 #include <string>
 #include <vector>
@@ -36,6 +37,8 @@ struct SceneParams {
 };
 
 std::vector<std::string> sceneNames();
+// The registered scenes with their one-line descriptions (the -scene choices, scenes.cpp's registry).
+std::vector<Choice> sceneChoices();
 // Throws SceneError with a one-line message for bad parameters or an unknown scene.
 std::vector<Body> buildScene(const SceneParams& p);
 std::vector<Body> readSceneFile(const std::string& path);
@@ -46,6 +49,8 @@ constexpr int kMaxSceneBodies = 1000000;
 std::vector<Body> parseScene(const std::string& text, const std::string& path = "scene");
 // Throws SceneError if two static bodies (other than planes) overlap by more than tol.
 void validateScene(const std::vector<Body>& bodies, double tol);
+// buildScene, validateScene, and a check that every pair of bodies has a contact generator (throws SceneError).
+std::vector<Body> buildValidScene(const SceneParams& p, double overlap_tol);
 // A static plane with world normal n through point.
 Body makePlane(const std::string& name, const Vec3& n, const Vec3& point);
 

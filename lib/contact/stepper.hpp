@@ -8,26 +8,15 @@
 //   phi/dt (phi >= 0, a gap closes in one step) or beta phi/dt (phi < 0, penetration), c_t = 0; normal rows:
 //   0 <= lambda_n _|_ w_n >= 0;  tangent rows: box bounds -mu nu <= lambda_t <= mu nu;
 // then v = v* + M^-1 J^T lambda, x += dt v, q <- exp(dt w / 2) q. Restitution is 0.
-// Friction models (estimate nu of the normal impulse used in the bounds):
-//   none        plain LCP of the normal rows only;
-//   box         nu = |g| dt m / (contacts of the body): fixed estimate from the weight;
-//   scaled_box  nu = the normal impulse of the same contact at the previous step (else the box estimate);
-//   splitting   repeat { solve with bounds mu nu; nu <- lambda_n } until max|delta lambda_n| <= tol (1 +
-//   |lambda|)
-//               or the cap, starting from nu = 0 (zero friction), +inf (infinite friction) or the previous
-//               step's normal impulses (paper, sec. 4);
-//   polyhedral  the linearised cone LCP (paper, Eq. 6; Stewart & Trinkle 1996) with d directions per contact:
-//               [lambda_n, beta, gamma], D^T v + e gamma >= 0 _|_ beta >= 0, mu lambda_n - e^T beta >= 0 _|_
-//               gamma >= 0, with a compliance eps gamma on the cone rows (strictly copositive matrix), equilibrated
-//               by a diagonal scaling, solved by Lemke (then lemke_rf, the Newton methods; every answer
-//               verified on the unscaled problem).
+// The friction model builds the problem from A and b: friction_formulation.hpp (one file per model).
 // Tangent rows with zero bound (mu = 0, or zero estimated normal force) are left out of the problem.
 #pragma once
 
 #include "contact/collision.hpp"
+#include "core/named_choice.hpp"
 #include "lcp/problem.hpp"
 
-#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +30,9 @@ bool frictionFromName(const std::string& name, FrictionModel* m);
 enum class SplitStart { Zero = 0, Infinite = 1, Previous = 2 };
 const char* splitStartName(SplitStart s);
 bool splitStartFromName(const std::string& name, SplitStart* s);
+std::vector<Choice> splitStartChoices(); // the -splitting_start choices
+
+class FrictionFormulation;
 
 struct StepperOptions {
   double dt = 0.01;
@@ -111,7 +103,7 @@ struct StepStats {
 
 class Stepper {
 public:
-  explicit Stepper(StepperOptions o) : o_(std::move(o)) {}
+  explicit Stepper(StepperOptions o);
   const StepperOptions& options() const { return o_; }
   // Advances the bodies by one step. On failure (every solver failed, or a non-finite state) the bodies
   // are left unchanged and stats.failed is set; lastProblem() is the problem that failed.
@@ -135,7 +127,12 @@ public:
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
+  void matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
+                             std::vector<bool>* has_prev) const;
+  bool solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
+                     std::vector<Vec3>* lam, StepStats* st);
   StepperOptions o_;
+  std::shared_ptr<const FrictionFormulation> form_;
   std::vector<int> still_;
   std::vector<char> asleep_;
   std::vector<Contact> contacts_;
@@ -147,15 +144,11 @@ private:
   bool keep_problems_ = false;
 };
 
-// The Stewart-Trinkle / Anitescu-Potra LCP (paper, Eq. 6) of nc contacts with d friction directions from
-// the Delassus matrix A and right-hand side b ordered [normals (nc), directions (nc d, contact-major)]:
-// unknowns [lambda_n (nc), beta (nc d), gamma (nc)],
-//   M = [A_nn A_nD 0; A_Dn A_DD E; mu I -E^T 0],  q = [b_n; b_D; 0]  (E: one 1 per direction of a contact).
-lcp::Problem polyhedralLcp(const lcp::Mat& A, const lcp::Vec& b, int nc, int d, double mu);
-// Diagonal scaling s (z = diag(s) z') that equilibrates polyhedralLcp's matrix (see StepperOptions).
-lcp::Vec polyhedralScaling(const lcp::Problem& p, int nc, int d);
-
 // Total mechanical energy sum(0.5 m v^2 + 0.5 w^T I w - m g.x) of the dynamic bodies.
 double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity);
+// Sum over body pairs of |sum of tangential impulse vectors| / sum of normal impulses (ratio), the cone
+// violation sum_i max(0, |lambda_t,i| - mu lambda_n,i) / sum lambda_n, and sum lambda_n (normal).
+void forceMeasures(const std::vector<Contact>& cs, const std::vector<Vec3>& lam, double mu, double* ratio,
+                   double* violation, double* normal);
 
 } // namespace suite::contact

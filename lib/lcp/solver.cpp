@@ -1,4 +1,5 @@
-// Verified solve (acceptance rule, active-set refinement) and the helpers shared by the LCP solvers.
+// Verified solve (acceptance rule, active-set refinement), the chain of solvers with a fallback, and the
+// helpers shared by the LCP solvers.
 #include "lcp/solver.hpp"
 
 #include <mpi.h>
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <sstream>
 
 namespace suite::lcp {
 
@@ -191,6 +193,107 @@ Result solve(const Solver& s, const Problem& p, const SolverOptions& opt) {
   r.cpu_time =
       static_cast<double>(c1.tv_sec - c0.tv_sec) + 1e-9 * static_cast<double>(c1.tv_nsec - c0.tv_nsec);
   return r;
+}
+
+namespace {
+
+// diag(s) M diag(s), diag(s) q, [l, u] / s: the problem in z' = z / s.
+Problem scaledProblem(const Problem& p, const Vec& s) {
+  Problem ps = p;
+  ps.M = s.asDiagonal() * p.M * s.asDiagonal();
+  ps.q = s.cwiseProduct(p.q);
+  ps.l = p.l.cwiseQuotient(s);
+  ps.u = p.u.cwiseQuotient(s);
+  return ps;
+}
+
+// At most max exact solves on the index sets read off r (each kept only if it lowers the residual on p):
+// they repair the round-off a long pivot sequence leaves. Returns how many were kept.
+int refineOnStates(const Problem& p, double tol, int max, Result* r) {
+  int kept = 0;
+  for (int k = 0; k < max && !(r->residual <= tol); ++k) {
+    Result t = *r;
+    if (!solveStates(p, statesFromSolution(p, r->z, r->w), &t.z)) break;
+    evaluate(p, &t);
+    if (!(t.residual < r->residual)) break;
+    *r = t;
+    ++kept;
+  }
+  return kept;
+}
+
+// One solver on `solved` (p itself, or its scaled form when sc is given), its answer mapped back to p,
+// refined and verified there.
+Result attempt(const Solver& s, const Problem& p, const Problem& solved, const Vec* sc, bool first,
+               const ChainOptions& o, double tol, Attempt* a) {
+  SolverOptions so;
+  so.rel_tol = sc ? o.scaled_tol_factor * o.rel_tol : o.rel_tol;
+  if (first) so.max_iterations = o.first_max_iterations;
+  Vec warm;
+  if (o.warm_start && o.warm_start->size() == p.size() && o.warm_start->allFinite()) {
+    warm = sc ? Vec(o.warm_start->cwiseQuotient(*sc)) : *o.warm_start;
+    so.warm_start = &warm;
+  }
+  Result r = solve(s, solved, so);
+  a->status = r.status;
+  a->iterations = r.iterations;
+  a->pivots = r.pivots;
+  const bool finite = r.z.size() == p.size() && r.z.allFinite();
+  if (finite) {
+    if (sc) r.z = sc->cwiseProduct(r.z);
+    evaluate(p, &r); // residual on the original problem
+    a->refinements = refineOnStates(p, tol, o.refinements, &r);
+  }
+  a->residual = r.residual;
+  a->message = r.message;
+  a->accepted = finite && r.residual <= tol;
+  return r;
+}
+
+} // namespace
+
+Result solveWithChain(const Problem& p, const std::vector<std::string>& names, const ChainOptions& o,
+                      std::vector<Attempt>* attempts) {
+  std::vector<Attempt> local;
+  std::vector<Attempt>& att = attempts ? *attempts : local;
+  att.clear();
+  const Problem ps = o.scale ? scaledProblem(p, *o.scale) : Problem();
+  const double tol = acceptanceTolerance(p, o.rel_tol);
+  Result r;
+  for (size_t k = 0; k < names.size(); ++k)
+    for (int f = 0; f < (o.scale ? 2 : 1); ++f) {
+      Attempt a;
+      a.solver = names[k];
+      a.form = !o.scale ? Form::Plain : f == 0 ? Form::Scaled : Form::Unscaled;
+      const std::unique_ptr<Solver> s = o.make ? o.make(names[k]) : makeSolver(names[k]);
+      a.known = s != nullptr;
+      if (s) r = attempt(*s, p, f == 0 && o.scale ? ps : p, f == 0 ? o.scale : nullptr, k == 0, o, tol, &a);
+      att.push_back(a);
+      if (a.accepted) {
+        r.status = Status::Solved;
+        return r;
+      }
+    }
+  if (r.status == Status::Solved) r.status = Status::NotAccepted;
+  return r;
+}
+
+std::string describeAttempts(const std::vector<Attempt>& attempts) {
+  std::ostringstream why;
+  for (const Attempt& a : attempts) {
+    if (a.accepted) continue;
+    why << a.solver;
+    if (!a.known) {
+      why << ": unknown solver; ";
+      continue;
+    }
+    why << (a.form == Form::Scaled     ? " (scaled)"
+            : a.form == Form::Unscaled ? " (unscaled)"
+                                       : "")
+        << ": " << statusName(a.status) << " (residual " << a.residual
+        << (a.message.empty() ? "" : ", " + a.message) << "); ";
+  }
+  return why.str();
 }
 
 } // namespace suite::lcp

@@ -1,6 +1,7 @@
 // Solver interface and registry of the LCP library: every solver returns z, w, a status, iteration and
 // pivot counts and the natural-map residual; solve() verifies the answer (acceptance rule of problem.hpp)
-// so that a solver can never report a wrong answer as solved.
+// so that a solver can never report a wrong answer as solved; solveWithChain() tries a chain of solvers (the
+// next one when an answer fails the acceptance rule on the original problem).
 //
 // Adding a solver: one file in lib/lcp/solvers/ defining `std::unique_ptr<Solver> makeXxx()`, plus one
 // line in registry.cpp.
@@ -8,6 +9,7 @@
 
 #include "lcp/problem.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,6 +73,46 @@ std::unique_ptr<Solver> makeSolver(const std::string& name);
 // solution by exact solves on its active set (at most 3, counted in Result::refinements), and accepts
 // only when residual <= tolerance; a claimed solution above the tolerance becomes NotAccepted.
 Result solve(const Solver& s, const Problem& p, const SolverOptions& opt = {});
+
+// ---- a chain of solvers: each answer verified on the original problem, the next solver on failure ----
+// How an attempt saw the problem: as given (no scaling in the chain), scaled, or unscaled after the scaled one.
+enum class Form { Plain, Scaled, Unscaled };
+
+// One attempt of solveWithChain.
+struct Attempt {
+  std::string solver;
+  Form form = Form::Plain;
+  bool known = true;                      // false: no such solver (not tried, not a fallback)
+  bool accepted = false;                  // its answer met the acceptance rule on the original problem
+  Status status = Status::NumericalError; // the method's own status (from solve())
+  double residual =
+      kInf; // natural-map residual on the original problem (of the solved form if z is not finite)
+  std::string message;
+  int iterations = 0;
+  long long pivots = 0;
+  int refinements = 0; // active-set refinements on the original problem after the method
+};
+
+struct ChainOptions {
+  double rel_tol = 1e-10;       // acceptance on the ORIGINAL problem: residual <= rel_tol (1 + ||q||_inf)
+  int first_max_iterations = 0; // iteration cap of the chain's first solver (0: its default); others: theirs
+  const Vec* warm_start = nullptr; // initial z of every solver (left out if its size or values are unusable)
+  // Scaling s (z = diag(s) z'): each solver first on diag(s) M diag(s), diag(s) q, [l, u] / s, solved to
+  // rel_tol * scaled_tol_factor (the natural-map residual is not scale invariant), then on the original.
+  const Vec* scale = nullptr;
+  double scaled_tol_factor = 1e-3;
+  int refinements = 2; // active-set refinements of a finite answer on the original problem (kept if better)
+  std::function<std::unique_ptr<Solver>(const std::string&)> make; // solver factory (empty: makeSolver)
+};
+
+// Tries the named solvers in turn with solve() and returns the first answer whose natural-map residual on p
+// meets the acceptance rule, with status Solved even when the method reported another one (seen: Lemke
+// 'ray_termination' with residual 1e-14); when none does, the last attempt's result, never Solved.
+// attempts (optional): every attempt in order.
+Result solveWithChain(const Problem& p, const std::vector<std::string>& names, const ChainOptions& o,
+                      std::vector<Attempt>* attempts = nullptr);
+// The failed attempts in one line: "name[ (scaled| (unscaled)]: status (residual r[, message]); " each.
+std::string describeAttempts(const std::vector<Attempt>& attempts);
 
 // ---- helpers shared by the solvers ----
 // Index states of the active-set methods: z at lower bound, at upper bound, or free (w = 0).

@@ -53,14 +53,16 @@ for np_ in (NP,):
     steps = 120
     ref, _, _, asleep = final(run(np_, TMP / f"a{np_}.h5", "-steps", steps, "-quiet") and TMP / f"a{np_}.h5")
     print(f"np {np_}: reference run, {asleep} bodies asleep at the end")
-    # periodic checkpoints, restart from the latest (step 100)
+    # periodic checkpoints (every 50 steps, and the time loop's final one at step 120; the newest 3 kept),
+    # restart from the last periodic one (step 100; "latest" is the final one, tested after the stop below)
     d = TMP / f"ck{np_}"
-    run(np_, TMP / f"b{np_}.h5", "-steps", steps, "-checkpoint_dir", d, "-checkpoint_every", 50, "-quiet")
+    run(np_, TMP / f"b{np_}.h5", "-steps", steps, "-checkpoint_dir", d, "-checkpoint_every", 50,
+        "-checkpoint_keep", 3, "-quiet")
     files = sorted(p.name for p in d.glob("contact_*.h5"))
-    if files != ["contact_0000000050.h5", "contact_0000000100.h5"]:
+    if files != ["contact_0000000050.h5", "contact_0000000100.h5", "contact_0000000120.h5"]:
         failures.append(f"np {np_}: checkpoint files {files}")
-    run(np_, TMP / f"c{np_}.h5", "-steps", steps, "-checkpoint_dir", d, "-restart", "latest", "-quiet")
-    same(f"np {np_} periodic + restart latest", ref, final(TMP / f"c{np_}.h5")[0])
+    run(np_, TMP / f"c{np_}.h5", "-steps", steps, "-restart", d / "contact_0000000100.h5", "-quiet")
+    same(f"np {np_} periodic + restart from step 100", ref, final(TMP / f"c{np_}.h5")[0])
     # stopped by the wall-time limit (at whatever step k it reaches): a final checkpoint at k, then the restart
     # runs to k + 50 and must equal an uninterrupted run of k + 50 steps
     d2 = TMP / f"wall{np_}"

@@ -2,6 +2,7 @@
 // every step's LCP of a small log heap is solved by Lemke itself (no fallback) and verified here on the
 // unscaled problem; the friction of each contact stays inside the polygon; on the incline the force ratio
 // reproduces min(tan th, mu) within the polygon's approximation error mu (1 - cos(pi / d)).
+#include "contact/friction_formulation.hpp"
 #include "contact/scenes.hpp"
 #include "contact/stepper.hpp"
 #include "lcp/solver.hpp"

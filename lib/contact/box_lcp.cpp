@@ -1,0 +1,120 @@
+// The box LCP of the contact rows (see box_lcp.hpp).
+#include "contact/box_lcp.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace suite::contact {
+
+std::vector<ConstraintRow> boxRows(const std::vector<Contact>& cs, bool friction) {
+  std::vector<ConstraintRow> rows;
+  for (int i = 0; i < (int)cs.size(); ++i) {
+    rows.push_back({i, cs[i].n, true});
+    if (friction) {
+      rows.push_back({i, cs[i].t1, false});
+      rows.push_back({i, cs[i].t2, false});
+    }
+  }
+  return rows;
+}
+
+std::vector<std::string> boxChain(const StepperOptions& o) {
+  std::vector<std::string> names{o.lcp_solver};
+  for (const auto& f : o.fallback_solvers)
+    if (f != o.lcp_solver) names.push_back(f);
+  return names;
+}
+
+BoxRows initialBoxRows(const ContactStep& step, int per) {
+  BoxRows s;
+  s.nc = (int)step.contacts.size();
+  s.per = per;
+  s.nu.assign(s.nc, 0.0);
+  s.full = lcp::Vec::Zero(s.nc * per);
+  for (int i = 0; i < s.nc; ++i)
+    for (int k = 0; k < per; ++k) s.full[i * per + k] = step.prev[i][k];
+  return s;
+}
+
+std::vector<double> weightEstimates(const ContactStep& step, const StepperOptions& o) {
+  std::vector<int> count(step.bodies.size(), 0);
+  for (const Contact& c : step.contacts) ++count[c.a], ++count[c.b];
+  std::vector<double> nu;
+  for (const Contact& c : step.contacts) {
+    double e = 0.0;
+    int k = 0;
+    for (int id : {c.a, c.b})
+      if (!step.bodies[id].is_static) e += step.bodies[id].mass / count[id], ++k;
+    nu.push_back(k ? o.gravity.norm() * o.dt * e / k : 0.0);
+  }
+  return nu;
+}
+
+namespace {
+// The problem of the active rows (normals, and the tangents with a non-zero bound); warm: their impulses.
+lcp::Problem activeProblem(const DelassusSystem& sys, double mu, const BoxRows& s, std::vector<int>* active,
+                           lcp::Vec* warm) {
+  bool any_t = false;
+  for (int i = 0; i < s.nc; ++i) {
+    active->push_back(i * s.per);
+    if (s.per == 3 && mu * s.nu[i] > 0) {
+      active->push_back(i * s.per + 1), active->push_back(i * s.per + 2);
+      any_t = true;
+    }
+  }
+  const int n = (int)active->size();
+  lcp::Mat M(n, n);
+  lcp::Vec q(n), l(n), u(n);
+  warm->resize(n);
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) M(r, c) = sys.A((*active)[r], (*active)[c]);
+    q[r] = sys.b[(*active)[r]];
+    (*warm)[r] = s.full[(*active)[r]];
+    const bool normal = (*active)[r] % s.per == 0;
+    const double bound = normal ? lcp::kInf : mu * s.nu[(*active)[r] / s.per];
+    l[r] = normal ? 0.0 : -bound;
+    u[r] = bound;
+  }
+  return any_t ? lcp::makeBox(M, q, l, u, "contact") : lcp::makeLcp(M, q, "contact");
+}
+} // namespace
+
+bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,
+                  ChainSolve& solver, BoxRows* s, double* err, double* nmax, StepStats* st) {
+  std::vector<int> active;
+  lcp::Vec warm, z;
+  const lcp::Problem p = activeProblem(sys, mu, *s, &active, &warm);
+  if (!solver.solve(p, chain, nullptr, &warm, &z)) return false;
+  st->rows = (int)active.size();
+  lcp::Vec next = lcp::Vec::Zero(s->nc * s->per);
+  for (size_t r = 0; r < active.size(); ++r) next[active[r]] = z[r];
+  *err = 0.0, *nmax = 0.0;
+  for (int i = 0; i < s->nc; ++i) {
+    *err = std::max(*err, std::abs(next[i * s->per] - (first ? 0.0 : s->full[i * s->per])));
+    *nmax = std::max(*nmax, std::abs(next[i * s->per]));
+  }
+  s->full = next;
+  return true;
+}
+
+void boxImpulses(const BoxRows& s, Impulses* out) {
+  out->z = s.full;
+  out->lambda.assign(s.nc, Vec3::Zero());
+  for (int i = 0; i < s.nc; ++i)
+    for (int k = 0; k < s.per; ++k) out->lambda[i][k] = s.full[i * s.per + k];
+}
+
+bool solveSingleBoxPass(const ContactStep& step, const DelassusSystem& sys, int per, std::vector<double> nu,
+                        double mu, const std::vector<std::string>& chain, ChainSolve& solver, Impulses* out,
+                        StepStats* st) {
+  BoxRows s = initialBoxRows(step, per);
+  s.nu = std::move(nu);
+  double err = 0.0, nmax = 0.0;
+  if (!solveBoxPass(sys, mu, chain, true, solver, &s, &err, &nmax, st)) return false;
+  st->splitting_iterations = 1;
+  st->splitting_error = err;
+  boxImpulses(s, out);
+  return true;
+}
+
+} // namespace suite::contact

@@ -1,0 +1,46 @@
+// The contact constraints of one step: one row per (contact, direction) with its Jacobian J (6 entries per
+// body) and M^-1 J^T, the Delassus matrix A = J M^-1 J^T (+ reg A_ii on the diagonal, a compliance as in
+// SPOOK) and b = J v* + stabilisation (normal rows: phi/dt for a gap, beta phi/dt for a penetration;
+// Baumgarte). The friction formulations (friction_formulation.hpp) choose the rows and build their LCP from
+// A and b; the stepper applies the impulses z of the rows: v += M^-1 J^T z.
+#pragma once
+
+#include "contact/body.hpp"
+#include "contact/collision.hpp"
+#include "lcp/problem.hpp"
+
+#include <vector>
+
+namespace suite::contact {
+
+struct StepperOptions;
+
+// A constraint row: the impulse of contact `contact` along dir (unit), a normal row or a friction row.
+struct ConstraintRow {
+  int contact = 0;
+  Vec3 dir = Vec3::Zero();
+  bool normal = true;
+};
+
+using V6 = Eigen::Matrix<double, 6, 1>;
+
+// One constraint row: J = [ja for body ba, jb for body bb], with M^-1 J^T parts ma, mb (-1: static).
+struct JRow {
+  int ba = -1, bb = -1;
+  V6 ja = V6::Zero(), jb = V6::Zero(), ma = V6::Zero(), mb = V6::Zero();
+};
+
+struct DelassusSystem {
+  std::vector<JRow> rows;
+  lcp::Mat A;
+  lcp::Vec b;
+};
+
+// inv_i: world inverse inertia per body (0 for static ones); vstar: velocities after the external forces.
+DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
+                             const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
+                             const std::vector<ConstraintRow>& rows, const StepperOptions& o);
+// v += M^-1 J^T z, w += (M^-1 J^T z) angular part, over the rows of sys (z: one impulse per row).
+void applyImpulses(const DelassusSystem& sys, const lcp::Vec& z, std::vector<Vec3>* v, std::vector<Vec3>* w);
+
+} // namespace suite::contact

@@ -1,0 +1,86 @@
+// Friction model "splitting" (Lacoursiere, SIGRAD 2003, sec. 4, operator splitting): repeat { solve the box
+// LCP with bounds mu nu; nu <- lambda_n } until max|delta lambda_n| <= tol (1 + |lambda_n|_inf) or the pass
+// cap, starting from nu = 0 (zero friction), +inf (infinite friction) or the previous step's normal impulses
+// (-splitting_start). Each pass's change and force ratio are kept (StepStats::split_errors / split_ratios).
+#include "contact/box_lcp.hpp"
+
+namespace suite::contact {
+
+const char* splitStartName(SplitStart s) {
+  switch (s) {
+  case SplitStart::Zero:
+    return "zero";
+  case SplitStart::Infinite:
+    return "infinite";
+  case SplitStart::Previous:
+    return "previous";
+  }
+  return "?";
+}
+
+bool splitStartFromName(const std::string& name, SplitStart* s) {
+  for (int i = 0; i < 3; ++i)
+    if (name == splitStartName(SplitStart(i))) {
+      *s = SplitStart(i);
+      return true;
+    }
+  return false;
+}
+
+std::vector<Choice> splitStartChoices() {
+  return {{"zero", "nu = 0: the first pass without friction"},
+          {"infinite", "nu = +inf: the first pass with sticking friction"},
+          {"previous", "nu = the previous step's normal impulse (else the weight estimate)"}};
+}
+
+namespace {
+class SplittingFriction : public FrictionFormulation {
+public:
+  explicit SplittingFriction(const StepperOptions& o) : o_(o), chain_(boxChain(o)) {}
+  std::vector<ConstraintRow> rows(const std::vector<Contact>& cs) const override {
+    return boxRows(cs, o_.mu > 0);
+  }
+  bool impulses(const ContactStep& step, const DelassusSystem& sys, ChainSolve& solver, Impulses* out,
+                StepStats* st) const override;
+
+private:
+  std::vector<double> startEstimates(const ContactStep& step) const;
+  const StepperOptions o_;
+  const std::vector<std::string> chain_;
+};
+
+std::vector<double> SplittingFriction::startEstimates(const ContactStep& step) const {
+  std::vector<double> nu = weightEstimates(step, o_);
+  for (size_t i = 0; i < nu.size(); ++i)
+    nu[i] = o_.split_start == SplitStart::Zero       ? 0.0
+            : o_.split_start == SplitStart::Infinite ? lcp::kInf
+                                                     : (step.has_prev[i] ? step.prev[i][0] : nu[i]);
+  return nu;
+}
+
+bool SplittingFriction::impulses(const ContactStep& step, const DelassusSystem& sys, ChainSolve& solver,
+                                 Impulses* out, StepStats* st) const {
+  BoxRows s = initialBoxRows(step, o_.mu > 0 ? 3 : 1);
+  s.nu = startEstimates(step);
+  const int max_pass = std::max(1, o_.splitting_max_it);
+  for (int pass = 0; pass < max_pass; ++pass) {
+    double err = 0.0, nmax = 0.0, ratio = 0.0, viol = 0.0, fn = 0.0;
+    if (!solveBoxPass(sys, o_.mu, chain_, pass == 0, solver, &s, &err, &nmax, st)) return false;
+    boxImpulses(s, out);
+    st->splitting_iterations = pass + 1;
+    st->splitting_error = err;
+    forceMeasures(step.contacts, out->lambda, o_.mu, &ratio, &viol, &fn);
+    st->split_errors.push_back(err);
+    st->split_ratios.push_back(ratio);
+    if (pass > 0 && err <= o_.splitting_tol * (1.0 + nmax)) break;
+    for (int i = 0; i < s.nc; ++i) s.nu[i] = out->lambda[i][0];
+  }
+  return true;
+}
+} // namespace
+
+std::unique_ptr<FrictionFormulation> makeSplittingFriction(const StepperOptions& o) {
+  return std::make_unique<SplittingFriction>(o);
+}
+
+} // namespace suite::contact

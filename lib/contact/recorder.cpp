@@ -1,0 +1,44 @@
+// Frames and per-step statistics of a contact run (see recorder.hpp).
+#include "contact/recorder.hpp"
+
+namespace suite::contact {
+
+void Recorder::frame(const std::vector<Body>& bodies, long long step, double t) {
+  frame_time.push_back(t);
+  frame_step.push_back(step);
+  for (const Body& b : bodies) {
+    pos.insert(pos.end(), {b.x.x(), b.x.y(), b.x.z()});
+    quat.insert(quat.end(), {b.q.w(), b.q.x(), b.q.y(), b.q.z()});
+    vel.insert(vel.end(), {b.v.x(), b.v.y(), b.v.z(), b.w.x(), b.w.y(), b.w.z()});
+  }
+}
+
+void Recorder::step(const StepStats& s, double t, double energy_value, double wall) {
+  time.push_back(t);
+  contacts.push_back(s.contacts);
+  sleeping.push_back(s.sleeping);
+  rows.push_back(s.rows);
+  int idx = -1;
+  for (size_t k = 0; k < solver_names.size(); ++k)
+    if (solver_names[k] == s.solver) idx = (int)k;
+  if (idx < 0 && !s.solver.empty()) {
+    solver_names.push_back(s.solver);
+    idx = (int)solver_names.size() - 1;
+  }
+  solver_index.push_back(idx);
+  iterations.push_back(s.iterations);
+  pivots.push_back(s.pivots);
+  splitting_iterations.push_back(s.splitting_iterations);
+  fallbacks.push_back(s.fallbacks);
+  force_ratio.push_back(s.force_ratio);
+  cone_violation.push_back(s.cone_violation);
+  residual.push_back(s.residual);
+  splitting_error.push_back(s.splitting_error);
+  energy.push_back(energy_value);
+  step_wall.push_back(wall);
+  split_errors.insert(split_errors.end(), s.split_errors.begin(), s.split_errors.end());
+  split_ratios.insert(split_ratios.end(), s.split_ratios.begin(), s.split_ratios.end());
+  split_offset.push_back((long long)split_errors.size());
+}
+
+} // namespace suite::contact

@@ -1,0 +1,30 @@
+// What a contact run records: frames (every body's position, orientation and velocities at chosen steps)
+// and the statistics of every step (contacts, problem size, solver, iterations, fallbacks, splitting history,
+// energy, wall time), in flat arrays ready to be written (apps/contact/contact_output.cpp).
+#pragma once
+
+#include "contact/stepper.hpp"
+
+#include <string>
+#include <vector>
+
+namespace suite::contact {
+
+struct Recorder {
+  // frames
+  std::vector<double> frame_time, pos, quat, vel; // F x nb x {3, 4, 6}
+  std::vector<long long> frame_step;
+  // per step
+  std::vector<int> contacts, sleeping, rows, solver_index, iterations, splitting_iterations, fallbacks;
+  std::vector<long long> pivots;
+  std::vector<double> time, force_ratio, cone_violation, residual, splitting_error, energy, step_wall;
+  std::vector<std::string> solver_names;
+  // splitting histories (flattened, offsets per step)
+  std::vector<double> split_errors, split_ratios;
+  std::vector<long long> split_offset{0};
+
+  void frame(const std::vector<Body>& bodies, long long step, double t);
+  void step(const StepStats& s, double t, double energy_value, double wall);
+};
+
+} // namespace suite::contact
