@@ -36,8 +36,9 @@ PetscErrorCode EulerRun::checkpointIo(bool write, const std::string& path, Petsc
   std::vector<suite::CheckpointField> fields{
       {"U", dims, start, count, u},
       {"totals0", {ntot}, {0}, {ctx_.rank() == 0 ? ntot : 0ULL}, totals0_.data()}};
-  const suite::CheckpointHeader header{
-      "euler", checkpointTag(), *step, *time, 0.0, {(long long)opt_.n[0], (long long)opt_.n[1], (long long)opt_.n[2]}};
+  std::vector<long long> grid{opt_.n[0]}; // 1D: {nx}; 2D/3D: {nx, ny, nz} (nz = 1 in 2D)
+  if (dim() > 1) grid.push_back(opt_.n[1]), grid.push_back(opt_.n[2]);
+  const suite::CheckpointHeader header{"euler", checkpointTag(), *step, *time, 0.0, grid};
   PetscErrorCode ierr;
   if (write) {
     ierr = suite::writeCheckpoint(ctx_.comm(), path, header, fields);

@@ -25,8 +25,8 @@ PetscErrorCode EulerRun::readReference(std::vector<double> ref[3], double scale[
     PetscCall(in.readAll(names[c], &fine, &dims));
     const long long nf = (long long)fine.size();
     PetscCheck(nf >= nx && nf % nx == 0, ctx_.comm(), PETSC_ERR_ARG_SIZ,
-               "-reference %s has %lld cells: must be a multiple of -nx %" PetscInt_FMT, opt_.reference.c_str(),
-               nf, nx);
+               "-reference %s has %lld cells: must be a multiple of -nx %" PetscInt_FMT,
+               opt_.reference.c_str(), nf, nx);
     const long long r = nf / nx;
     for (PetscInt k = 0; k < m_[0]; ++k) { // linear interpolation of the fine point values at x_j
       const double s = (s_[0] + k + 0.5) * r - 0.5;
@@ -48,7 +48,8 @@ PetscErrorCode EulerRun::computeLineErrors() {
   PetscCall(primitiveFields(U_, fields));
   const std::vector<double>* num[3] = {&fields[0], &fields[1], &fields[4]};
   for (int c = 0; c < 3; ++c) ref[c].resize(m_[0]);
-  if (!opt_.reference.empty()) PetscCall(readReference(ref, scale));
+  if (!opt_.reference.empty())
+    PetscCall(readReference(ref, scale));
   else
     for (PetscInt k = 0; k < m_[0]; ++k) {
       double x[3];
@@ -105,8 +106,9 @@ PetscErrorCode EulerRun::computeGridErrors() {
   err_.l1[0] = sums[0] / ncell; // mean over the cells = (1/|domain|) integral
   err_.l2[0] = std::sqrt(sums[1] / ncell);
   err_.linf[0] = linf;
-  PetscCall(suite::logInfo(ctx_.comm(), false, "error rho: L1 %.6e L2 %.6e Linf %.6e (against exact solution)",
-                           err_.l1[0], err_.l2[0], err_.linf[0]));
+  PetscCall(suite::logInfo(ctx_.comm(), false,
+                           "error rho: L1 %.6e L2 %.6e Linf %.6e (against exact solution)", err_.l1[0],
+                           err_.l2[0], err_.linf[0]));
   PetscFunctionReturn(0);
 }
 

@@ -40,8 +40,8 @@ PetscErrorCode EulerRun::setupGrid() {
   if (dim() == 1)
     PetscCall(DMDACreate1d(comm, bt[0], n[0], nv(), w, nullptr, &da_));
   else if (dim() == 2)
-    PetscCall(DMDACreate2d(comm, bt[0], bt[1], DMDA_STENCIL_STAR, n[0], n[1], PETSC_DECIDE, PETSC_DECIDE, nv(), w,
-                           nullptr, nullptr, &da_));
+    PetscCall(DMDACreate2d(comm, bt[0], bt[1], DMDA_STENCIL_STAR, n[0], n[1], PETSC_DECIDE, PETSC_DECIDE,
+                           nv(), w, nullptr, nullptr, &da_));
   else
     PetscCall(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, n[0], n[1], n[2], PETSC_DECIDE,
                            PETSC_DECIDE, PETSC_DECIDE, nv(), w, nullptr, nullptr, nullptr, &da_));

@@ -8,7 +8,9 @@ namespace euler_app {
 using namespace suite::euler;
 
 namespace {
-PrimN alongX(const Prim& w) { return PrimN{w.rho, {w.u, 0.0, 0.0}, w.p}; }
+PrimN alongX(const Prim& w) {
+  return PrimN{w.rho, {w.u, 0.0, 0.0}, w.p};
+}
 
 BcN gridBc(Bc bc) {
   switch (bc) {

@@ -33,8 +33,7 @@ PetscErrorCode checkLine(const suite::RunContext& ctx, const Options& o, const P
   // Measured peak memory: ~1.0 kB per cell explicit, ~1.6 kB implicit (GMRES(30) vectors), Sod N = 1e6.
   char what[64];
   std::snprintf(what, sizeof what, "-nx %lld", (long long)nx);
-  PetscCall(
-      suite::checkMemoryEstimate(comm, (o.implicit ? 2000.0 : 1200.0) * nx / ctx.size() + 5e7, what));
+  PetscCall(suite::checkMemoryEstimate(comm, (o.implicit ? 2000.0 : 1200.0) * nx / ctx.size() + 5e7, what));
   const PetscInt width = 2 * kLineGhost;
   PetscCheck(nx >= width, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -nx %" PetscInt_FMT ": below the stencil width %" PetscInt_FMT " of the schemes", nx,

@@ -35,14 +35,12 @@ std::vector<suite::Choice> lineSolveChoices(int dim) {
           {"substructured", "split lines solved in place (partition method); always when lines < ranks"}};
 }
 
-const std::vector<suite::Choice> kAxes = {
-    {"x", "along x"}, {"y", "along y"}, {"z", "along z (-dim 3)"}};
+const std::vector<suite::Choice> kAxes = {{"x", "along x"}, {"y", "along y"}, {"z", "along z (-dim 3)"}};
 
-const std::vector<suite::Choice> kBoundaries = {
-    {"periodic", "periodic (both ends)"},
-    {"outflow", "zero-gradient extrapolation"},
-    {"reflecting", "reflecting wall"},
-    {"inflow", "the problem's inflow state"}};
+const std::vector<suite::Choice> kBoundaries = {{"periodic", "periodic (both ends)"},
+                                                {"outflow", "zero-gradient extrapolation"},
+                                                {"reflecting", "reflecting wall"},
+                                                {"inflow", "the problem's inflow state"}};
 
 // -problem, -scheme, -time and the choices that decide how the problem is built.
 PetscErrorCode readChoices(MPI_Comm comm, Options* o) {
@@ -52,18 +50,21 @@ PetscErrorCode readChoices(MPI_Comm comm, Options* o) {
                                  : "Problem of -dim 2|3 (-dim 1 lists the 1D problems alone)";
   PetscOptionsBegin(comm, "", "Euler options", "");
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-problem", text, problemChoices(o->dim), &o->problem));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-scheme", "Spatial scheme", schemeChoices(), &o->scheme));
+  PetscCall(
+      suite::optionsChoice(PetscOptionsObject, "-scheme", "Spatial scheme", schemeChoices(), &o->scheme));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-time", "Time integrator (then -ts_* refine it)",
                                  timeIntegrators(), &o->time));
   if (o->dim == 1)
-    PetscCall(PetscOptionsInt("-scheme_spectrum",
-                              "Measure the scheme's modified wavenumber on N periodic points instead of a run",
-                              "", o->scheme_spectrum, &o->scheme_spectrum, nullptr));
+    PetscCall(PetscOptionsInt(
+        "-scheme_spectrum", "Measure the scheme's modified wavenumber on N periodic points instead of a run",
+        "", o->scheme_spectrum, &o->scheme_spectrum, nullptr));
   else
-    PetscCall(suite::optionsChoice(PetscOptionsObject, "-axis", "Axis of a planar (1D) problem", kAxes, &o->axis));
+    PetscCall(
+        suite::optionsChoice(PetscOptionsObject, "-axis", "Axis of a planar (1D) problem", kAxes, &o->axis));
   PetscOptionsEnd();
   PetscCheck(o->axis == "x" || o->axis == "y" || (o->axis == "z" && o->dim == 3), comm,
-             PETSC_ERR_ARG_OUTOFRANGE, "Invalid -axis %s: x, y%s", o->axis.c_str(), o->dim == 3 ? " or z" : "");
+             PETSC_ERR_ARG_OUTOFRANGE, "Invalid -axis %s: x, y%s", o->axis.c_str(),
+             o->dim == 3 ? " or z" : "");
   o->implicit = isImplicit(o->time);
   PetscFunctionReturn(0);
 }
@@ -136,8 +137,9 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                               "Memory (MiB) of one batch of block lines in the compact solves (more batches: "
                               "more messages, less memory)",
                               "", o->line_batch_mb, &o->line_batch_mb, nullptr));
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-line_solve", "Compact solves of lines split over ranks",
-                                 lineSolveChoices(o->dim), &o->line_solve));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-line_solve",
+                                 "Compact solves of lines split over ranks", lineSolveChoices(o->dim),
+                                 &o->line_solve));
   PetscFunctionReturn(0);
 }
 
@@ -163,9 +165,9 @@ PetscErrorCode readOutput(PetscOptionItems* PetscOptionsObject, Options* o) {
                                  buf, buf, sizeof(buf), &set));
     if (set) o->reference = buf;
   } else {
-    PetscCall(PetscOptionsBool("-spectrum",
-                               "Kinetic-energy spectrum E(k) of the final state and every snapshot (FFTW-MPI)",
-                               "", o->spectrum, &o->spectrum, nullptr));
+    PetscCall(PetscOptionsBool(
+        "-spectrum", "Kinetic-energy spectrum E(k) of the final state and every snapshot (FFTW-MPI)", "",
+        o->spectrum, &o->spectrum, nullptr));
   }
   PetscFunctionReturn(0);
 }

@@ -51,7 +51,8 @@ PetscErrorCode EulerRun::writeFields(const std::string& group, Vec U) {
   blockDims(&dims, &start, &count);
   for (int f = 0; f < 5; ++f)
     if (dim() > 1 || f == 0 || f == 1 || f == 4)
-      PetscCall(out_.writeDistributed(group + "/" + kFieldNames[f], fields[f].data(), dims, start, count, ""));
+      PetscCall(
+          out_.writeDistributed(group + "/" + kFieldNames[f], fields[f].data(), dims, start, count, ""));
   PetscFunctionReturn(0);
 }
 
@@ -117,7 +118,8 @@ PetscErrorCode EulerRun::writeLineResults() {
     }
     PetscCall(out_.writeAttribute("/", "error_reference", opt_.reference.empty() ? "exact" : opt_.reference));
     for (int c = 0; c < 3; ++c)
-      PetscCall(out_.writeDistributed(std::string("/exact/") + vn[c], err_.exact[c].data(), dims, start, count, ""));
+      PetscCall(out_.writeDistributed(std::string("/exact/") + vn[c], err_.exact[c].data(), dims, start,
+                                      count, ""));
   }
   if (!spacetime_t_.empty()) {
     const unsigned long long nrec = spacetime_t_.size();
@@ -165,8 +167,8 @@ PetscErrorCode EulerRun::writeXdmf() {
     grid.origin.push_back(problem_.lo[d]);
     grid.spacing.push_back(dx_[d]);
   }
-  PetscCall(
-      suite::writeXdmfRectSeries(ctx_.comm(), xdmfPathFor(opt_.output), fileNameOf(opt_.output), grid, steps));
+  PetscCall(suite::writeXdmfRectSeries(ctx_.comm(), xdmfPathFor(opt_.output), fileNameOf(opt_.output), grid,
+                                       steps));
   PetscFunctionReturn(0);
 }
 

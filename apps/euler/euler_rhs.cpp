@@ -30,7 +30,8 @@ void otherDirections(int dim, int d, int* a, int* b) {
   *b = dim == 3 ? (d == 2 ? 1 : 2) : 2;
 }
 
-template <int NV> DirectionSweep<NV>& sweepOf(DirectionSweep<3>* s3, DirectionSweep<4>* s4, DirectionSweep<5>* s5) {
+template <int NV>
+DirectionSweep<NV>& sweepOf(DirectionSweep<3>* s3, DirectionSweep<4>* s4, DirectionSweep<5>* s5) {
   if constexpr (NV == 3)
     return *s3;
   else if constexpr (NV == 4)
@@ -215,8 +216,8 @@ PetscErrorCode EulerRun::rhs(double t, Vec U, Vec F) {
   // A line-solve failure is the same on the ranks of a line but not of the grid: agree before returning.
   PetscCall(suite::agreeOnFailure(ctx_.comm(), &rhs_failure_));
   PetscCheck(rhs_failure_.empty(), ctx_.comm(), PETSC_ERR_NOT_CONVERGED,
-             "Euler right-hand side failed at step %" PetscInt_FMT ", t = %g (a compact line solve: %s)", step_,
-             t, rhs_failure_.c_str());
+             "Euler right-hand side failed at step %" PetscInt_FMT ", t = %g (a compact line solve: %s)",
+             step_, t, rhs_failure_.c_str());
   PetscFunctionReturn(0);
 }
 

@@ -21,10 +21,11 @@ PetscErrorCode runEuler(const suite::RunContext& ctx) {
   PetscInt dim = 1;
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx.comm(), "", "Euler dimension", "");
-  PetscCall(PetscOptionsInt("-dim",
-                            "Spatial dimension: 1, 2 or 3 (2/3: -nx -ny -nz, DMDA process grid); the problems "
-                            "and options listed below are those of this -dim",
-                            "", dim, &dim, nullptr));
+  PetscCall(
+      PetscOptionsInt("-dim",
+                      "Spatial dimension: 1, 2 or 3 (2/3: -nx -ny -nz, DMDA process grid); the problems "
+                      "and options listed below are those of this -dim",
+                      "", dim, &dim, nullptr));
   PetscOptionsEnd();
   PetscCheck(dim >= 1 && dim <= 3, ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -dim %" PetscInt_FMT ": 1, 2 or 3", dim);

@@ -59,7 +59,8 @@ private:
   template <int NV> PetscErrorCode rhsImpl(double t, const double* ul, double* f);
   template <int NV>
   void gatherLines(int d, double t, const double* ul, std::vector<std::array<double, NV>>* q);
-  template <int NV> void fillBoundaryGhosts(int d, double t, PetscInt ja, PetscInt jb, std::array<double, NV>* ql);
+  template <int NV>
+  void fillBoundaryGhosts(int d, double t, PetscInt ja, PetscInt jb, std::array<double, NV>* ql);
   template <int NV>
   void addFluxDifferences(int d, const std::vector<std::array<double, NV>>& h, double* f) const;
   void addGravity(const double* ul, double* f) const;
@@ -90,8 +91,8 @@ private:
 
   const suite::RunContext& ctx_;
   Options opt_;
-  suite::euler::Problem line_;       // -dim 1: the 1D problem (names, boundary attributes)
-  suite::euler::ProblemND problem_;  // every dim: the problem on the grid
+  suite::euler::Problem line_;      // -dim 1: the 1D problem (names, boundary attributes)
+  suite::euler::ProblemND problem_; // every dim: the problem on the grid
   const suite::euler::SchemeInfo* scheme_ = nullptr;
   std::unique_ptr<suite::euler::DirectionSweep<3>> sweep3_;
   std::unique_ptr<suite::euler::DirectionSweep<4>> sweep4_;

@@ -81,7 +81,8 @@ PetscErrorCode EulerRun::start(PetscInt step, double t, bool restarted) {
   // TSSolve's start of a fresh solve (a multistep integrator starts with its one-step method).
   if (!restarted) PetscCall(TSRestartStep(ts_));
   if (restarted && opt_.time == "bdf2")
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
+    PetscCall(
+        suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
   PetscCall(checkState(U_, step, t));
   // The x-t image starts with the state the run starts from (recorded at t = 0 as before the time loop).
   if (opt_.spacetime_every > 0) PetscCall(recordSpacetime(U_, 0.0));
@@ -129,7 +130,8 @@ PetscErrorCode EulerRun::advance(PetscInt step, double t, double dt, suite::Step
   }
   PetscCall(TSGetTime(ts_, &t_new));
   PetscCall(checkState(U_, step + 1, t_new));
-  if (opt_.spacetime_every > 0 && (step + 1) % opt_.spacetime_every == 0) PetscCall(recordSpacetime(U_, t_new));
+  if (opt_.spacetime_every > 0 && (step + 1) % opt_.spacetime_every == 0)
+    PetscCall(recordSpacetime(U_, t_new));
   step_ = step + 1, time_ = t_new;
   out->status = suite::StepStatus::Done;
   out->t_new = t_new;

@@ -14,7 +14,9 @@ const std::vector<suite::Choice>& timeIntegrators() {
   return list;
 }
 
-bool isImplicit(const std::string& time) { return time == "beuler" || time == "cn" || time == "bdf2"; }
+bool isImplicit(const std::string& time) {
+  return time == "beuler" || time == "cn" || time == "bdf2";
+}
 
 namespace {
 PetscErrorCode registerSspRk3() {

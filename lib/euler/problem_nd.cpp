@@ -15,7 +15,8 @@ struct EntryND {
   const char* description; // one line for -help
 };
 const EntryND kProblemsND[] = {
-    {"isentropic_vortex", createVortexProblemND, "Isentropic vortex advected by a uniform flow, periodic, exact"},
+    {"isentropic_vortex", createVortexProblemND,
+     "Isentropic vortex advected by a uniform flow, periodic, exact"},
     {"riemann2d", createRiemann2dProblemND, "Four-quadrant 2D Riemann problem with any states (-rho_ne ...)"},
     {"lax_liu_4", createRiemann2dProblemND, "Lax-Liu configuration 4: four shocks"},
     {"lax_liu_6", createRiemann2dProblemND, "Lax-Liu configuration 6: four slip lines"},
