@@ -87,7 +87,6 @@ PetscErrorCode createProblemOf(MPI_Comm comm, Options* o, Problem* line, Problem
   // Implicit steps default to the global alpha: the local one (a max over the stencil) is not
   // differentiable, and Newton stalls on it at shocks (Sod N = 200, weno5, BDF2: stagnates at 1e-4 relative).
   if (o->implicit) o->positivity = PETSC_FALSE, o->local_lf = PETSC_FALSE;
-  o->line_solve = lineSolveChoices(o->dim)[0].name;
   PetscFunctionReturn(0);
 }
 
@@ -137,6 +136,7 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                               "Memory (MiB) of one batch of block lines in the compact solves (more batches: "
                               "more messages, less memory)",
                               "", o->line_batch_mb, &o->line_batch_mb, nullptr));
+  o->line_solve = lineSolveChoices(o->dim)[0].name; // the default: the first
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-line_solve",
                                  "Compact solves of lines split over ranks", lineSolveChoices(o->dim),
                                  &o->line_solve));
