@@ -34,7 +34,8 @@ public:
   PetscErrorCode solve();          // the time loop (euler_run.cpp)
   PetscErrorCode rhs(double t, Vec U, Vec F); // TS right-hand side (euler_rhs.cpp)
 
-  // suite::TimeStepped (euler_step.cpp; checkpoints: euler_checkpoint.cpp; output: euler_report.cpp)
+  // suite::TimeStepped: start, proposeDt, advance (euler_step.cpp), saveState, loadState (euler_checkpoint.cpp),
+  // writeSnapshot (euler_output.cpp), writeFinal (euler_report.cpp)
   PetscErrorCode start(PetscInt step, double t, bool restarted) override;
   PetscErrorCode proposeDt(PetscInt step, double t, double* dt) override;
   PetscErrorCode advance(PetscInt step, double t, double dt, suite::StepOutcome* out) override;

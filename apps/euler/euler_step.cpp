@@ -123,7 +123,7 @@ PetscErrorCode EulerRun::advance(PetscInt step, double t, double dt, suite::Step
   PetscCall(TSSetTimeStep(ts_, dt));
   PetscCall(TSStep(ts_));
   PetscCall(TSGetConvergedReason(ts_, &reason));
-  if (reason < 0) {
+  if (reason < 0) { // reached only with -ts_error_if_step_fails false: TSStep errors itself otherwise
     out->status = suite::StepStatus::Failed;
     out->message = std::string("PETSc TS step diverged (") + TSConvergedReasons[reason] + ")";
     PetscFunctionReturn(0);
