@@ -1,12 +1,12 @@
-// Euler checkpoint/restart (issue #8): the conserved state as a global nx x 3 array (restartable at another
-// rank count), the step and time, and the initial totals of the conservation report. The header's scheme
-// tag names problem, scheme, time integrator, gamma and the line options, so a restart with different
-// physics or numerics is refused. Single-step integrators (ssprk3, rk4, beuler, cn) restart bitwise; BDF2
-// keeps no history in the checkpoint and restarts with its BDF1 start-up step (a difference of the order of
-// the local truncation error, reported at restart).
+// Euler checkpoint/restart for -dim 1|2|3 (issue #8), the TimeLoop's saveState/loadState: the conserved state
+// as one global array ((z,) (y,) x, NV), so a restart may use another rank count or process grid, the initial
+// totals of the conservation report, step and time. The header's tag names problem, dimension, axis, scheme,
+// time integrator, gamma and the line options, its grid the cell counts: a restart with other physics or
+// numerics is refused with one clear message (so are checkpoints of the former 1D driver, whose tag had no
+// dimension). Single-step integrators restart bitwise; BDF2 keeps no history in the checkpoint and restarts
+// with its BDF1 start-up step (a difference of the order of the local truncation error, reported at restart).
 #include "euler_run.hpp"
 
-#include "core/log.hpp"
 #include "io/checkpoint.hpp"
 
 #include <cstdio>
@@ -14,24 +14,31 @@
 namespace euler_app {
 
 std::string EulerRun::checkpointTag() const {
-  char tag[256];
-  std::snprintf(tag, sizeof tag, "%s:%s:%s:gamma=%.17g:char=%d:llf=%d:pos=%d:thr=%.17g:cfl=%.17g:dt=%.17g",
-                opt_.problem.c_str(), opt_.scheme.c_str(), opt_.time.c_str(), problem_.gamma,
-                (int)opt_.characteristic, (int)opt_.local_lf, (int)opt_.positivity, opt_.shock_threshold,
-                opt_.cfl, opt_.dt);
+  char tag[320];
+  std::snprintf(tag, sizeof tag,
+                "%s:dim=%d:axis=%s:%s:%s:gamma=%.17g:char=%d:llf=%d:pos=%d:thr=%.17g:cfl=%.17g:dt=%.17g",
+                opt_.problem.c_str(), dim(), opt_.axis.c_str(), opt_.scheme.c_str(), opt_.time.c_str(),
+                problem_.gamma, (int)opt_.characteristic, (int)opt_.local_lf, (int)opt_.positivity,
+                opt_.shock_threshold, opt_.cfl, opt_.dt);
   return tag;
 }
 
 PetscErrorCode EulerRun::checkpointIo(bool write, const std::string& path, PetscInt* step, double* time) {
   PetscScalar* u;
+  suite::Dims dims, start, count;
   PetscFunctionBeginUser;
+  blockDims(&dims, &start, &count);
+  dims.push_back((unsigned long long)nv());
+  start.push_back(0);
+  count.push_back((unsigned long long)nv());
+  const unsigned long long ntot = (unsigned long long)nv();
   PetscCall(VecGetArray(U_, &u));
-  const unsigned long long nx = (unsigned long long)opt_.nx, xs = (unsigned long long)xs_,
-                           xm = (unsigned long long)xm_;
-  const bool root = ctx_.rank() == 0;
-  std::vector<suite::CheckpointField> fields{{"U", {nx, 3}, {xs, 0}, {xm, 3}, u},
-                                             {"totals0", {3}, {0}, {root ? 3ULL : 0ULL}, totals0_.data()}};
-  suite::CheckpointHeader header{"euler", checkpointTag(), *step, *time, 0.0, {(long long)opt_.nx}};
+  std::vector<suite::CheckpointField> fields{
+      {"U", dims, start, count, u},
+      {"totals0", {ntot}, {0}, {ctx_.rank() == 0 ? ntot : 0ULL}, totals0_.data()}};
+  std::vector<long long> grid{opt_.n[0]}; // 1D: {nx}; 2D/3D: {nx, ny, nz} (nz = 1 in 2D)
+  if (dim() > 1) grid.push_back(opt_.n[1]), grid.push_back(opt_.n[2]);
+  const suite::CheckpointHeader header{"euler", checkpointTag(), *step, *time, 0.0, grid};
   PetscErrorCode ierr;
   if (write) {
     ierr = suite::writeCheckpoint(ctx_.comm(), path, header, fields);
@@ -43,28 +50,23 @@ PetscErrorCode EulerRun::checkpointIo(bool write, const std::string& path, Petsc
   }
   PetscCall(VecRestoreArray(U_, &u));
   PetscCall(ierr);
-  if (!write) PetscCallMPI(MPI_Bcast(totals0_.data(), 3, MPI_DOUBLE, 0, ctx_.comm()));
+  if (!write) PetscCallMPI(MPI_Bcast(totals0_.data(), nv(), MPI_DOUBLE, 0, ctx_.comm()));
   PetscFunctionReturn(0);
 }
 
-CheckpointIo EulerRun::checkpointFile() {
-  return [this](bool write, const std::string& path, PetscInt* step, double* time) {
-    return checkpointIo(write, path, step, time);
-  };
-}
-
-PetscErrorCode EulerRun::restartIfRequested() {
+PetscErrorCode EulerRun::saveState(const std::string& path, PetscInt step, double t) {
+  PetscInt s = step;
+  double time = t;
   PetscFunctionBeginUser;
-  PetscCall(
-      restartFromCheckpoint(ctx_, ckpt_, ts_, checkpointFile(), &steps_, &time_,
-                            opt_.time == "bdf2" ? " (BDF2 restarts with a BDF1 step: not bitwise)" : ""));
+  PetscCall(checkpointIo(true, path, &s, &time));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode EulerRun::checkpointNow() {
+PetscErrorCode EulerRun::loadState(const std::string& path, PetscInt* step, double* t) {
   PetscFunctionBeginUser;
-  PetscCall(writeStepCheckpoint(ctx_, ckpt_, steps_, time_, checkpointFile()));
-  last_checkpoint_step_ = steps_;
+  PetscCall(checkpointIo(false, path, step, t));
+  PetscCall(TSSetStepNumber(ts_, *step));
+  PetscCall(TSSetTime(ts_, *t));
   PetscFunctionReturn(0);
 }
 

@@ -1,100 +1,174 @@
-// Euler run output: snapshots, final state, grid, provenance, errors (exact or reference), XDMF sidecar, x-t
-// data.
+// Euler HDF5 output for -dim 1|2|3: snapshots and the final state as primitive fields in ((z,) (y,) x) array
+// order written collectively (1D: rho, u, p; 2D/3D: rho, u, v, w, p), cell centres /grid/x[, y, z], the run's
+// attributes, and the XDMF sidecar of every snapshot plus the final state. What only one layout has: 1D the
+// per-quantity totals and errors as root attributes, /exact and the x-t image /spacetime; 2D/3D the totals as
+// arrays, /errors and the energy spectra.
 #include "euler_run.hpp"
 
 #include "core/log.hpp"
-#include "io/h5_input.hpp"
+#include "euler_state.hpp"
 #include "io/xdmf.hpp"
-
-#include <cmath>
 
 namespace euler_app {
 
 using namespace suite::euler;
 
-PetscErrorCode EulerRun::writeSnapshot(PetscInt step, double time) {
-  std::vector<double> rho, u, p;
+namespace {
+const char* const kFieldNames[5] = {"rho", "u", "v", "w", "p"};
+
+// out.h5 -> out.xmf (beside it); the HDF5 name as the sidecar refers to it (relative: its file name).
+std::string xdmfPathFor(const std::string& h5_path) {
+  std::string xmf = h5_path;
+  if (xmf.size() > 3 && xmf.substr(xmf.size() - 3) == ".h5") xmf = xmf.substr(0, xmf.size() - 3);
+  return xmf + ".xmf";
+}
+std::string fileNameOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+} // namespace
+
+PetscErrorCode EulerRun::primitiveFields(Vec U, std::vector<double> fields[5]) const {
+  const PetscScalar* a;
   PetscFunctionBeginUser;
-  if (!out_.isOpen()) PetscCall(out_.open(ctx_.comm(), opt_.output));
-  PetscCall(primitiveArrays(U_, &rho, &u, &p));
-  char group[64];
-  PetscCall(PetscSNPrintf(group, sizeof(group), "/snapshots/%06" PetscInt_FMT, step));
-  const suite::Dims dims{(unsigned long long)opt_.nx}, start{(unsigned long long)xs_},
-      count{(unsigned long long)xm_};
-  const std::string g(group);
-  PetscCall(out_.writeDistributed(g + "/rho", rho.data(), dims, start, count, ""));
-  PetscCall(out_.writeDistributed(g + "/u", u.data(), dims, start, count, ""));
-  PetscCall(out_.writeDistributed(g + "/p", p.data(), dims, start, count, ""));
-  PetscCall(out_.writeAttribute(g, "time", time));
-  PetscCall(out_.writeAttribute(g, "step", (long long)step));
-  snapshots_.push_back({step, time});
+  for (int f = 0; f < 5; ++f) fields[f].resize(localCells());
+  PetscCall(VecGetArrayRead(U, &a));
+  for (PetscInt c = 0; c < localCells(); ++c) {
+    const PrimN w = primitive(a + c * nv(), dim(), problem_.gamma);
+    fields[0][c] = w.rho, fields[4][c] = w.p;
+    for (int d = 0; d < 3; ++d) fields[1 + d][c] = w.u[d];
+  }
+  PetscCall(VecRestoreArrayRead(U, &a));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode EulerRun::computeErrors() {
-  std::vector<double> rho, u, p;
+// group/rho, group/u, ..., group/p: 1D rho, u, p; 2D/3D all five (w = 0 in 2D).
+PetscErrorCode EulerRun::writeFields(const std::string& group, Vec U) {
+  std::vector<double> fields[5];
+  suite::Dims dims, start, count;
   PetscFunctionBeginUser;
-  PetscCall(primitiveArrays(U_, &rho, &u, &p));
-  const std::vector<double>* num[3] = {&rho, &u, &p};
-  std::vector<double>* ref = exact_;
-  for (int c = 0; c < 3; ++c) ref[c].resize(xm_);
-  double scale[3] = {0, 0, 0};
-  if (!opt_.reference.empty()) {
-    suite::H5Input in;
-    PetscCall(in.open(ctx_.comm(), opt_.reference));
-    const char* names[3] = {"/final/rho", "/final/u", "/final/p"};
-    for (int c = 0; c < 3; ++c) {
-      std::vector<double> fine;
-      suite::Dims dims;
-      PetscCall(in.readAll(names[c], &fine, &dims));
-      const long long nf = (long long)fine.size();
-      PetscCheck(nf >= opt_.nx && nf % opt_.nx == 0, ctx_.comm(), PETSC_ERR_ARG_SIZ,
-                 "-reference %s has %lld cells: must be a multiple of -nx %" PetscInt_FMT,
-                 opt_.reference.c_str(), nf, opt_.nx);
-      const long long r = nf / opt_.nx;
-      for (PetscInt k = 0; k < xm_; ++k) { // linear interpolation of the fine point values at x_j
-        const double s = (xs_ + k + 0.5) * r - 0.5;
-        const long long i0 = (long long)std::floor(s);
-        const double w = s - i0;
-        ref[c][k] = (1.0 - w) * fine[i0] + (w > 0 ? w * fine[std::min(i0 + 1, nf - 1)] : 0.0);
-      }
-      for (double v : fine) scale[c] = std::max(scale[c], std::abs(v));
-    }
-    PetscCall(in.close());
-  } else {
-    for (PetscInt k = 0; k < xm_; ++k) {
-      const Prim w = problem_.exact(xc_[k], time_);
-      ref[0][k] = w.rho, ref[1][k] = w.u, ref[2][k] = w.p;
-    }
+  PetscCall(primitiveFields(U, fields));
+  blockDims(&dims, &start, &count);
+  for (int f = 0; f < 5; ++f)
+    if (dim() > 1 || f == 0 || f == 1 || f == 4)
+      PetscCall(
+          out_.writeDistributed(group + "/" + kFieldNames[f], fields[f].data(), dims, start, count, ""));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::writeSnapshot(PetscInt step, double t) {
+  PetscFunctionBeginUser;
+  if (opt_.output.empty()) PetscFunctionReturn(0);
+  if (!out_.isOpen()) PetscCall(out_.open(ctx_.comm(), opt_.output));
+  char group[64];
+  PetscCall(PetscSNPrintf(group, sizeof(group), "/snapshots/%06" PetscInt_FMT, step));
+  PetscCall(writeFields(group, U_));
+  if (opt_.spectrum) PetscCall(writeSpectrum(std::string(group) + "/spectrum"));
+  PetscCall(out_.writeAttribute(group, "time", t));
+  PetscCall(out_.writeAttribute(group, "step", (long long)step));
+  snapshots_.push_back({step, t});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::writeRunAttributes() {
+  PetscFunctionBeginUser;
+  PetscCall(out_.writeProvenance(ctx_));
+  PetscCall(out_.writeAttribute("/", "problem", opt_.problem));
+  PetscCall(out_.writeAttribute("/", "scheme", opt_.scheme));
+  PetscCall(out_.writeAttribute("/", "time_integrator", opt_.time));
+  if (dim() > 1) {
+    PetscCall(out_.writeAttribute("/", "dim", dim()));
+    PetscCall(out_.writeAttribute("/", "ny", (long long)opt_.n[1]));
+    PetscCall(out_.writeAttribute("/", "nz", (long long)opt_.n[2]));
   }
-  double sums[6] = {0, 0, 0, 0, 0, 0}, maxes[6] = {0, 0, 0, 0, 0, 0};
-  for (int c = 0; c < 3; ++c)
-    for (PetscInt k = 0; k < xm_; ++k) {
-      const double e = std::abs((*num[c])[k] - ref[c][k]);
-      sums[c] += e * dx_;
-      sums[3 + c] += e * e * dx_;
-      maxes[c] = std::isnan(e) ? INFINITY : std::max(maxes[c], e);
-    }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, ctx_.comm()));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, maxes, 3, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
-  const double L = problem_.xmax - problem_.xmin;
+  PetscCall(out_.writeAttribute("/", "nx", (long long)opt_.n[0]));
+  PetscCall(out_.writeAttribute("/", "time", time_));
+  PetscCall(out_.writeAttribute("/", "steps", (long long)step_));
+  PetscCall(out_.writeAttribute("/", "gamma", problem_.gamma));
+  PetscCall(out_.writeAttribute("/", "cfl", opt_.cfl));
+  PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
+  PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
+  PetscCall(out_.writeAttribute("/", "solve_seconds", wall_solve_));
+  PetscCall(out_.writeAttribute("/", "solve_cpu_seconds_rank0", cpu_solve_));
+  PetscFunctionReturn(0);
+}
+
+// 1D: domain and boundaries, totals and errors per quantity, the exact solution, the x-t image.
+PetscErrorCode EulerRun::writeLineResults() {
+  std::vector<double> tot;
+  PetscFunctionBeginUser;
+  PetscCall(out_.writeAttribute("/", "xmin", line_.xmin));
+  PetscCall(out_.writeAttribute("/", "xmax", line_.xmax));
+  PetscCall(out_.writeAttribute("/", "bc_left", bcName(line_.bc_left)));
+  PetscCall(out_.writeAttribute("/", "bc_right", bcName(line_.bc_right)));
+  PetscCall(totals(U_, &tot));
+  const char* cn[3] = {"mass", "momentum", "energy"};
   for (int c = 0; c < 3; ++c) {
-    errors_.l1[c] = sums[c] / L;
-    errors_.l2[c] = std::sqrt(sums[3 + c] / L);
-    errors_.linf[c] = maxes[c];
+    PetscCall(out_.writeAttribute("/", std::string("total_") + cn[c] + "_initial", totals0_[c]));
+    PetscCall(out_.writeAttribute("/", std::string("total_") + cn[c] + "_final", tot[c]));
   }
-  have_errors_ = true;
+  const suite::Dims dims{(unsigned long long)opt_.n[0]}, start{(unsigned long long)s_[0]},
+      count{(unsigned long long)m_[0]};
   const char* vn[3] = {"rho", "u", "p"};
-  for (int c = 0; c < 3; ++c)
-    PetscCall(suite::logInfo(ctx_.comm(), false, "error %s: L1 %.6e L2 %.6e Linf %.6e (against %s)", vn[c],
-                             errors_.l1[c], errors_.l2[c], errors_.linf[c],
-                             opt_.reference.empty() ? "exact solution" : opt_.reference.c_str()));
-  if (!opt_.reference.empty()) {
-    double rel = 0;
-    for (int c = 0; c < 3; ++c) rel = std::max(rel, errors_.linf[c] / std::max(scale[c], 1e-300));
-    ref_diff_ = rel;
-    PetscCall(suite::logInfo(ctx_.comm(), false, "reference max relative difference %.6e", rel));
+  if (err_.have) { // the errors, and the solution they were measured against for the profile plots
+    for (int c = 0; c < 3; ++c) {
+      PetscCall(out_.writeAttribute("/", std::string("error_l1_") + vn[c], err_.l1[c]));
+      PetscCall(out_.writeAttribute("/", std::string("error_l2_") + vn[c], err_.l2[c]));
+      PetscCall(out_.writeAttribute("/", std::string("error_linf_") + vn[c], err_.linf[c]));
+    }
+    PetscCall(out_.writeAttribute("/", "error_reference", opt_.reference.empty() ? "exact" : opt_.reference));
+    for (int c = 0; c < 3; ++c)
+      PetscCall(out_.writeDistributed(std::string("/exact/") + vn[c], err_.exact[c].data(), dims, start,
+                                      count, ""));
   }
+  if (!spacetime_t_.empty()) {
+    const unsigned long long nrec = spacetime_t_.size();
+    PetscCall(out_.writeDistributed("/spacetime/rho", spacetime_rho_.data(), {nrec, dims[0]}, {0, start[0]},
+                                    {nrec, count[0]}, ""));
+    PetscCall(out_.writeReplicated("/spacetime/time", spacetime_t_.data(), {nrec}, ""));
+  }
+  PetscFunctionReturn(0);
+}
+
+// 2D/3D: totals as arrays, density errors, the final energy spectrum.
+PetscErrorCode EulerRun::writeGridResults() {
+  std::vector<double> tot;
+  PetscFunctionBeginUser;
+  PetscCall(totals(U_, &tot));
+  PetscCall(out_.writeAttribute("/", "totals_initial", totals0_));
+  PetscCall(out_.writeAttribute("/", "totals_final", tot));
+  if (err_.have) {
+    PetscCall(out_.writeAttribute("/errors", "l1_rho", err_.l1[0]));
+    PetscCall(out_.writeAttribute("/errors", "l2_rho", err_.l2[0]));
+    PetscCall(out_.writeAttribute("/errors", "linf_rho", err_.linf[0]));
+  }
+  if (opt_.spectrum) PetscCall(writeSpectrum("/spectrum"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::writeXdmf() {
+  std::vector<suite::XdmfStep> steps;
+  PetscFunctionBeginUser;
+  auto step = [&](double t, const std::string& g) {
+    suite::XdmfStep s{t, {}};
+    for (int f = 0; f < 5; ++f)
+      if (f < 1 + dim() || f == 4) s.attributes.push_back({kFieldNames[f], g + "/" + kFieldNames[f], true});
+    return s;
+  };
+  for (const auto& s : snapshots_) {
+    char g[64];
+    PetscCall(PetscSNPrintf(g, sizeof(g), "/snapshots/%06" PetscInt_FMT, s.first));
+    steps.push_back(step(s.second, g));
+  }
+  steps.push_back(step(time_, "/final"));
+  suite::XdmfRectGrid grid;
+  for (int d = dim() - 1; d >= 0; --d) {
+    grid.dims.push_back((unsigned long long)opt_.n[d] + 1);
+    grid.origin.push_back(problem_.lo[d]);
+    grid.spacing.push_back(dx_[d]);
+  }
+  PetscCall(suite::writeXdmfRectSeries(ctx_.comm(), xdmfPathFor(opt_.output), fileNameOf(opt_.output), grid,
+                                       steps));
   PetscFunctionReturn(0);
 }
 
@@ -102,77 +176,19 @@ PetscErrorCode EulerRun::writeOutput() {
   PetscFunctionBeginUser;
   if (opt_.output.empty()) PetscFunctionReturn(0);
   if (!out_.isOpen()) PetscCall(out_.open(ctx_.comm(), opt_.output));
-  PetscCall(out_.writeProvenance(ctx_));
-  PetscCall(out_.writeAttribute("/", "problem", opt_.problem));
-  PetscCall(out_.writeAttribute("/", "scheme", opt_.scheme));
-  PetscCall(out_.writeAttribute("/", "time_integrator", opt_.time));
-  PetscCall(out_.writeAttribute("/", "time", time_));
-  PetscCall(out_.writeAttribute("/", "steps", (long long)steps_));
-  PetscCall(out_.writeAttribute("/", "nx", (long long)opt_.nx));
-  PetscCall(out_.writeAttribute("/", "gamma", problem_.gamma));
-  PetscCall(out_.writeAttribute("/", "cfl", opt_.cfl));
-  PetscCall(out_.writeAttribute("/", "xmin", problem_.xmin));
-  PetscCall(out_.writeAttribute("/", "xmax", problem_.xmax));
-  PetscCall(out_.writeAttribute("/", "bc_left", bcName(problem_.bc_left)));
-  PetscCall(out_.writeAttribute("/", "bc_right", bcName(problem_.bc_right)));
-  PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
-  PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
-  PetscCall(out_.writeAttribute("/", "solve_seconds", wall_solve_));
-  PetscCall(out_.writeAttribute("/", "solve_cpu_seconds_rank0", cpu_solve_));
-  Vec3 tot;
-  PetscCall(totals(U_, &tot));
-  const char* cn[3] = {"mass", "momentum", "energy"};
-  for (int c = 0; c < 3; ++c) {
-    PetscCall(out_.writeAttribute("/", std::string("total_") + cn[c] + "_initial", totals0_[c]));
-    PetscCall(out_.writeAttribute("/", std::string("total_") + cn[c] + "_final", tot[c]));
+  PetscCall(writeRunAttributes());
+  PetscCall(dim() == 1 ? writeLineResults() : writeGridResults());
+  const char* axes[3] = {"/grid/x", "/grid/y", "/grid/z"};
+  for (int d = 0; d < dim(); ++d) {
+    std::vector<double> xc(opt_.n[d]);
+    for (PetscInt i = 0; i < opt_.n[d]; ++i) xc[i] = problem_.lo[d] + (i + 0.5) * dx_[d];
+    PetscCall(out_.writeReplicated(axes[d], xc.data(), {(unsigned long long)xc.size()}, ""));
   }
-  if (have_errors_) {
-    const char* vn[3] = {"rho", "u", "p"};
-    for (int c = 0; c < 3; ++c) {
-      PetscCall(out_.writeAttribute("/", std::string("error_l1_") + vn[c], errors_.l1[c]));
-      PetscCall(out_.writeAttribute("/", std::string("error_l2_") + vn[c], errors_.l2[c]));
-      PetscCall(out_.writeAttribute("/", std::string("error_linf_") + vn[c], errors_.linf[c]));
-    }
-    PetscCall(out_.writeAttribute("/", "error_reference", opt_.reference.empty() ? "exact" : opt_.reference));
-  }
-  const suite::Dims d1{(unsigned long long)opt_.nx}, s1{(unsigned long long)xs_}, c1{(unsigned long long)xm_};
-  if (have_errors_) { // the solution the errors were measured against, for the profile plots
-    PetscCall(out_.writeDistributed("/exact/rho", exact_[0].data(), d1, s1, c1, ""));
-    PetscCall(out_.writeDistributed("/exact/u", exact_[1].data(), d1, s1, c1, ""));
-    PetscCall(out_.writeDistributed("/exact/p", exact_[2].data(), d1, s1, c1, ""));
-  }
-  const suite::Dims dims{(unsigned long long)opt_.nx}, start{(unsigned long long)xs_},
-      count{(unsigned long long)xm_};
-  PetscCall(out_.writeDistributed("/grid/x", xc_.data(), dims, start, count, ""));
-  std::vector<double> rho, u, p;
-  PetscCall(primitiveArrays(U_, &rho, &u, &p));
-  PetscCall(out_.writeDistributed("/final/rho", rho.data(), dims, start, count, ""));
-  PetscCall(out_.writeDistributed("/final/u", u.data(), dims, start, count, ""));
-  PetscCall(out_.writeDistributed("/final/p", p.data(), dims, start, count, ""));
-  if (!spacetime_t_.empty()) {
-    const unsigned long long nrec = spacetime_t_.size();
-    PetscCall(out_.writeDistributed("/spacetime/rho", spacetime_rho_.data(),
-                                    {nrec, (unsigned long long)opt_.nx}, {0, (unsigned long long)xs_},
-                                    {nrec, (unsigned long long)xm_}, ""));
-    PetscCall(out_.writeReplicated("/spacetime/time", spacetime_t_.data(), {nrec}, ""));
-  }
-  // XDMF sidecar: every snapshot plus the final state.
-  std::vector<suite::XdmfStep> steps;
-  for (const auto& s : snapshots_) {
-    char g[64];
-    PetscCall(PetscSNPrintf(g, sizeof(g), "/snapshots/%06" PetscInt_FMT, s.step));
-    steps.push_back({s.time,
-                     {{"rho", std::string(g) + "/rho", true},
-                      {"u", std::string(g) + "/u", true},
-                      {"p", std::string(g) + "/p", true}}});
-  }
-  steps.push_back({time_, {{"rho", "/final/rho", true}, {"u", "/final/u", true}, {"p", "/final/p", true}}});
-  const std::string h5name = fileNameOf(opt_.output), xmf = xdmfPathFor(opt_.output);
-  suite::XdmfRectGrid grid{{(unsigned long long)opt_.nx + 1}, {problem_.xmin}, {dx_}};
-  PetscCall(suite::writeXdmfRectSeries(ctx_.comm(), xmf, h5name, grid, steps));
+  PetscCall(writeFields("/final", U_));
+  PetscCall(writeXdmf());
   PetscCall(out_.commit(&ctx_));
-  PetscCall(
-      suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: wrote %s and %s", opt_.output.c_str(), xmf.c_str()));
+  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: wrote %s and %s", opt_.output.c_str(),
+                           xdmfPathFor(opt_.output).c_str()));
   PetscFunctionReturn(0);
 }
 

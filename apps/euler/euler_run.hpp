@@ -1,108 +1,128 @@
-// The 1D Euler run: options, DMDA line with ghost cells, PETSc TS (SSP-RK3, RK4, implicit), CFL-controlled
-// dt, collective checks, snapshots and the final HDF5 output.
+// The Euler run for -dim 1|2|3: a PETSc DMDA with NV = dim + 2 unknowns per cell and 3 ghost cells, the 1D
+// schemes applied direction by direction (DirectionSweep<NV>: in 1D the one line over all ranks; in 2D/3D lines
+// split over ranks transposed whole to one rank each, or solved in place by substructuring, on line
+// communicators split from the DMDA's process grid), boundary ghosts from the problem, gravity source, PETSc
+// TS stepped by the suite's TimeLoop (this class is its TimeStepped), CFL dt, collective state checks,
+// checkpoint/restart at any rank count, HDF5 + XDMF output in the 1D or the 2D/3D layout.
 #pragma once
 
-#include "core/progress.hpp"
-#include "euler_stepper.hpp"
 #include "core/run_context.hpp"
+#include "core/time_loop.hpp"
 #include "euler/direction_sweep.hpp"
-#include "euler/problem.hpp"
+#include "euler_options.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
 
 #include <petscdmda.h>
 #include <petscts.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace euler_app {
 
-using suite::euler::Bc;
-using suite::euler::Vec3;
-
-struct Options {
-  std::string problem = "sod", scheme = "enopade6", time = "ssprk3", output, reference;
-  PetscInt nx = 0, snapshot_every = 0, max_steps = -1, spacetime_every = 0, scheme_spectrum = 0;
-  double t_final = 0.0, cfl = 0.4, dt = 0.0, shock_threshold = 0.02;
-  bool gather_lines = false;
-  PetscBool error = PETSC_FALSE, characteristic = PETSC_TRUE, local_lf = PETSC_TRUE, positivity = PETSC_TRUE;
-  bool implicit = false;
-};
-
-struct Snapshot {
-  PetscInt step;
-  double time;
-};
-
-class EulerRun {
+class EulerRun : public suite::TimeStepped {
 public:
-  explicit EulerRun(const suite::RunContext& ctx) : ctx_(ctx) {}
-  ~EulerRun();
-  PetscErrorCode readOptions();
-  PetscErrorCode setup();
-  PetscErrorCode solve();
-  PetscErrorCode writeOutput();
+  EulerRun(const suite::RunContext& ctx, int dim) : ctx_(ctx) { opt_.dim = dim; }
+  ~EulerRun() override;
+  PetscErrorCode readOptions() { return euler_app::readOptions(ctx_, &opt_, &line_, &problem_, &ckpt_); }
   bool spectrumOnly() const { return opt_.scheme_spectrum != 0; }
-  PetscErrorCode schemeSpectrum(); // -scheme_spectrum N (euler_spectrum.cpp)
+  PetscErrorCode schemeSpectrum(); // -scheme_spectrum N instead of a run (euler_scheme_spectrum.cpp)
+  PetscErrorCode setup();          // euler_grid.cpp
+  PetscErrorCode solve();          // the time loop (euler_run.cpp)
+  PetscErrorCode rhs(double t, Vec U, Vec F); // TS right-hand side (euler_rhs.cpp)
 
-  // TS callbacks
-  PetscErrorCode rhs(double t, Vec U, Vec F);
-  PetscErrorCode preStep();
-  PetscErrorCode postStep();
+  // suite::TimeStepped: start, proposeDt, advance (euler_step.cpp), saveState, loadState (euler_checkpoint.cpp),
+  // writeSnapshot (euler_output.cpp), writeFinal (euler_report.cpp)
+  PetscErrorCode start(PetscInt step, double t, bool restarted) override;
+  PetscErrorCode proposeDt(PetscInt step, double t, double* dt) override;
+  PetscErrorCode advance(PetscInt step, double t, double dt, suite::StepOutcome* out) override;
+  PetscErrorCode saveState(const std::string& path, PetscInt step, double t) override;
+  PetscErrorCode loadState(const std::string& path, PetscInt* step, double* t) override;
+  PetscErrorCode writeSnapshot(PetscInt step, double t) override;
+  PetscErrorCode writeFinal(const suite::LoopSummary& summary) override;
 
 private:
-  PetscErrorCode setupTimeStepper();
-  PetscErrorCode fillGhosts(Vec3* q) const; // q[0] is cell xs-3
-  PetscErrorCode maxWaveSpeed(Vec U, double* amax) const;
-  PetscErrorCode primitiveArrays(Vec U, std::vector<double>* rho, std::vector<double>* u,
-                                 std::vector<double>* p) const;
+  int dim() const { return opt_.dim; }
+  int nv() const { return opt_.nv(); }
+  PetscInt localCells() const { return m_[0] * m_[1] * m_[2]; }
+  // grid (euler_grid.cpp)
+  PetscErrorCode setupGrid();
+  PetscErrorCode setupLineComms();
+  PetscErrorCode setupSweep();
+  PetscErrorCode setInitialState();
+  void cellCentre(PetscInt i, PetscInt j, PetscInt k, double x[3]) const;
+  void blockDims(suite::Dims* dims, suite::Dims* start, suite::Dims* count) const; // (z,) (y,) x order
+  PetscErrorCode totals(Vec U, std::vector<double>* sum) const;
+  // right-hand side (euler_rhs.cpp)
+  template <int NV> PetscErrorCode rhsImpl(double t, const double* ul, double* f);
+  template <int NV>
+  void gatherLines(int d, double t, const double* ul, std::vector<std::array<double, NV>>* q);
+  template <int NV>
+  void fillBoundaryGhosts(int d, double t, PetscInt ja, PetscInt jb, std::array<double, NV>* ql);
+  template <int NV>
+  void addFluxDifferences(int d, const std::vector<std::array<double, NV>>& h, double* f) const;
+  void addGravity(const double* ul, double* f) const;
+  // steps (euler_step.cpp)
+  PetscErrorCode maxWaveSpeeds(Vec U, double amax[3]) const;
+  double cflTimeStep(const double amax[3]) const;
   PetscErrorCode checkState(Vec U, PetscInt step, double time) const;
-  PetscErrorCode writeSnapshot(PetscInt step, double time);
-  PetscErrorCode totals(Vec U, Vec3* sum) const;
+  PetscErrorCode recordSpacetime(Vec U, double t);
+  // output (euler_output.cpp, euler_energy_spectrum.cpp, euler_errors.cpp)
+  PetscErrorCode primitiveFields(Vec U, std::vector<double> fields[5]) const; // rho, u, v, w, p
+  PetscErrorCode writeFields(const std::string& group, Vec U);
+  PetscErrorCode writeOutput();
+  PetscErrorCode writeRunAttributes();
+  PetscErrorCode writeLineResults();
+  PetscErrorCode writeGridResults();
+  PetscErrorCode writeXdmf();
+  PetscErrorCode writeSpectrum(const std::string& group); // E(k) into group/k, group/E
   PetscErrorCode computeErrors();
-  // Checkpoint/restart (euler_checkpoint.cpp)
+  PetscErrorCode computeLineErrors(); // rho, u, p against the exact solution or -reference
+  PetscErrorCode computeGridErrors(); // rho against the exact solution
+  PetscErrorCode readReference(std::vector<double> ref[3], double scale[3]) const;
+  // end of run (euler_report.cpp)
+  PetscErrorCode reportConservation();
+  PetscErrorCode reportStatistics(const suite::LoopSummary& summary);
+  // checkpoint (euler_checkpoint.cpp)
   std::string checkpointTag() const;
   PetscErrorCode checkpointIo(bool write, const std::string& path, PetscInt* step, double* time);
-  CheckpointIo checkpointFile(); // checkpointIo as a function object
-  PetscErrorCode restartIfRequested();
-  PetscErrorCode checkpointNow();
 
   const suite::RunContext& ctx_;
   Options opt_;
-  suite::euler::Problem problem_;
+  suite::euler::Problem line_;      // -dim 1: the 1D problem (names, boundary attributes)
+  suite::euler::ProblemND problem_; // every dim: the problem on the grid
   const suite::euler::SchemeInfo* scheme_ = nullptr;
-  std::unique_ptr<suite::euler::DirectionSweep<3>> op_; // the line's fluxes
+  std::unique_ptr<suite::euler::DirectionSweep<3>> sweep3_;
+  std::unique_ptr<suite::euler::DirectionSweep<4>> sweep4_;
+  std::unique_ptr<suite::euler::DirectionSweep<5>> sweep5_;
   DM da_ = nullptr;
   Vec U_ = nullptr;
   TS ts_ = nullptr;
-  PetscInt xs_ = 0, xm_ = 0;
-  double dx_ = 0.0, dt_limiter_ = 0.0;
-  bool periodic_ = false;
-  std::vector<Vec3> q_, h_;
-  std::vector<double> xc_; // local cell centres
+  PetscInt s_[3] = {0, 0, 0}, m_[3] = {1, 1, 1};   // this rank's first cell and cell count per direction
+  PetscInt gs_[3] = {0, 0, 0}, gm_[3] = {1, 1, 1}; // ghosted block
+  double dx_[3] = {1, 1, 1}, dt_limiter_ = 0.0;
+  bool periodic_[3] = {true, true, true};
+  MPI_Comm line_comm_[3] = {MPI_COMM_NULL, MPI_COMM_NULL, MPI_COMM_NULL};
+  PetscLogStage stage_lines_[3] = {0, 0, 0};
+  std::string rhs_failure_; // set by rhsImpl when a line solve throws
+  std::vector<double> totals0_;
+  suite::CheckpointPolicy ckpt_;
   // output
   suite::H5Output out_;
-  std::vector<Snapshot> snapshots_;
-  std::vector<double> spacetime_rho_, spacetime_t_;
-  Vec3 totals0_{};
-  suite::CheckpointPolicy ckpt_;
-  std::unique_ptr<suite::Progress> progress_; // progress line every -progress_interval seconds
-  PetscInt last_checkpoint_step_ = -1;
-  struct ErrorSet {
-    double l1[3], l2[3], linf[3];
-  };
-  bool have_errors_ = false;
-  std::vector<double> exact_[3]; // exact (or reference) rho, u, p at this rank's cells
-  ErrorSet errors_{};
-  double ref_diff_ = -1.0;
-  PetscInt steps_ = 0;
+  std::vector<std::pair<PetscInt, double>> snapshots_;
+  std::vector<double> spacetime_rho_, spacetime_t_; // -spacetime_every (1D)
+  PetscInt step_ = 0; // the last completed step (messages of the right-hand side)
   double time_ = 0.0, wall_solve_ = 0.0, cpu_solve_ = 0.0;
+  struct Errors {
+    bool have = false;
+    double l1[3] = {0, 0, 0}, l2[3] = {0, 0, 0}, linf[3] = {0, 0, 0}; // rho, u, p (2D/3D: rho only)
+    std::vector<double> exact[3]; // 1D: the exact (or reference) rho, u, p at this rank's cells
+  } err_;
 };
 
 PetscErrorCode runEuler(const suite::RunContext& ctx);
-// -dim 2|3 (euler_nd_run.cpp)
-PetscErrorCode runEulerND(const suite::RunContext& ctx, int dim);
 
 } // namespace euler_app

@@ -1,19 +1,21 @@
-// Time stepper and helpers shared by the 1D and 2D/3D Euler runs (see euler_stepper.hpp).
+// The Euler run's PETSc TS (see euler_stepper.hpp).
 #include "euler_stepper.hpp"
-
-#include "core/log.hpp"
-
-#include <ctime>
 
 namespace euler_app {
 
-const char* const kTimeSchemes = "ssprk3, rk4, beuler, cn, bdf2";
+const std::vector<suite::Choice>& timeIntegrators() {
+  static const std::vector<suite::Choice> list = {
+      {"ssprk3", "3-stage SSP Runge-Kutta (Shu & Osher 1988), explicit"},
+      {"rk4", "classical 4th-order Runge-Kutta, explicit"},
+      {"beuler", "backward Euler, implicit (JFNK; Newton failures retried at a smaller step)"},
+      {"cn", "Crank-Nicolson, implicit (JFNK)"},
+      {"bdf2", "2nd-order BDF, implicit (JFNK; a restart begins with a BDF1 step)"},
+  };
+  return list;
+}
 
 bool isImplicit(const std::string& time) {
   return time == "beuler" || time == "cn" || time == "bdf2";
-}
-bool isKnownTimeScheme(const std::string& time) {
-  return time == "ssprk3" || time == "rk4" || isImplicit(time);
 }
 
 namespace {
@@ -30,8 +32,8 @@ PetscErrorCode registerSspRk3() {
 }
 
 // Jacobian-free Newton-Krylov (GMRES, no preconditioner, inexact Newton). A Newton solve that fails (the ENO/WENO
-// stencil choice is not differentiable, so Newton can stall at a shock) rejects the step and retries it at half
-// the time step; the next step starts again from the CFL step.
+// stencil choice is not differentiable, so Newton can stall at a shock) rejects the step and TSStep retries it
+// at a smaller time step; the next step starts again from the CFL step.
 PetscErrorCode configureImplicit(TS ts, const std::string& time) {
   SNES snes;
   KSP ksp;
@@ -59,15 +61,14 @@ PetscErrorCode configureImplicit(TS ts, const std::string& time) {
 }
 } // namespace
 
-PetscErrorCode createStepper(MPI_Comm comm, DM da, const StepperSettings& s, TSRHSFunction rhs, void* run,
-                             PetscErrorCode (*pre)(TS), PetscErrorCode (*post)(TS), TS* ts) {
+PetscErrorCode createStepper(MPI_Comm comm, DM da, Vec U, const StepperSettings& s, TSRHSFunction rhs,
+                             void* ctx, TS* ts) {
   PetscFunctionBeginUser;
   PetscCall(registerSspRk3());
   PetscCall(TSCreate(comm, ts));
   PetscCall(TSSetDM(*ts, da));
   PetscCall(TSSetProblemType(*ts, TS_NONLINEAR));
-  PetscCall(TSSetRHSFunction(*ts, nullptr, rhs, run));
-  PetscCall(TSSetApplicationContext(*ts, run));
+  PetscCall(TSSetRHSFunction(*ts, nullptr, rhs, ctx));
   if (isImplicit(s.time)) {
     PetscCall(configureImplicit(*ts, s.time));
   } else {
@@ -78,83 +79,18 @@ PetscErrorCode createStepper(MPI_Comm comm, DM da, const StepperSettings& s, TSR
   PetscCall(TSGetAdapt(*ts, &adapt));
   PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));
   PetscCall(TSSetMaxTime(*ts, s.t_final));
-  PetscCall(
-      TSSetMaxSteps(*ts, s.max_steps >= 0 ? s.max_steps : PETSC_MAX_INT)); // 0: no step (initial output)
   PetscCall(TSSetExactFinalTime(*ts, TS_EXACTFINALTIME_MATCHSTEP));
   PetscCall(TSSetTimeStep(*ts, s.dt));
-  PetscCall(TSSetPreStep(*ts, pre));
-  PetscCall(TSSetPostStep(*ts, post));
   PetscCall(TSSetFromOptions(*ts));
   if (isImplicit(s.time)) {
     SNES snes;
     PetscCall(TSGetSNES(*ts, &snes));
     PetscCall(SNESSetFromOptions(snes));
   }
+  // What TSSolve did before its first step: the solution vector and the setup.
+  PetscCall(TSSetSolution(*ts, U));
+  PetscCall(TSSetUp(*ts));
   PetscFunctionReturn(0);
-}
-
-PetscErrorCode writeStepCheckpoint(const suite::RunContext& ctx, suite::CheckpointPolicy& ckpt, PetscInt step,
-                                   double time, const CheckpointIo& io) {
-  PetscFunctionBeginUser;
-  const std::string path = ckpt.pathForStep(step);
-  PetscInt s = step;
-  double t = time;
-  PetscCall(io(true, path, &s, &t));
-  PetscCall(ckpt.written(step));
-  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "euler: checkpoint %s (step %" PetscInt_FMT ", t = %.6g)",
-                           path.c_str(), step, time));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode restartFromCheckpoint(const suite::RunContext& ctx, suite::CheckpointPolicy& ckpt, TS ts,
-                                     const CheckpointIo& io, PetscInt* step, double* time, const char* note) {
-  PetscFunctionBeginUser;
-  if (!ckpt.restartRequested()) PetscFunctionReturn(0);
-  std::string path;
-  PetscCall(ckpt.restartPath(&path));
-  PetscCall(io(false, path, step, time));
-  PetscCall(TSSetStepNumber(ts, *step));
-  PetscCall(TSSetTime(ts, *time));
-  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
-                           "euler: restarted from %s at step %" PetscInt_FMT ", t = %.17g%s", path.c_str(),
-                           *step, *time, note));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode endOfStep(const suite::RunContext& ctx, TS ts, suite::CheckpointPolicy& ckpt,
-                         suite::Progress* progress, PetscInt step, double t,
-                         const std::function<PetscErrorCode()>& checkpoint) {
-  PetscReal dt;
-  PetscFunctionBeginUser;
-  PetscCall(TSGetTimeStep(ts, &dt));
-  if (progress) PetscCall(progress->update(step, t, dt));
-  bool stop = false, due = false;
-  PetscCall(ctx.stopRequested(&stop));
-  PetscCall(ckpt.due(step, &due));
-  if ((due || stop) && ckpt.enabled()) PetscCall(checkpoint());
-  if (stop) {
-    PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "euler: stopping at step %" PetscInt_FMT " (%s)", step,
-                             ctx.stopReason().c_str()));
-    PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
-  }
-  PetscFunctionReturn(0);
-}
-
-double cpuSeconds() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-std::string fileNameOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-std::string xdmfPathFor(const std::string& h5_path) {
-  std::string xmf = h5_path;
-  if (xmf.size() > 3 && xmf.substr(xmf.size() - 3) == ".h5") xmf = xmf.substr(0, xmf.size() - 3);
-  return xmf + ".xmf";
 }
 
 } // namespace euler_app

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace suite::euler {
 
@@ -34,6 +35,12 @@ struct Problem {
 // Reads the options of problem `name` (collective) into *problem. Unknown name: error listing the known ones.
 PetscErrorCode createProblem(MPI_Comm comm, const std::string& name, Problem* problem);
 std::string problemNames();
+// Name and one-line description of every registered problem, in registry order (for -help).
+struct ProblemDoc {
+  const char* name;
+  const char* description;
+};
+std::vector<ProblemDoc> problemDocs();
 
 // Family factories (one file each), used by the registry in problem.cpp.
 PetscErrorCode createRiemannProblem(MPI_Comm comm, const std::string& name, Problem* problem);

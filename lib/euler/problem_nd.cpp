@@ -12,18 +12,20 @@ namespace {
 struct EntryND {
   const char* name;
   PetscErrorCode (*create)(MPI_Comm, const std::string&, int, int, ProblemND*);
+  const char* description; // one line for -help
 };
 const EntryND kProblemsND[] = {
-    {"isentropic_vortex", createVortexProblemND},
-    {"riemann2d", createRiemann2dProblemND},
-    {"lax_liu_4", createRiemann2dProblemND},
-    {"lax_liu_6", createRiemann2dProblemND},
-    {"liska_wendroff_3", createRiemann2dProblemND},
-    {"double_mach", createDoubleMachProblemND},
-    {"rayleigh_taylor", createRayleighTaylorProblemND},
-    {"explosion", createExplosionProblemND},
-    {"sedov", createExplosionProblemND},
-    {"taylor_green", createTaylorGreenProblemND},
+    {"isentropic_vortex", createVortexProblemND,
+     "Isentropic vortex advected by a uniform flow, periodic, exact"},
+    {"riemann2d", createRiemann2dProblemND, "Four-quadrant 2D Riemann problem with any states (-rho_ne ...)"},
+    {"lax_liu_4", createRiemann2dProblemND, "Lax-Liu configuration 4: four shocks"},
+    {"lax_liu_6", createRiemann2dProblemND, "Lax-Liu configuration 6: four slip lines"},
+    {"liska_wendroff_3", createRiemann2dProblemND, "Liska-Wendroff configuration 3: four shocks"},
+    {"double_mach", createDoubleMachProblemND, "Woodward-Colella double Mach reflection of a Mach 10 shock"},
+    {"rayleigh_taylor", createRayleighTaylorProblemND, "Rayleigh-Taylor instability under gravity"},
+    {"explosion", createExplosionProblemND, "Toro's cylindrical (2D) / spherical (3D) explosion"},
+    {"sedov", createExplosionProblemND, "Sedov point explosion in a cold uniform gas"},
+    {"taylor_green", createTaylorGreenProblemND, "Inviscid Taylor-Green vortex at Mach 0.1 (3D only)"},
 };
 
 bool isPlanarName(const std::string& name) {
@@ -36,6 +38,12 @@ bool isPlanarName(const std::string& name) {
   return false;
 }
 } // namespace
+
+std::vector<ProblemDoc> problemDocsND() {
+  std::vector<ProblemDoc> docs;
+  for (const auto& e : kProblemsND) docs.push_back({e.name, e.description});
+  return docs;
+}
 
 std::string problemNamesND() {
   std::string out;

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace suite::euler {
 
@@ -49,6 +50,9 @@ struct ProblemND {
 // error listing the known ones; a problem that needs another dimension (taylor_green needs 3): clear error.
 PetscErrorCode createProblemND(MPI_Comm comm, const std::string& name, int dim, int axis, ProblemND* problem);
 std::string problemNamesND();
+// The genuinely multi-dimensional problems with their one-line descriptions, in registry order (the planar
+// ones are problemDocs() of problem.hpp).
+std::vector<ProblemDoc> problemDocsND();
 
 // Family factories (one file each, problem_nd_*.cpp), used by the registry in problem_nd.cpp. Each sets
 // everything in ProblemND except name and dim (set by the registry before the call).

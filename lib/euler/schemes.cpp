@@ -26,6 +26,12 @@ const SchemeInfo* findScheme(const std::string& name) {
   return nullptr;
 }
 
+std::vector<const SchemeInfo*> allSchemes() {
+  std::vector<const SchemeInfo*> out;
+  for (const auto& s : kSchemes) out.push_back(&s);
+  return out;
+}
+
 std::string schemeNames() {
   std::string out;
   for (const auto& s : kSchemes) out += (out.empty() ? "" : ", ") + std::string(s.name);

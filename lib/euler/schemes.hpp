@@ -6,6 +6,7 @@
 #include "euler/row.hpp"
 
 #include <string>
+#include <vector>
 
 namespace suite::euler {
 
@@ -22,6 +23,8 @@ struct SchemeInfo {
 
 // nullptr when unknown.
 const SchemeInfo* findScheme(const std::string& name);
+// Every registered scheme, in registry order (name and description document -scheme).
+std::vector<const SchemeInfo*> allSchemes();
 // "enopade6, crweno5, weno5, muscl2"
 std::string schemeNames();
 

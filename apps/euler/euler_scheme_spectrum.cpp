@@ -3,6 +3,8 @@
 // /scheme_spectrum/{w, smooth_re, smooth_im, shock_re, shock_im} (and the exact Pade curve) to -output.
 #include "euler_run.hpp"
 
+#include "euler/schemes.hpp"
+
 #include "core/log.hpp"
 #include "euler/scheme_spectrum.hpp"
 
@@ -12,6 +14,7 @@ namespace euler_app {
 
 PetscErrorCode EulerRun::schemeSpectrum() {
   PetscFunctionBeginUser;
+  scheme_ = suite::euler::findScheme(opt_.scheme); // a registered name (checked when read)
   const int n = (int)opt_.scheme_spectrum;
   PetscCheck(n >= 8 && n % 2 == 0 && n <= 1 << 20, ctx_.comm(), PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -scheme_spectrum %d: an even number of points in [8, 2^20]", n);

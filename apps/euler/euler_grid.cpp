@@ -1,0 +1,167 @@
+// The Euler run's grid and initial state (see euler_run.hpp): the DMDA (1D line, or 2D/3D with a star stencil
+// and the process grid from -da_processors_*), the line communicators, the direction sweep, the initial
+// conserved state, the totals of the conservation report and the PETSc TS.
+#include "euler_run.hpp"
+
+#include "euler/schemes.hpp"
+#include "euler_state.hpp"
+#include "euler_stepper.hpp"
+
+namespace euler_app {
+
+using namespace suite::euler;
+
+namespace {
+PetscErrorCode rhsCallback(TS, PetscReal t, Vec U, Vec F, void* ctx) {
+  return static_cast<EulerRun*>(ctx)->rhs(t, U, F);
+}
+} // namespace
+
+EulerRun::~EulerRun() {
+  TSDestroy(&ts_);
+  VecDestroy(&U_);
+  DMDestroy(&da_);
+  for (MPI_Comm& c : line_comm_)
+    if (c != MPI_COMM_NULL) MPI_Comm_free(&c);
+}
+
+PetscErrorCode EulerRun::setupGrid() {
+  MPI_Comm comm = ctx_.comm();
+  DMBoundaryType bt[3];
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) {
+    periodic_[d] = d >= dim() || problem_.bc[d][0] == BcN::Periodic;
+    PetscCheck(d >= dim() || (problem_.bc[d][0] == BcN::Periodic) == (problem_.bc[d][1] == BcN::Periodic),
+               comm, PETSC_ERR_ARG_WRONG, "Periodic boundaries must be set on both faces of direction %d", d);
+    bt[d] = periodic_[d] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
+    dx_[d] = d < dim() ? (problem_.hi[d] - problem_.lo[d]) / opt_.n[d] : 1.0;
+  }
+  const PetscInt w = kLineGhost, *n = opt_.n;
+  if (dim() == 1)
+    PetscCall(DMDACreate1d(comm, bt[0], n[0], nv(), w, nullptr, &da_));
+  else if (dim() == 2)
+    PetscCall(DMDACreate2d(comm, bt[0], bt[1], DMDA_STENCIL_STAR, n[0], n[1], PETSC_DECIDE, PETSC_DECIDE,
+                           nv(), w, nullptr, nullptr, &da_));
+  else
+    PetscCall(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, n[0], n[1], n[2], PETSC_DECIDE,
+                           PETSC_DECIDE, PETSC_DECIDE, nv(), w, nullptr, nullptr, nullptr, &da_));
+  if (dim() > 1) PetscCall(DMSetFromOptions(da_)); // -da_processors_x ...
+  PetscCall(DMSetUp(da_));
+  const char* fields[4] = {"rho", "rho_u", "rho_v", "rho_w"};
+  for (int c = 0; c < nv(); ++c) PetscCall(DMDASetFieldName(da_, c, c == nv() - 1 ? "E" : fields[c]));
+  PetscCall(DMDAGetCorners(da_, &s_[0], &s_[1], &s_[2], &m_[0], &m_[1], &m_[2]));
+  PetscCall(DMDAGetGhostCorners(da_, &gs_[0], &gs_[1], &gs_[2], &gm_[0], &gm_[1], &gm_[2]));
+  if (dim() > 1) // 1D: checked with the options (the message names -nx and the rank count)
+    for (int d = 0; d < dim(); ++d)
+      PetscCheck(m_[d] >= w, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+                 "Each rank needs at least %d cells per direction (has %" PetscInt_FMT " along %c)", (int)w,
+                 m_[d], 'x' + d);
+  PetscFunctionReturn(0);
+}
+
+// Line communicators: the ranks with the same process coordinates in the other directions, ordered along d.
+// In 1D the one line spans every rank: the run's communicator.
+PetscErrorCode EulerRun::setupLineComms() {
+  PetscInt procs[3] = {1, 1, 1};
+  const PetscInt* ranges[3] = {nullptr, nullptr, nullptr};
+  PetscFunctionBeginUser;
+  if (dim() == 1) PetscFunctionReturn(0);
+  PetscCall(DMDAGetInfo(da_, nullptr, nullptr, nullptr, nullptr, &procs[0], &procs[1], &procs[2], nullptr,
+                        nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(da_, &ranges[0], &ranges[1], dim() == 3 ? &ranges[2] : nullptr));
+  int coord[3] = {0, 0, 0};
+  for (int d = 0; d < dim(); ++d) {
+    PetscInt start = 0;
+    for (PetscInt p = 0; p < procs[d]; ++p) {
+      if (start == s_[d]) coord[d] = (int)p;
+      start += ranges[d][p];
+    }
+  }
+  for (int d = 0; d < dim(); ++d) {
+    const int a = (d + 1) % 3, b = (d + 2) % 3;
+    const int color = coord[a] + (int)procs[a] * coord[b];
+    PetscCallMPI(MPI_Comm_split(ctx_.comm(), color, coord[d], &line_comm_[d]));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::setupSweep() {
+  PetscFunctionBeginUser;
+  scheme_ = findScheme(opt_.scheme); // a registered name (checked when read)
+  LineOptions lo;
+  lo.gamma = problem_.gamma;
+  lo.characteristic = opt_.characteristic;
+  lo.local_lf = opt_.local_lf;
+  lo.shock_threshold = opt_.shock_threshold;
+  lo.positivity = opt_.positivity;
+  lo.gather_lines = opt_.line_solve == "gather";
+  lo.transpose_lines = opt_.line_solve == "transpose";
+  lo.batch_bytes = (size_t)opt_.line_batch_mb << 20;
+  if (dim() == 1) sweep3_ = std::make_unique<DirectionSweep<3>>(scheme_, lo);
+  if (dim() == 2) sweep4_ = std::make_unique<DirectionSweep<4>>(scheme_, lo);
+  if (dim() == 3) sweep5_ = std::make_unique<DirectionSweep<5>>(scheme_, lo);
+  const char* stages[3] = {"Euler lines x", "Euler lines y", "Euler lines z"};
+  if (dim() > 1) // one log stage per direction of the grid
+    for (int d = 0; d < dim(); ++d) PetscCall(PetscLogStageRegister(stages[d], &stage_lines_[d]));
+  PetscFunctionReturn(0);
+}
+
+void EulerRun::cellCentre(PetscInt i, PetscInt j, PetscInt k, double x[3]) const {
+  const PetscInt idx[3] = {i, j, k};
+  for (int d = 0; d < 3; ++d) x[d] = d < dim() ? problem_.lo[d] + (idx[d] + 0.5) * dx_[d] : 0.0;
+}
+
+void EulerRun::blockDims(suite::Dims* dims, suite::Dims* start, suite::Dims* count) const {
+  dims->clear(), start->clear(), count->clear();
+  for (int d = dim() - 1; d >= 0; --d) { // slowest first: (z,) (y,) x
+    dims->push_back((unsigned long long)opt_.n[d]);
+    start->push_back((unsigned long long)s_[d]);
+    count->push_back((unsigned long long)m_[d]);
+  }
+}
+
+PetscErrorCode EulerRun::setInitialState() {
+  PetscScalar* u;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(da_, &U_));
+  PetscCall(VecGetArray(U_, &u));
+  size_t idx = 0;
+  for (PetscInt k = s_[2]; k < s_[2] + m_[2]; ++k)
+    for (PetscInt j = s_[1]; j < s_[1] + m_[1]; ++j)
+      for (PetscInt i = s_[0]; i < s_[0] + m_[0]; ++i, idx += nv()) {
+        double x[3];
+        cellCentre(i, j, k, x);
+        conservative(problem_.initial(x), dim(), problem_.gamma, u + idx);
+      }
+  PetscCall(VecRestoreArray(U_, &u));
+  PetscCall(totals(U_, &totals0_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::totals(Vec U, std::vector<double>* sum) const {
+  const PetscScalar* a;
+  PetscFunctionBeginUser;
+  sum->assign(nv(), 0.0);
+  const double vol = dx_[0] * dx_[1] * (dim() == 3 ? dx_[2] : 1.0); // 1D: dx_[1] = 1, so vol = dx
+  PetscCall(VecGetArrayRead(U, &a));
+  for (PetscInt c = 0; c < localCells(); ++c)
+    for (int v = 0; v < nv(); ++v) (*sum)[v] += a[c * nv() + v] * vol;
+  PetscCall(VecRestoreArrayRead(U, &a));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum->data(), nv(), MPI_DOUBLE, MPI_SUM, ctx_.comm()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::setup() {
+  double amax[3];
+  PetscFunctionBeginUser;
+  PetscCall(setupGrid());
+  PetscCall(setupLineComms());
+  PetscCall(setupSweep());
+  PetscCall(setInitialState());
+  PetscCall(maxWaveSpeeds(U_, amax));
+  const StepperSettings s{opt_.time, opt_.t_final, opt_.dt > 0 ? opt_.dt : cflTimeStep(amax)};
+  PetscCall(createStepper(ctx_.comm(), da_, U_, s, rhsCallback, this, &ts_));
+  PetscFunctionReturn(0);
+}
+
+} // namespace euler_app
