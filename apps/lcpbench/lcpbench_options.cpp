@@ -1,24 +1,22 @@
-// lcpbench's options: declaration (-help text generated from the registries), defaults and validation.
-#include "lcpbench_options.hpp"
-#include "lcpbench_util.hpp"
+// lcpbench's options (see lcpbench.hpp): declared with -help text generated from the registries of lib/lcp,
+// defaults, and validation (collective: every rank takes the same error path).
+#include "lcpbench.hpp"
 
+#include "core/comma_list.hpp"
 #include "core/named_choice.hpp"
-#include "lcp/generators.hpp"
-#include "lcp/solver.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace lcpbench_app {
+namespace {
 
 using suite::Choice;
 using suite::lcp::FclibModel;
 
-namespace {
-
 struct FclibModelInfo {
   const char* name;
-  const char* help;
+  const char* description;
   FclibModel model;
 };
 const FclibModelInfo kFclibModels[] = {
@@ -27,35 +25,23 @@ const FclibModelInfo kFclibModels[] = {
     {"normal", "the frictionless normal LCP", FclibModel::Normal},
 };
 
-std::vector<Choice> familyChoices() {
+template <class Registry> std::vector<Choice> choices(const Registry& r) {
   std::vector<Choice> c;
-  for (const auto& f : suite::lcp::familyRegistry()) c.push_back({f.name, f.description});
+  for (const auto& x : r) c.push_back({x.name, x.description});
+  return c;
+}
+
+std::vector<Choice> familyChoices() {
+  std::vector<Choice> c = choices(suite::lcp::familyRegistry());
   c.push_back({"file", "problems read from -file (Siconos .dat, suite .h5, FCLib HDF5)"});
   return c;
 }
 
-std::vector<Choice> solverChoices() {
-  std::vector<Choice> c;
-  for (const auto& s : suite::lcp::solverRegistry()) c.push_back({s.name, s.description});
-  return c;
-}
-
-std::vector<Choice> fclibModelChoices() {
-  std::vector<Choice> c;
-  for (const auto& m : kFclibModels) c.push_back({m.name, m.help});
-  return c;
-}
-
-// Which of the options with a context-dependent default were given.
-struct Given {
-  PetscBool family = PETSC_FALSE, strict = PETSC_FALSE;
-};
-
-PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options* o, Given* given) {
+PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options* o, PetscBool* family_set) {
   char files[8192] = "";
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-family", "Problem family", familyChoices(), &o->family,
-                                 &given->family));
+                                 family_set));
   PetscCall(PetscOptionsInt("-n", "Problem size (generated families)", "", o->n, &o->n, nullptr));
   PetscCall(
       PetscOptionsInt("-count", "Number of problems (generated families)", "", o->count, &o->count, nullptr));
@@ -74,16 +60,16 @@ PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options*
   PetscCall(PetscOptionsString(
       "-file", "Problem files for -family file (comma-separated; .dat Siconos, .h5 suite, FCLib HDF5)", "",
       files, files, sizeof files, nullptr));
-  o->files = split(files);
+  o->files = suite::splitCommaList(files);
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-fclib_model", "FCLib frictional-contact files read as",
-                                 fclibModelChoices(), &o->fclib_model));
+                                 choices(kFclibModels), &o->fclib_model));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode readSolverOptions(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscFunctionBeginUser;
-  PetscCall(suite::optionsChoiceList(PetscOptionsObject, "-solvers", "LCP solvers to run", solverChoices(),
-                                     &o->solvers));
+  PetscCall(suite::optionsChoiceList(PetscOptionsObject, "-solvers", "LCP solvers to run",
+                                     choices(suite::lcp::solverRegistry()), &o->solvers));
   PetscCall(PetscOptionsInt("-max_it", "Iteration / pivot cap of every solver (0: each solver's default)", "",
                             o->max_it, &o->max_it, nullptr));
   PetscCall(PetscOptionsReal("-omega", "PGS relaxation factor", "", o->omega, &o->omega, nullptr));
@@ -96,7 +82,7 @@ PetscErrorCode readSolverOptions(PetscOptionItems* PetscOptionsObject, Options* 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode readRunOptions(PetscOptionItems* PetscOptionsObject, Options* o, Given* given) {
+PetscErrorCode readRunOptions(PetscOptionItems* PetscOptionsObject, Options* o, PetscBool* strict_set) {
   char output[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsInt("-chunk", "Problems per work request (0: automatic)", "", o->chunk, &o->chunk,
@@ -104,7 +90,7 @@ PetscErrorCode readRunOptions(PetscOptionItems* PetscOptionsObject, Options* o, 
   PetscCall(PetscOptionsBool("-strict",
                              "Exit non-zero if a solver leaves a problem unsolved (default: on for "
                              "-family file)",
-                             "", o->strict, &o->strict, &given->strict));
+                             "", o->strict, &o->strict, strict_set));
   PetscCall(PetscOptionsString("-output", "HDF5 results file (OUT.partial while the batch runs)", "", output,
                                output, sizeof output, nullptr));
   o->output = output;
@@ -118,16 +104,6 @@ PetscErrorCode readRunOptions(PetscOptionItems* PetscOptionsObject, Options* o, 
                              "", o->resume, &o->resume, nullptr));
   PetscCall(PetscOptionsReal("-delay_per_problem", "Testing: sleep this many seconds after each problem", "",
                              o->delay, &o->delay, nullptr));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode checkSolverList(MPI_Comm comm, const std::vector<std::string>& solvers) {
-  PetscFunctionBeginUser;
-  PetscCheck(!solvers.empty(), comm, PETSC_ERR_ARG_WRONG, "-solvers is empty; known: %s",
-             join(suite::lcp::solverNames()).c_str());
-  for (const auto& s : solvers)
-    PetscCheck(std::count(solvers.begin(), solvers.end(), s) == 1, comm, PETSC_ERR_ARG_WRONG,
-               "Solver '%s' is listed twice in -solvers", s.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -146,17 +122,21 @@ PetscErrorCode checkRanges(MPI_Comm comm, const Options& o) {
   PetscFunctionReturn(0);
 }
 
-// Context-dependent defaults and the checks that involve several options.
-PetscErrorCode finishOptions(MPI_Comm comm, const Given& given, Options* o) {
+// Context-dependent defaults (-family, -strict unless given) and the checks that involve several options.
+PetscErrorCode finishOptions(MPI_Comm comm, PetscBool family_set, PetscBool strict_set, Options* o) {
   PetscFunctionBeginUser;
   // -file alone means -family file; -file with a generated family would silently ignore the files.
-  if (!o->files.empty() && !given.family) o->family = "file";
+  if (!o->files.empty() && !family_set) o->family = "file";
   PetscCheck(o->files.empty() || o->fromFiles(), comm, PETSC_ERR_ARG_INCOMP,
              "-file is only read with -family file (given -family %s)", o->family.c_str());
-  PetscCall(checkSolverList(comm, o->solvers));
+  PetscCheck(!o->solvers.empty(), comm, PETSC_ERR_ARG_WRONG, "-solvers is empty; known: %s",
+             suite::joinCommaList(suite::lcp::solverNames()).c_str());
+  for (const auto& s : o->solvers)
+    PetscCheck(std::count(o->solvers.begin(), o->solvers.end(), s) == 1, comm, PETSC_ERR_ARG_WRONG,
+               "Solver '%s' is listed twice in -solvers", s.c_str());
   PetscCheck(!o->output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
   PetscCall(checkRanges(comm, *o));
-  if (!given.strict) o->strict = o->fromFiles() ? PETSC_TRUE : PETSC_FALSE;
+  if (!strict_set) o->strict = o->fromFiles() ? PETSC_TRUE : PETSC_FALSE;
   if (o->fromFiles()) {
     PetscCheck(!o->files.empty(), comm, PETSC_ERR_ARG_WRONG, "-family file needs -file FILE[,FILE...]");
   } else {
@@ -169,18 +149,18 @@ PetscErrorCode finishOptions(MPI_Comm comm, const Given& given, Options* o) {
 } // namespace
 
 PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_only) {
-  Given given;
+  PetscBool family_set = PETSC_FALSE, strict_set = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx.comm(), "", "lcpbench options", "");
-  PetscCall(readProblemOptions(PetscOptionsObject, o, &given));
+  PetscCall(readProblemOptions(PetscOptionsObject, o, &family_set));
   PetscCall(readSolverOptions(PetscOptionsObject, o));
-  PetscCall(readRunOptions(PetscOptionsObject, o, &given));
+  PetscCall(readRunOptions(PetscOptionsObject, o, &strict_set));
   PetscOptionsEnd();
   PetscCall(ctx.checkUnusedOptions());
   *help_only = ctx.helpRequested();
   if (*help_only) PetscFunctionReturn(0);
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-max_walltime", &o->max_walltime, nullptr));
-  PetscCall(finishOptions(ctx.comm(), given, o));
+  PetscCall(finishOptions(ctx.comm(), family_set, strict_set, o));
   PetscFunctionReturn(0);
 }
 

@@ -1,8 +1,12 @@
-// lcpbench's resume: batch header, resuming or creating OUT.partial (see lcpbench_resume.hpp).
-#include "lcpbench_resume.hpp"
-#include "lcpbench_util.hpp"
+// lcpbench's resume (-resume, default on; see lcpbench.hpp): the batch header that identifies a batch, and the
+// start of a run, which continues a matching OUT.partial (done problems are skipped, never recomputed; the
+// run gets the next run number) or creates a new one. A mismatched or foreign OUT.partial is one clear error
+// that leaves the file as it is (-resume 0 discards it).
+#include "lcpbench.hpp"
 
+#include "core/comma_list.hpp"
 #include "core/log.hpp"
+#include "core/rank0_work.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -80,36 +84,35 @@ std::string startStore(const std::string& partial, bool resume, Store* store, Re
 
 } // namespace
 
+// A resumed batch must match the header exactly (results must not depend on the run).
 BatchHeader batchHeader(const Options& o, const Batch& b) {
   BatchHeader header = {{"family", b.family},
                         {"count", std::to_string(b.count)},
-                        {"solvers", join(b.solver_names)},
+                        {"solvers", suite::joinCommaList(b.solver_names)},
                         {"max_it", std::to_string(o.max_it)},
-                        {"omega", num(o.omega)},
+                        {"omega", suite::exactText(o.omega)},
                         {"block_size", std::to_string(o.block_size)},
-                        {"rel_tol", num(o.rel_tol)},
+                        {"rel_tol", suite::exactText(o.rel_tol)},
                         {"refine", o.refine ? "1" : "0"}};
   if (b.fromFiles()) {
-    header.push_back({"files", join(b.files)});
+    header.push_back({"files", suite::joinCommaList(b.files)});
     header.push_back({"fclib_model", o.fclib_model});
     return header;
   }
-  const BatchHeader generated = {{"n", std::to_string(o.n)}, {"seed", std::to_string(o.seed)},
-                                 {"cond", num(o.cond)},      {"qrange", num(o.qrange)},
-                                 {"lower", num(o.lower)},    {"upper", num(o.upper)}};
+  const BatchHeader generated = {{"n", std::to_string(o.n)},           {"seed", std::to_string(o.seed)},
+                                 {"cond", suite::exactText(o.cond)},   {"qrange", suite::exactText(o.qrange)},
+                                 {"lower", suite::exactText(o.lower)}, {"upper", suite::exactText(o.upper)}};
   header.insert(header.end(), generated.begin(), generated.end());
   return header;
 }
 
 PetscErrorCode startBatchFile(const suite::RunContext& ctx, const std::string& partial, bool resume,
                               Store* store, ResumePoint* rp) {
-  MPI_Comm comm = ctx.comm();
   std::string note;
   PetscFunctionBeginUser;
-  std::string err = rank0Try(ctx.rank(), [&] { note = startStore(partial, resume, store, rp); });
-  PetscCall(bcastError(comm, &err));
-  PetscCheck(err.empty(), comm, PETSC_ERR_FILE_UNEXPECTED, "%s", err.c_str());
-  PetscCallMPI(MPI_Bcast(&rp->ndone, 1, MPI_LONG_LONG, 0, comm));
+  PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_UNEXPECTED, "",
+                           [&] { note = startStore(partial, resume, store, rp); }));
+  PetscCallMPI(MPI_Bcast(&rp->ndone, 1, MPI_LONG_LONG, 0, ctx.comm()));
   if (ctx.rank() == 0 && !note.empty())
     PetscCall(suite::logInfo(PETSC_COMM_SELF, ctx.quiet(), "lcpbench: %s", note.c_str()));
   PetscFunctionReturn(0);

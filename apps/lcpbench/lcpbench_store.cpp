@@ -1,20 +1,17 @@
-// lcpbench's results file: the Store's layout and streamed writes, and the summary pass at completion (see
-// lcpbench_store.hpp).
-#include "lcpbench_store.hpp"
-
-#include "lcp/solver.hpp"
+// lcpbench's results file (see lcpbench.hpp): the Store's layout and streamed writes (data first, then the done
+// flags that vouch for it; protocol in main.cpp), and the per-solver summary pass over it at completion.
+#include "lcpbench.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 
 namespace lcpbench_app {
 
 using suite::lcp::Status;
-
-// ---- Store ----
 
 void Store::create(const std::string& partial) {
   const unsigned long long C = static_cast<unsigned long long>(b_.count);
@@ -43,7 +40,7 @@ void Store::create(const std::string& partial) {
 template <class T>
 void Store::writeColumn(const std::vector<long long>& order, int c, const std::string& path) {
   std::vector<T> v(nbuf_);
-  for (long long i = 0; i < nbuf_; ++i) v[i] = static_cast<T>(field(order, i, c));
+  for (long long i = 0; i < nbuf_; ++i) v[i] = static_cast<T>(buf_[order[i] * rec_len_ + c]);
   f_.writeSelected(path, v.data());
 }
 
@@ -94,8 +91,9 @@ void Store::runTotals(std::vector<double>* walls, std::vector<double>* solved) {
   }
 }
 
-// ---- summary pass ----
+namespace {
 
+// Median of a multiset given as value -> multiplicity.
 double median(const std::map<double, long long>& m) {
   long long total = 0;
   for (const auto& kv : m) total += kv.second;
@@ -109,8 +107,6 @@ double median(const std::map<double, long long>& m) {
   };
   return total % 2 ? nth(total / 2) : 0.5 * (nth(total / 2 - 1) + nth(total / 2));
 }
-
-namespace {
 
 // Multisets of the solved problems' iterations, pivots and pivots per n.
 struct Tallies {
@@ -189,9 +185,9 @@ void writeSummaryAttributes(suite::H5AppendFile& f, const std::string& gg, const
   f.setAttribute(gg, "median_pivots", S.med_piv);
   f.setAttribute(gg, "median_pivots_per_n", S.med_pvn);
   f.setAttribute(gg, "total_time", S.tsum);
-  f.setAttribute(gg, "problems_per_second_per_core", S.tsum > 0 ? count / S.tsum : 0.0);
+  f.setAttribute(gg, "problems_per_second_per_core", S.rate(count));
   f.setAttribute(gg, "total_cpu_time", S.csum);
-  f.setAttribute(gg, "problems_per_cpu_second", S.csum > 0 ? count / S.csum : 0.0);
+  f.setAttribute(gg, "problems_per_cpu_second", S.cpuRate(count));
 }
 
 } // namespace

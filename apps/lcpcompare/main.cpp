@@ -23,7 +23,7 @@
 #include <ctime>
 #include <functional>
 #include <memory>
-#include <sstream>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -91,192 +91,237 @@ struct Entry {
   std::function<Outcome(const Problem&)> run;
 };
 
+struct Options {
+  std::string family = "random_box", output;
+  std::vector<std::string> ours = {"bpp", "lemke", "keller", "pgs", "fb_newton"};
+  PetscInt n = 100, count = 200, seed = 1, max_it = 0;
+  PetscReal cond = 1e4, qrange = 1e2, rel_tol = 1e-10;
+};
+
+// Reads and validates the options; *help_only: -help was given.
+PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_only) {
+  MPI_Comm comm = ctx.comm();
+  char output[PETSC_MAX_PATH_LEN] = "";
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "", "lcpcompare options", "");
+  PetscCall(
+      suite::optionsChoice(PetscOptionsObject, "-family", "Problem family", familyChoices(), &o->family));
+  PetscCall(PetscOptionsInt("-n", "Problem size", "", o->n, &o->n, nullptr));
+  PetscCall(PetscOptionsInt("-count", "Number of problems", "", o->count, &o->count, nullptr));
+  PetscCall(PetscOptionsInt("-seed", "Generator seed (same problems as lcpbench -seed)", "", o->seed,
+                            &o->seed, nullptr));
+  PetscCall(PetscOptionsReal("-cond", "Condition number of M", "", o->cond, &o->cond, nullptr));
+  PetscCall(PetscOptionsReal("-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", "", o->qrange,
+                             &o->qrange, nullptr));
+  PetscCall(suite::optionsChoiceList(PetscOptionsObject, "-ours", "The suite's solvers to time",
+                                     solverChoices(), &o->ours));
+  PetscCall(PetscOptionsInt("-max_it", "Iteration cap of the iterative solvers (0: defaults)", "", o->max_it,
+                            &o->max_it, nullptr));
+  PetscCall(PetscOptionsReal("-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", "", o->rel_tol,
+                             &o->rel_tol, nullptr));
+  PetscCall(PetscOptionsString("-output", "HDF5 results file", "", output, output, sizeof output, nullptr));
+  PetscOptionsEnd();
+  o->output = output;
+  PetscCall(ctx.checkUnusedOptions());
+  *help_only = ctx.helpRequested();
+  if (*help_only) PetscFunctionReturn(0);
+  PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
+  PetscCheck(o->n >= 1 && o->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
+  PetscCheck(output[0], comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
+  PetscCall(suite::checkOutputWritable(comm, output, "output"));
+  PetscFunctionReturn(0);
+}
+
+// The suite's solver s (known: -ours is validated against the registry); keep owns it.
+Entry oursEntry(const std::string& s, const suite::lcp::SolverOptions& so,
+                std::vector<std::unique_ptr<Solver>>* keep) {
+  keep->push_back(makeSolver(s));
+  const Solver* raw = keep->back().get();
+  return {s, [raw, so](const Problem& p) {
+            const Result r = solve(*raw, p, so);
+            return Outcome{static_cast<int>(r.status), r.cpu_time, r.residual};
+          }};
+}
+
+#ifdef LCPCOMPARE_SICONOS
+// Siconos: standard LCP -> lcp_* solvers; box -> relay_* (relay_id < 0: no box version).
+Entry siconosEntry(const std::string& name, int lcp_id, int relay_id, const Options& o) {
+  const PetscInt max_it = o.max_it;
+  const double rel_tol = o.rel_tol;
+  return {name, [=](const Problem& p) -> Outcome {
+            const int m = p.size();
+            const bool box = !p.isStandard();
+            if (box && relay_id < 0) return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
+            NumericsMatrix* M = NM_create(NM_DENSE, m, m);
+            std::copy(p.M.data(), p.M.data() + static_cast<size_t>(m) * m, M->matrix0); // column-major both
+            std::vector<double> q(p.q.data(), p.q.data() + m), lb(p.l.data(), p.l.data() + m),
+                ub(p.u.data(), p.u.data() + m), z(m, 0.0), w(m, 0.0);
+            ::SolverOptions* opt = solver_options_create(box ? relay_id : lcp_id);
+            if (max_it > 0) opt->iparam[SICONOS_IPARAM_MAX_ITER] = static_cast<int>(max_it);
+            opt->dparam[SICONOS_DPARAM_TOL] = 1e-12;
+            int info = 0;
+            const double t0 = threadCpu();
+            if (box) {
+              RelayProblem rp{m, M, q.data(), lb.data(), ub.data()};
+              info = relay_driver(&rp, z.data(), w.data(), opt);
+            } else {
+              LinearComplementarityProblem lp{m, M, q.data()};
+              info = linearComplementarity_driver(&lp, z.data(), w.data(), opt);
+            }
+            const double cpu = threadCpu() - t0;
+            solver_options_delete(opt);
+            NM_free(M);
+            return judge(p, Eigen::Map<Vec>(z.data(), m), info == 0, cpu, rel_tol);
+          }};
+}
+#endif
+
+#ifdef LCPCOMPARE_BULLET
+// Bullet's btSolveDantzigLCP: A x = b + w, lo <= x <= hi, A row-major n x n (overwritten), so b = -q.
+Outcome bulletDantzig(const Problem& p, double rel_tol) {
+  const int m = p.size();
+  for (int i = 0; i < m; ++i)
+    if (p.l[i] > 0.0 || p.u[i] < 0.0) return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
+  std::vector<btScalar> A(static_cast<size_t>(m) * m), b(m), x(m, 0.0), w(m, 0.0), lo(m), hi(m);
+  std::vector<int> findex(m, -1);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) A[static_cast<size_t>(i) * m + j] = p.M(i, j);
+    b[i] = -p.q[i];
+    lo[i] = std::isfinite(p.l[i]) ? p.l[i] : -BT_INFINITY;
+    hi[i] = std::isfinite(p.u[i]) ? p.u[i] : BT_INFINITY;
+  }
+  btDantzigScratchMemory scratch;
+  const double t0 = threadCpu();
+  const bool ok = btSolveDantzigLCP(m, A.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(),
+                                    findex.data(), scratch);
+  const double cpu = threadCpu() - t0;
+  Vec z(m);
+  for (int i = 0; i < m; ++i) z[i] = x[i];
+  return judge(p, z, ok, cpu, rel_tol);
+}
+#endif
+
+// Every solver timed: the suite's (-ours), then Siconos' and Bullet's where built.
+std::vector<Entry> makeEntries(const Options& o, std::vector<std::unique_ptr<Solver>>* keep) {
+  suite::lcp::SolverOptions so;
+  so.rel_tol = o.rel_tol;
+  so.max_iterations = static_cast<int>(o.max_it);
+  std::vector<Entry> entries;
+  for (const auto& s : o.ours) entries.push_back(oursEntry(s, so, keep));
+#ifdef LCPCOMPARE_SICONOS
+  entries.push_back(siconosEntry("siconos_lemke", SICONOS_LCP_LEMKE, SICONOS_RELAY_LEMKE, o));
+  entries.push_back(siconosEntry("siconos_pgs", SICONOS_LCP_PGS, SICONOS_RELAY_PGS, o));
+  entries.push_back(siconosEntry("siconos_fb_newton", SICONOS_LCP_NEWTON_FB_FBLSA, -1, o));
+#endif
+#ifdef LCPCOMPARE_BULLET
+  const double rel_tol = o.rel_tol;
+  entries.push_back({"bullet_dantzig", [rel_tol](const Problem& p) { return bulletDantzig(p, rel_tol); }});
+#endif
+  return entries;
+}
+
+// Per entry and problem: status, CPU time, residual.
+struct Table {
+  std::vector<std::vector<int>> status;
+  std::vector<std::vector<double>> cpu, resid;
+};
+
+Table runAll(const Options& o, const std::vector<Entry>& entries) {
+  const GeneratorParams gp{
+      static_cast<int>(o.n), o.cond, o.qrange, -o.qrange, o.qrange, static_cast<std::uint64_t>(o.seed)};
+  const size_t ne = entries.size();
+  Table t;
+  t.status.assign(ne, std::vector<int>(o.count));
+  t.cpu.assign(ne, std::vector<double>(o.count));
+  t.resid = t.cpu;
+  for (PetscInt k = 0; k < o.count; ++k) {
+    const Problem p = generate(o.family, gp, static_cast<std::uint64_t>(k));
+    for (size_t e = 0; e < ne; ++e) { // same problem, every solver, in turn
+      const Outcome r = entries[e].run(p);
+      t.status[e][k] = r.status;
+      t.cpu[e][k] = r.cpu;
+      t.resid[e][k] = r.residual;
+    }
+  }
+  return t;
+}
+
+PetscErrorCode writeHeader(const suite::RunContext& ctx, const Options& o, suite::H5Output* out) {
+  PetscFunctionBeginUser;
+  PetscCall(out->open(ctx.comm(), o.output.c_str()));
+  PetscCall(out->writeProvenance(ctx));
+  PetscCall(out->writeAttribute("/", "family", o.family));
+  PetscCall(out->writeAttribute("/", "n", (long long)o.n));
+  PetscCall(out->writeAttribute("/", "count", (long long)o.count));
+  PetscCall(out->writeAttribute("/", "cond", (double)o.cond));
+  PetscCall(out->writeAttribute("/", "qrange", (double)o.qrange));
+  PetscCall(out->writeAttribute("/", "seed", (long long)o.seed));
+  PetscCall(out->writeAttribute("/", "timing", "CPU seconds of the calling thread around the solver call"));
+  PetscFunctionReturn(0);
+}
+
+double total(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0);
+}
+
+// Entry e's datasets and summary attributes, and its line of the table; ref: Bullet's Dantzig or -1.
+PetscErrorCode writeEntry(const suite::RunContext& ctx, const Options& o, const std::string& name,
+                          const Table& t, int e, int ref, suite::H5Output* out) {
+  const unsigned long long C = static_cast<unsigned long long>(o.count);
+  const std::string g = "/results/" + name;
+  long long solved = 0, unsupported = 0;
+  std::vector<double> c;
+  PetscFunctionBeginUser;
+  PetscCall(out->writeReplicated(g + "/status", t.status[e].data(), {C}, ""));
+  PetscCall(out->writeReplicated(g + "/cpu_time", t.cpu[e].data(), {C}, "s"));
+  PetscCall(out->writeReplicated(g + "/residual", t.resid[e].data(), {C}, ""));
+  for (PetscInt k = 0; k < o.count; ++k) {
+    if (t.status[e][k] == 0) {
+      ++solved;
+      c.push_back(t.cpu[e][k]);
+    }
+    if (t.status[e][k] == static_cast<int>(Status::Unsupported)) ++unsupported;
+  }
+  std::sort(c.begin(), c.end());
+  const double med = c.empty() ? std::nan("") : c[c.size() / 2];
+  const double tot = total(t.cpu[e]);
+  const double rate = tot > 0 ? (o.count - unsupported) / tot : 0.0;
+  const double ratio =
+      ref >= 0 && total(t.cpu[ref]) > 0 && unsupported == 0 ? tot / total(t.cpu[ref]) : std::nan("");
+  PetscCall(out->writeAttribute(g, "solved", solved));
+  PetscCall(out->writeAttribute(g, "unsupported", unsupported));
+  PetscCall(out->writeAttribute(g, "total_cpu_time", tot));
+  PetscCall(out->writeAttribute(g, "problems_per_cpu_second", rate));
+  PetscCall(out->writeAttribute(g, "cpu_time_over_bullet_dantzig", ratio));
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7lld %7lld %7lld %14.4g %14.1f %12.2f",
+                           name.c_str(), solved, o.count - solved - unsupported, unsupported, med, rate,
+                           ratio));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 static PetscErrorCode runCompare(const suite::RunContext& ctx) {
-  PetscFunctionBeginUser;
-  MPI_Comm comm = ctx.comm();
-  std::string family = "random_box";
-  std::vector<std::string> ours = {"bpp", "lemke", "keller", "pgs", "fb_newton"};
-  char output[PETSC_MAX_PATH_LEN] = "";
-  PetscInt n = 100, count = 200, seed = 1, max_it = 0;
-  PetscReal cond = 1e4, qrange = 1e2, rel_tol = 1e-10;
-  PetscOptionsBegin(comm, "", "lcpcompare options", "");
-  PetscCall(suite::optionsChoice(PetscOptionsObject, "-family", "Problem family", familyChoices(), &family));
-  PetscCall(PetscOptionsInt("-n", "Problem size", "", n, &n, nullptr));
-  PetscCall(PetscOptionsInt("-count", "Number of problems", "", count, &count, nullptr));
-  PetscCall(
-      PetscOptionsInt("-seed", "Generator seed (same problems as lcpbench -seed)", "", seed, &seed, nullptr));
-  PetscCall(PetscOptionsReal("-cond", "Condition number of M", "", cond, &cond, nullptr));
-  PetscCall(PetscOptionsReal("-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", "", qrange,
-                             &qrange, nullptr));
-  PetscCall(suite::optionsChoiceList(PetscOptionsObject, "-ours", "The suite's solvers to time",
-                                     solverChoices(), &ours));
-  PetscCall(PetscOptionsInt("-max_it", "Iteration cap of the iterative solvers (0: defaults)", "", max_it,
-                            &max_it, nullptr));
-  PetscCall(PetscOptionsReal("-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", "", rel_tol,
-                             &rel_tol, nullptr));
-  PetscCall(PetscOptionsString("-output", "HDF5 results file", "", output, output, sizeof output, nullptr));
-  PetscOptionsEnd();
-  PetscCall(ctx.checkUnusedOptions());
-  if (ctx.helpRequested()) PetscFunctionReturn(0);
-  PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
-  PetscCheck(n >= 1 && count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
-  PetscCheck(output[0], comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
-  PetscCall(suite::checkOutputWritable(comm, output, "output"));
-  if (openblas_set_num_threads) openblas_set_num_threads(1);
-
-  GeneratorParams gp;
-  gp.n = static_cast<int>(n);
-  gp.cond = cond;
-  gp.qrange = qrange;
-  gp.lower = -qrange;
-  gp.upper = qrange;
-  gp.seed = static_cast<std::uint64_t>(seed);
-  suite::lcp::SolverOptions so;
-  so.rel_tol = rel_tol;
-  so.max_iterations = static_cast<int>(max_it);
-
-  std::vector<Entry> entries;
+  Options o;
+  bool help_only = false;
   std::vector<std::unique_ptr<Solver>> keep;
-  for (const auto& s : ours) {
-    auto sv = makeSolver(s); // known: -ours is validated against the registry
-    const Solver* raw = sv.get();
-    keep.push_back(std::move(sv));
-    entries.push_back({s, [raw, so](const Problem& p) {
-                         const Result r = solve(*raw, p, so);
-                         Outcome o;
-                         o.status = static_cast<int>(r.status);
-                         o.cpu = r.cpu_time;
-                         o.residual = r.residual;
-                         return o;
-                       }});
-  }
-#ifdef LCPCOMPARE_SICONOS
-  // Siconos: standard LCP -> lcp_* solvers; box -> relay_* (no box FB-Newton).
-  auto siconos = [&](int lcp_id, int relay_id) {
-    return [=](const Problem& p) -> Outcome {
-      const int m = p.size();
-      const bool box = !p.isStandard();
-      if (box && relay_id < 0) return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
-      NumericsMatrix* M = NM_create(NM_DENSE, m, m);
-      std::copy(p.M.data(), p.M.data() + static_cast<size_t>(m) * m, M->matrix0); // column-major both
-      std::vector<double> q(p.q.data(), p.q.data() + m), lb(p.l.data(), p.l.data() + m),
-          ub(p.u.data(), p.u.data() + m), z(m, 0.0), w(m, 0.0);
-      ::SolverOptions* opt = solver_options_create(box ? relay_id : lcp_id);
-      if (max_it > 0) opt->iparam[SICONOS_IPARAM_MAX_ITER] = static_cast<int>(max_it);
-      opt->dparam[SICONOS_DPARAM_TOL] = 1e-12;
-      int info = 0;
-      const double t0 = threadCpu();
-      if (box) {
-        RelayProblem rp{m, M, q.data(), lb.data(), ub.data()};
-        info = relay_driver(&rp, z.data(), w.data(), opt);
-      } else {
-        LinearComplementarityProblem lp{m, M, q.data()};
-        info = linearComplementarity_driver(&lp, z.data(), w.data(), opt);
-      }
-      const double cpu = threadCpu() - t0;
-      solver_options_delete(opt);
-      NM_free(M);
-      return judge(p, Eigen::Map<Vec>(z.data(), m), info == 0, cpu, rel_tol);
-    };
-  };
-  entries.push_back({"siconos_lemke", siconos(SICONOS_LCP_LEMKE, SICONOS_RELAY_LEMKE)});
-  entries.push_back({"siconos_pgs", siconos(SICONOS_LCP_PGS, SICONOS_RELAY_PGS)});
-  entries.push_back({"siconos_fb_newton", siconos(SICONOS_LCP_NEWTON_FB_FBLSA, -1)});
-#endif
-#ifdef LCPCOMPARE_BULLET
-  entries.push_back({"bullet_dantzig", [&](const Problem& p) -> Outcome {
-                       const int m = p.size();
-                       for (int i = 0; i < m; ++i)
-                         if (p.l[i] > 0.0 || p.u[i] < 0.0)
-                           return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
-                       // btSolveDantzigLCP: A x = b + w, lo <= x <= hi, A row-major n x n (overwritten), so b = -q.
-                       std::vector<btScalar> A(static_cast<size_t>(m) * m), b(m), x(m, 0.0), w(m, 0.0), lo(m),
-                           hi(m);
-                       std::vector<int> findex(m, -1);
-                       for (int i = 0; i < m; ++i) {
-                         for (int j = 0; j < m; ++j) A[static_cast<size_t>(i) * m + j] = p.M(i, j);
-                         b[i] = -p.q[i];
-                         lo[i] = std::isfinite(p.l[i]) ? p.l[i] : -BT_INFINITY;
-                         hi[i] = std::isfinite(p.u[i]) ? p.u[i] : BT_INFINITY;
-                       }
-                       btDantzigScratchMemory scratch;
-                       const double t0 = threadCpu();
-                       const bool ok = btSolveDantzigLCP(m, A.data(), x.data(), b.data(), w.data(), 0,
-                                                         lo.data(), hi.data(), findex.data(), scratch);
-                       const double cpu = threadCpu() - t0;
-                       Vec z(m);
-                       for (int i = 0; i < m; ++i) z[i] = x[i];
-                       return judge(p, z, ok, cpu, rel_tol);
-                     }});
-#endif
-
-  const int ne = static_cast<int>(entries.size());
-  std::vector<std::vector<int>> status(ne, std::vector<int>(count));
-  std::vector<std::vector<double>> cpu(ne, std::vector<double>(count)), resid(ne, std::vector<double>(count));
-  for (PetscInt k = 0; k < count; ++k) {
-    const Problem p = generate(family, gp, static_cast<std::uint64_t>(k));
-    for (int e = 0; e < ne; ++e) { // same problem, every solver, in turn
-      const Outcome o = entries[e].run(p);
-      status[e][k] = o.status;
-      cpu[e][k] = o.cpu;
-      resid[e][k] = o.residual;
-    }
-  }
-
   suite::H5Output out;
-  PetscCall(out.open(comm, output));
-  PetscCall(out.writeProvenance(ctx));
-  PetscCall(out.writeAttribute("/", "family", family));
-  PetscCall(out.writeAttribute("/", "n", (long long)n));
-  PetscCall(out.writeAttribute("/", "count", (long long)count));
-  PetscCall(out.writeAttribute("/", "cond", (double)cond));
-  PetscCall(out.writeAttribute("/", "qrange", (double)qrange));
-  PetscCall(out.writeAttribute("/", "seed", (long long)seed));
-  PetscCall(out.writeAttribute("/", "timing", "CPU seconds of the calling thread around the solver call"));
-  const unsigned long long C = static_cast<unsigned long long>(count);
-  // reference for the ratio column: Bullet's Dantzig when present
-  int ref = -1;
-  for (int e = 0; e < ne; ++e)
-    if (entries[e].name == "bullet_dantzig") ref = e;
-  auto total = [&](int e) {
-    double s = 0.0;
-    for (double c : cpu[e]) s += c;
-    return s;
-  };
-  PetscCall(suite::logInfo(comm, ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core",
-                           family.c_str(), (int)n, (int)count));
-  PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s", "solver", "solved",
+  PetscFunctionBeginUser;
+  PetscCall(readOptions(ctx, &o, &help_only));
+  if (help_only) PetscFunctionReturn(0);
+  if (openblas_set_num_threads) openblas_set_num_threads(1);
+  const std::vector<Entry> entries = makeEntries(o, &keep);
+  const Table t = runAll(o, entries);
+  PetscCall(writeHeader(ctx, o, &out));
+  int ref = -1; // reference for the ratio column: Bullet's Dantzig when present
+  for (size_t e = 0; e < entries.size(); ++e)
+    if (entries[e].name == "bullet_dantzig") ref = static_cast<int>(e);
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core",
+                           o.family.c_str(), (int)o.n, (int)o.count));
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s", "solver", "solved",
                            "failed", "unsupp", "median cpu [s]", "prob/cpu-s", "time/bullet"));
-  for (int e = 0; e < ne; ++e) {
-    const std::string g = "/results/" + entries[e].name;
-    PetscCall(out.writeReplicated(g + "/status", status[e].data(), {C}, ""));
-    PetscCall(out.writeReplicated(g + "/cpu_time", cpu[e].data(), {C}, "s"));
-    PetscCall(out.writeReplicated(g + "/residual", resid[e].data(), {C}, ""));
-    long long solved = 0, unsupported = 0;
-    std::vector<double> c;
-    for (PetscInt k = 0; k < count; ++k) {
-      if (status[e][k] == 0) {
-        ++solved;
-        c.push_back(cpu[e][k]);
-      }
-      if (status[e][k] == static_cast<int>(Status::Unsupported)) ++unsupported;
-    }
-    std::sort(c.begin(), c.end());
-    const double med = c.empty() ? std::nan("") : c[c.size() / 2];
-    const double tot = total(e);
-    const double rate = tot > 0 ? (count - unsupported) / tot : 0.0;
-    const double ratio = ref >= 0 && total(ref) > 0 && unsupported == 0 ? tot / total(ref) : std::nan("");
-    PetscCall(out.writeAttribute(g, "solved", solved));
-    PetscCall(out.writeAttribute(g, "unsupported", unsupported));
-    PetscCall(out.writeAttribute(g, "total_cpu_time", tot));
-    PetscCall(out.writeAttribute(g, "problems_per_cpu_second", rate));
-    PetscCall(out.writeAttribute(g, "cpu_time_over_bullet_dantzig", ratio));
-    PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-18s %7lld %7lld %7lld %14.4g %14.1f %12.2f",
-                             entries[e].name.c_str(), solved, count - solved - unsupported, unsupported, med,
-                             rate, ratio));
-  }
+  for (size_t e = 0; e < entries.size(); ++e)
+    PetscCall(writeEntry(ctx, o, entries[e].name, t, static_cast<int>(e), ref, &out));
   PetscCall(out.commit(&ctx));
   PetscFunctionReturn(0);
 }

@@ -20,130 +20,168 @@
 namespace suite::lcp {
 namespace {
 
+// One run: the index sets (states), z, w and, on the fast path, the factors of M_FF and c = q + M_:N z_N.
+class BppRun {
+public:
+  BppRun(const Problem& p, const SolverOptions& opt)
+      : p_(p), n_(p.size()), cap_(opt.max_iterations > 0 ? opt.max_iterations : 10 * n_ + 100),
+        tol_(signTolerance(p)), st_(initialStates(p, opt.warm_start)), z_(n_), w_(n_), x_(n_),
+        sym_(isSymmetric(p)), fast_(sym_), ldlt_(p.M) {
+    if (!(opt.warm_start && opt.warm_start->size() == n_)) jacobiStates();
+    V_.reserve(n_);
+    if (fast_) startFast();
+  }
+
+  Result solve() {
+    while (true) {
+      if (!solveBlock()) {
+        r_.status = Status::Breakdown;
+        r_.message = "singular principal block M_FF";
+        break;
+      }
+      findInfeasible();
+      if (V_.empty()) {
+        r_.status = Status::Solved;
+        break;
+      }
+      if (r_.iterations >= cap_) {
+        r_.status = Status::MaxIterations;
+        break;
+      }
+      const int ninf = static_cast<int>(V_.size());
+      const bool block = blockPivot(ninf);
+      add_.clear();
+      rem_.clear();
+      if (block)
+        for (int i : V_) flip(i);
+      else
+        flip(V_.front());
+      if (fast_) updateFactors();
+      r_.pivots += block ? ninf : 1;
+      ++r_.iterations;
+    }
+    r_.z = z_;
+    return r_;
+  }
+
+private:
+  static constexpr int kPbar = 10;
+  double bound(int i) const { return st_[i] == State::Lower ? p_.l[i] : p_.u[i]; }
+
+  // No warm start: the states of the diagonal (Jacobi) estimate z_i = mid(l_i, u_i, -q_i / M_ii).
+  void jacobiStates() {
+    for (int i = 0; i < n_; ++i) {
+      const double d = p_.M(i, i);
+      if (!(d > 0.0)) continue;
+      const double t = -p_.q[i] / d;
+      st_[i] = t <= p_.l[i] ? State::Lower : (t >= p_.u[i] ? State::Upper : State::Free);
+    }
+  }
+
+  // Fast path: c = q + M_:N z_N and the factors of M_FF.
+  void startFast() {
+    Vec zn = Vec::Zero(n_);
+    F_.clear();
+    for (int i = 0; i < n_; ++i)
+      if (st_[i] == State::Free)
+        F_.push_back(i);
+      else
+        zn[i] = bound(i);
+    c_ = p_.M * zn + p_.q;
+    fast_ = ldlt_.reset(F_);
+  }
+
+  // z and w of the current index sets; false if M_FF is singular.
+  bool solveBlock() {
+    if (fast_) {
+      const auto& FF = ldlt_.indices();
+      const int k = ldlt_.size();
+      for (int a = 0; a < k; ++a) x_[a] = -c_[FF[a]];
+      ldlt_.solveInPlace(x_.data());
+      w_ = c_;
+      for (int i = 0; i < n_; ++i)
+        if (st_[i] != State::Free) z_[i] = bound(i);
+      for (int a = 0; a < k; ++a) {
+        z_[FF[a]] = x_[a];
+        w_.noalias() += x_[a] * p_.M.col(FF[a]);
+      }
+      if (!z_.allFinite()) fast_ = false; // numerically singular block: redo this iteration by a fresh solve
+    }
+    if (!fast_) {
+      if (!solveStates(p_, st_, &z_, sym_)) return false;
+      w_.noalias() = p_.M * z_ + p_.q;
+    }
+    return true;
+  }
+
+  // V = the infeasible indices (wrong sign of w at a bound, z outside the box when free).
+  void findInfeasible() {
+    V_.clear();
+    for (int i = 0; i < n_; ++i) {
+      const double zt = 1e-13 * (1.0 + std::abs(z_[i]));
+      if ((st_[i] == State::Lower && w_[i] < -tol_) || (st_[i] == State::Upper && w_[i] > tol_) ||
+          (st_[i] == State::Free && (z_[i] < p_.l[i] - zt || z_[i] > p_.u[i] + zt)))
+        V_.push_back(i);
+    }
+  }
+
+  // The Judice-Pires counter: a block pivot, or (false) Murty's least-index single principal pivot.
+  bool blockPivot(int ninf) {
+    if (ninf < best_) {
+      best_ = ninf;
+      tries_ = kPbar;
+    } else if (tries_ > 0) {
+      --tries_;
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  void flip(int i) {
+    if (st_[i] == State::Free) {
+      st_[i] = z_[i] < p_.l[i] ? State::Lower : State::Upper;
+      rem_.push_back(i);
+      if (fast_) c_.noalias() += bound(i) * p_.M.col(i);
+    } else {
+      if (fast_) c_.noalias() -= bound(i) * p_.M.col(i);
+      st_[i] = State::Free;
+      add_.push_back(i);
+    }
+  }
+
+  void updateFactors() {
+    const int changes = static_cast<int>(add_.size() + rem_.size());
+    bool ok = true;
+    if (changes > 4 + ldlt_.size() / 8) { // many changes: one fresh factorisation is cheaper
+      F_.clear();
+      for (int i = 0; i < n_; ++i)
+        if (st_[i] == State::Free) F_.push_back(i);
+      ok = ldlt_.reset(F_);
+    } else {
+      for (int i : rem_) ok = ok && ldlt_.remove(i);
+      for (int i : add_) ok = ok && ldlt_.add(i);
+    }
+    fast_ = ok; // a vanishing LDL^T pivot: continue with fresh factorisations (LU if needed)
+  }
+
+  const Problem& p_;
+  const int n_, cap_;
+  const double tol_;
+  Result r_;
+  std::vector<State> st_;
+  int best_ = n_ + 1, tries_ = kPbar;
+  Vec z_, w_, c_, x_;
+  std::vector<int> V_, F_, add_, rem_;
+  const bool sym_;
+  bool fast_;
+  ActiveLdlt ldlt_;
+};
+
 class Bpp : public Solver {
 public:
   std::string name() const override { return "bpp"; }
-  Result run(const Problem& p, const SolverOptions& opt) const override {
-    const int n = p.size();
-    const int cap = opt.max_iterations > 0 ? opt.max_iterations : 10 * n + 100;
-    const int pbar = 10;
-    const double tol = signTolerance(p);
-    Result r;
-    std::vector<State> st = initialStates(p, opt.warm_start);
-    if (!(opt.warm_start && opt.warm_start->size() == n)) {
-      // No warm start: the states of the diagonal (Jacobi) estimate z_i = mid(l_i, u_i, -q_i / M_ii).
-      for (int i = 0; i < n; ++i) {
-        const double d = p.M(i, i);
-        if (!(d > 0.0)) continue;
-        const double t = -p.q[i] / d;
-        st[i] = t <= p.l[i] ? State::Lower : (t >= p.u[i] ? State::Upper : State::Free);
-      }
-    }
-    int best = n + 1, tries = pbar;
-    Vec z(n), w(n), c, x(n);
-    std::vector<int> V, F, add, rem;
-    V.reserve(n);
-    const bool sym = isSymmetric(p);
-    // Fast path state: factors of M_FF and c = q + M_:N z_N.
-    bool fast = sym;
-    ActiveLdlt ldlt(p.M);
-    auto bound = [&](int i) { return st[i] == State::Lower ? p.l[i] : p.u[i]; };
-    if (fast) {
-      Vec zn = Vec::Zero(n);
-      F.clear();
-      for (int i = 0; i < n; ++i)
-        if (st[i] == State::Free)
-          F.push_back(i);
-        else
-          zn[i] = bound(i);
-      c = p.M * zn + p.q;
-      fast = ldlt.reset(F);
-    }
-    while (true) {
-      if (fast) {
-        const auto& FF = ldlt.indices();
-        const int k = ldlt.size();
-        for (int a = 0; a < k; ++a) x[a] = -c[FF[a]];
-        ldlt.solveInPlace(x.data());
-        w = c;
-        for (int i = 0; i < n; ++i)
-          if (st[i] != State::Free) z[i] = bound(i);
-        for (int a = 0; a < k; ++a) {
-          z[FF[a]] = x[a];
-          w.noalias() += x[a] * p.M.col(FF[a]);
-        }
-        if (!z.allFinite()) fast = false; // numerically singular block: redo this iteration by a fresh solve
-      }
-      if (!fast) {
-        if (!solveStates(p, st, &z, sym)) {
-          r.status = Status::Breakdown;
-          r.message = "singular principal block M_FF";
-          break;
-        }
-        w.noalias() = p.M * z + p.q;
-      }
-      V.clear();
-      for (int i = 0; i < n; ++i) {
-        const double zt = 1e-13 * (1.0 + std::abs(z[i]));
-        if ((st[i] == State::Lower && w[i] < -tol) || (st[i] == State::Upper && w[i] > tol) ||
-            (st[i] == State::Free && (z[i] < p.l[i] - zt || z[i] > p.u[i] + zt)))
-          V.push_back(i);
-      }
-      if (V.empty()) {
-        r.status = Status::Solved;
-        break;
-      }
-      if (r.iterations >= cap) {
-        r.status = Status::MaxIterations;
-        break;
-      }
-      const int ninf = static_cast<int>(V.size());
-      bool block = true;
-      if (ninf < best) {
-        best = ninf;
-        tries = pbar;
-      } else if (tries > 0) {
-        --tries;
-      } else {
-        block = false; // Murty fallback: least-index single principal pivot
-      }
-      add.clear();
-      rem.clear();
-      auto flip = [&](int i) {
-        if (st[i] == State::Free) {
-          st[i] = z[i] < p.l[i] ? State::Lower : State::Upper;
-          rem.push_back(i);
-          if (fast) c.noalias() += bound(i) * p.M.col(i);
-        } else {
-          if (fast) c.noalias() -= bound(i) * p.M.col(i);
-          st[i] = State::Free;
-          add.push_back(i);
-        }
-      };
-      if (block)
-        for (int i : V) flip(i);
-      else
-        flip(V.front());
-      if (fast) {
-        const int changes = static_cast<int>(add.size() + rem.size());
-        bool ok = true;
-        if (changes > 4 + ldlt.size() / 8) { // many changes: one fresh factorisation is cheaper
-          F.clear();
-          for (int i = 0; i < n; ++i)
-            if (st[i] == State::Free) F.push_back(i);
-          ok = ldlt.reset(F);
-        } else {
-          for (int i : rem) ok = ok && ldlt.remove(i);
-          for (int i : add) ok = ok && ldlt.add(i);
-        }
-        fast = ok; // a vanishing LDL^T pivot: continue with fresh factorisations (LU if needed)
-      }
-      r.pivots += block ? ninf : 1;
-      ++r.iterations;
-    }
-    r.z = z;
-    return r;
-  }
+  Result run(const Problem& p, const SolverOptions& opt) const override { return BppRun(p, opt).solve(); }
 };
 
 } // namespace

@@ -16,168 +16,205 @@
 namespace suite::lcp {
 namespace {
 
+// One pivoting run: the state (z, w, the free set in the factor, the states of processed indices) and its
+// steps. Index rr is driven until it settles (at a bound with the right sign of w_r, or free with w_r = 0).
+template <class Factor> class KellerRun {
+public:
+  KellerRun(const Problem& p, const SolverOptions& opt, Factor& inv)
+      : p_(p), inv_(inv), n_(p.size()), cap_(opt.max_iterations > 0 ? opt.max_iterations : 100LL * n_ + 1000),
+        tol_(signTolerance(p)), z_(n_), dw_(n_), st_(n_, State::Free), done_(n_, 0) {
+    for (int i = 0; i < n_; ++i) {
+      if (opt.warm_start && opt.warm_start->size() == n_)
+        z_[i] = std::min(p.u[i], std::max(p.l[i], (*opt.warm_start)[i]));
+      else
+        z_[i] = std::isfinite(p.l[i]) ? p.l[i] : (std::isfinite(p.u[i]) ? p.u[i] : 0.0);
+    }
+    r_.status = Status::Solved;
+  }
+
+  Result solve() {
+    for (int rr = 0; rr < n_ && r_.status == Status::Solved; ++rr) {
+      if (rr % kRefresh == 0) { // recompute z_F and w from scratch against the drift of the updates below
+        refreshZF();
+        w_.noalias() = p_.M * z_ + p_.q;
+      }
+      drive(rr);
+      done_[rr] = 1;
+    }
+    refreshZF();
+    r_.z = z_;
+    r_.iterations = static_cast<int>(r_.pivots);
+    return r_;
+  }
+
+private:
+  static constexpr int kRefresh = 16; // driving variables between fresh z_F, w (O(n |F| + n^2) each)
+  static constexpr double kEps = 1e-14;
+  struct Step {
+    double t = kInf;
+    int event = -1, who = -1; // 0: w_r -> 0, 1: z_r -> bound, 2: free hits bound, 3: bound's w -> 0
+  };
+
+  // z_F = -M_FF^{-1}(q_F + M_FN z_N), N = every index outside the free set.
+  void refreshZF() {
+    const auto& F = inv_.indices();
+    const int k = static_cast<int>(F.size());
+    if (k == 0) return;
+    Vec rhs(k);
+    for (int a = 0; a < k; ++a) {
+      double s = p_.q[F[a]];
+      for (int j = 0; j < n_; ++j)
+        if (inv_.position(j) < 0) s += p_.M(F[a], j) * z_[j];
+      rhs[a] = -s;
+    }
+    inv_.solve(rhs, &x_);
+    for (int a = 0; a < k; ++a) z_[F[a]] = x_[a];
+  }
+
+  // Pivots until rr settles or the run stops (cap, breakdown).
+  void drive(int rr) {
+    while (!settled(rr)) {
+      if (r_.pivots >= cap_) {
+        r_.status = Status::MaxIterations;
+        return;
+      }
+      const double dir = w_[rr] < 0 ? 1.0 : -1.0;
+      direction(rr, dir);
+      Step s;
+      limitDriving(rr, dir, &s);
+      limitFree(&s);
+      limitBound(&s);
+      if (s.event < 0 || !std::isfinite(s.t)) {
+        r_.status = Status::Breakdown;
+        r_.message = "unbounded driving direction (matrix not P / problem without solution)";
+        return;
+      }
+      if (take(rr, dir, s)) return;
+    }
+  }
+
+  // rr at a bound with the right sign of w_r, or inside with w_r = 0 (then added to the free set).
+  bool settled(int rr) {
+    const double wr = w_[rr];
+    if (z_[rr] <= p_.l[rr] && wr >= -tol_) {
+      st_[rr] = State::Lower;
+      return true;
+    }
+    if (z_[rr] >= p_.u[rr] && wr <= tol_) {
+      st_[rr] = State::Upper;
+      return true;
+    }
+    if (std::abs(wr) <= tol_ && z_[rr] > p_.l[rr] && z_[rr] < p_.u[rr]) {
+      if (!inv_.add(rr)) {
+        r_.status = Status::Breakdown;
+        r_.message = "singular principal block";
+      }
+      st_[rr] = State::Free;
+      return true;
+    }
+    return false;
+  }
+
+  // dz_F and dw per unit step of z_r in direction dir (w_F stays 0).
+  void direction(int rr, double dir) {
+    const auto& F = inv_.indices();
+    const int k = static_cast<int>(F.size());
+    Vec b(k);
+    for (int a = 0; a < k; ++a) b[a] = p_.M(F[a], rr);
+    inv_.solve(b, &x_);
+    dzF_ = -dir * x_;
+    dw_ = dir * p_.M.col(rr);
+    for (int a = 0; a < k; ++a) dw_ += dzF_[a] * p_.M.col(F[a]);
+  }
+
+  // Step limits, in this order: w_r reaching 0, z_r reaching its bound; then the free and bound sets.
+  void limitDriving(int rr, double dir, Step* s) const {
+    const double wr = w_[rr];
+    if (dw_[rr] * wr < 0.0) *s = Step{-wr / dw_[rr], 0, rr};
+    const double tb = dir > 0 ? p_.u[rr] - z_[rr] : z_[rr] - p_.l[rr];
+    if (tb < s->t) *s = Step{tb, 1, rr};
+  }
+
+  void limitFree(Step* s) const {
+    const auto& F = inv_.indices();
+    for (int a = 0; a < static_cast<int>(F.size()); ++a) {
+      const int i = F[a];
+      double t = kInf;
+      if (dzF_[a] < -kEps && std::isfinite(p_.l[i]))
+        t = std::max(0.0, z_[i] - p_.l[i]) / -dzF_[a];
+      else if (dzF_[a] > kEps && std::isfinite(p_.u[i]))
+        t = std::max(0.0, p_.u[i] - z_[i]) / dzF_[a];
+      if (t < s->t) *s = Step{t, 2, i};
+    }
+  }
+
+  void limitBound(Step* s) const {
+    for (int i = 0; i < n_; ++i) {
+      if (!done_[i] || st_[i] == State::Free) continue;
+      double t = kInf;
+      if (st_[i] == State::Lower && dw_[i] < -kEps)
+        t = std::max(0.0, w_[i]) / -dw_[i];
+      else if (st_[i] == State::Upper && dw_[i] > kEps)
+        t = std::max(0.0, -w_[i]) / dw_[i];
+      if (t < s->t) *s = Step{t, 3, i};
+    }
+  }
+
+  // Takes step s and makes its principal pivot; true when rr is settled or the run stops.
+  bool take(int rr, double dir, const Step& s) {
+    const auto& F = inv_.indices();
+    const int k = static_cast<int>(F.size());
+    z_[rr] += dir * s.t;
+    for (int a = 0; a < k; ++a) z_[F[a]] += s.t * dzF_[a];
+    w_ += s.t * dw_;
+    ++r_.pivots;
+    bool ok = true;
+    if (s.event == 0) {
+      w_[rr] = 0.0;
+      ok = inv_.add(rr);
+      st_[rr] = State::Free;
+      if (ok) return true;
+    } else if (s.event == 1) {
+      z_[rr] = dir > 0 ? p_.u[rr] : p_.l[rr];
+      st_[rr] = dir > 0 ? State::Upper : State::Lower;
+      return true;
+    } else if (s.event == 2) {
+      const bool low = dzF_[inv_.position(s.who)] < 0;
+      z_[s.who] = low ? p_.l[s.who] : p_.u[s.who];
+      st_[s.who] = low ? State::Lower : State::Upper;
+      ok = inv_.remove(s.who);
+    } else {
+      w_[s.who] = 0.0;
+      st_[s.who] = State::Free;
+      ok = inv_.add(s.who);
+    }
+    if (ok) return false;
+    r_.status = Status::Breakdown;
+    r_.message = "singular principal block during pivoting";
+    return true;
+  }
+
+  const Problem& p_;
+  Factor& inv_;
+  const int n_;
+  const long long cap_;
+  const double tol_;
+  Result r_;
+  Vec z_, w_, x_, dzF_, dw_;
+  std::vector<State> st_;
+  std::vector<char> done_;
+};
+
 class Keller : public Solver {
 public:
   std::string name() const override { return "keller"; }
   Result run(const Problem& p, const SolverOptions& opt) const override {
     if (isSymmetric(p)) {
       ActiveLdlt f(p.M);
-      return pivot(p, opt, f);
+      return KellerRun<ActiveLdlt>(p, opt, f).solve();
     }
     ActiveInverse f(p.M);
-    return pivot(p, opt, f);
-  }
-
-private:
-  static constexpr int kRefresh = 16; // driving variables between fresh z_F, w (O(n |F| + n^2) each)
-  template <class Factor> static Result pivot(const Problem& p, const SolverOptions& opt, Factor& inv) {
-    const int n = p.size();
-    const long long cap = opt.max_iterations > 0 ? opt.max_iterations : 100LL * n + 1000;
-    const double tol = signTolerance(p);
-    Result r;
-    Vec z(n);
-    for (int i = 0; i < n; ++i) {
-      if (opt.warm_start && opt.warm_start->size() == n)
-        z[i] = std::min(p.u[i], std::max(p.l[i], (*opt.warm_start)[i]));
-      else
-        z[i] = std::isfinite(p.l[i]) ? p.l[i] : (std::isfinite(p.u[i]) ? p.u[i] : 0.0);
-    }
-    std::vector<State> st(n, State::Free);
-    std::vector<char> done(n, 0);
-    Vec w, x, dzF, dw(n);
-    r.status = Status::Solved;
-    auto refreshZF = [&]() { // z_F = -M_FF^{-1}(q_F + M_FN z_N), N = every index outside the free set
-      const auto& F = inv.indices();
-      const int k = static_cast<int>(F.size());
-      if (k == 0) return;
-      Vec rhs(k);
-      for (int a = 0; a < k; ++a) {
-        double s = p.q[F[a]];
-        for (int j = 0; j < n; ++j)
-          if (inv.position(j) < 0) s += p.M(F[a], j) * z[j];
-        rhs[a] = -s;
-      }
-      inv.solve(rhs, &x);
-      for (int a = 0; a < k; ++a) z[F[a]] = x[a];
-    };
-    for (int rr = 0; rr < n && r.status == Status::Solved; ++rr) {
-      if (rr % kRefresh == 0) { // recompute z_F and w from scratch against the drift of the updates below
-        refreshZF();
-        w.noalias() = p.M * z + p.q;
-      }
-      while (true) {
-        const double wr = w[rr];
-        if (z[rr] <= p.l[rr] && wr >= -tol) {
-          st[rr] = State::Lower;
-          break;
-        }
-        if (z[rr] >= p.u[rr] && wr <= tol) {
-          st[rr] = State::Upper;
-          break;
-        }
-        if (std::abs(wr) <= tol && z[rr] > p.l[rr] && z[rr] < p.u[rr]) {
-          if (!inv.add(rr)) {
-            r.status = Status::Breakdown;
-            r.message = "singular principal block";
-          }
-          st[rr] = State::Free;
-          break;
-        }
-        if (r.pivots >= cap) {
-          r.status = Status::MaxIterations;
-          break;
-        }
-        const double dir = wr < 0 ? 1.0 : -1.0;
-        const auto& F = inv.indices();
-        const int k = static_cast<int>(F.size());
-        Vec b(k);
-        for (int a = 0; a < k; ++a) b[a] = p.M(F[a], rr);
-        inv.solve(b, &x);
-        dzF = -dir * x;
-        dw = dir * p.M.col(rr);
-        for (int a = 0; a < k; ++a) dw += dzF[a] * p.M.col(F[a]);
-        // step limits
-        double tbest = kInf;
-        int event = -1, who = -1; // 0: w_r -> 0, 1: z_r -> bound, 2: free hits bound, 3: bound's w -> 0
-        if (dw[rr] * wr < 0.0) {
-          tbest = -wr / dw[rr];
-          event = 0;
-          who = rr;
-        }
-        const double tb = dir > 0 ? p.u[rr] - z[rr] : z[rr] - p.l[rr];
-        if (tb < tbest) {
-          tbest = tb;
-          event = 1;
-          who = rr;
-        }
-        const double eps = 1e-14;
-        for (int a = 0; a < k; ++a) {
-          const int i = F[a];
-          double t = kInf;
-          if (dzF[a] < -eps && std::isfinite(p.l[i]))
-            t = std::max(0.0, z[i] - p.l[i]) / -dzF[a];
-          else if (dzF[a] > eps && std::isfinite(p.u[i]))
-            t = std::max(0.0, p.u[i] - z[i]) / dzF[a];
-          if (t < tbest) {
-            tbest = t;
-            event = 2;
-            who = i;
-          }
-        }
-        for (int i = 0; i < n; ++i) {
-          if (!done[i] || st[i] == State::Free) continue;
-          double t = kInf;
-          if (st[i] == State::Lower && dw[i] < -eps)
-            t = std::max(0.0, w[i]) / -dw[i];
-          else if (st[i] == State::Upper && dw[i] > eps)
-            t = std::max(0.0, -w[i]) / dw[i];
-          if (t < tbest) {
-            tbest = t;
-            event = 3;
-            who = i;
-          }
-        }
-        if (event < 0 || !std::isfinite(tbest)) {
-          r.status = Status::Breakdown;
-          r.message = "unbounded driving direction (matrix not P / problem without solution)";
-          break;
-        }
-        z[rr] += dir * tbest;
-        for (int a = 0; a < k; ++a) z[F[a]] += tbest * dzF[a];
-        w += tbest * dw;
-        ++r.pivots;
-        bool ok = true;
-        if (event == 0) {
-          w[rr] = 0.0;
-          ok = inv.add(rr);
-          st[rr] = State::Free;
-          if (ok) break;
-        } else if (event == 1) {
-          z[rr] = dir > 0 ? p.u[rr] : p.l[rr];
-          st[rr] = dir > 0 ? State::Upper : State::Lower;
-          break;
-        } else if (event == 2) {
-          const bool low = dzF[inv.position(who)] < 0;
-          z[who] = low ? p.l[who] : p.u[who];
-          st[who] = low ? State::Lower : State::Upper;
-          ok = inv.remove(who);
-        } else {
-          w[who] = 0.0;
-          st[who] = State::Free;
-          ok = inv.add(who);
-        }
-        if (!ok) {
-          r.status = Status::Breakdown;
-          r.message = "singular principal block during pivoting";
-          break;
-        }
-      }
-      done[rr] = 1;
-    }
-    refreshZF();
-    r.z = z;
-    r.iterations = static_cast<int>(r.pivots);
-    return r;
+    return KellerRun<ActiveInverse>(p, opt, f).solve();
   }
 };
 

@@ -1,0 +1,150 @@
+// What lcpbench's parts share, one .cpp each: lcpbench_options (options, -help from the registries),
+// lcpbench_batch (problem source and solvers), lcpbench_store (the results file OUT.partial and the summary
+// pass), lcpbench_resume (batch header; OUT.partial resumed or created), lcpbench_dealer (load balancing,
+// flushes), lcpbench_finalize (end of a run). main.cpp runs them and describes the streaming protocol.
+#pragma once
+
+#include "core/run_context.hpp"
+#include "io/h5_append.hpp"
+#include "lcp/generators.hpp"
+#include "lcp/readers.hpp"
+#include "lcp/solver.hpp"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lcpbench_app {
+
+using suite::lcp::kInf;
+
+struct Options {
+  // problems
+  std::string family = "random_box"; // a generator family of lib/lcp or "file"
+  std::vector<std::string> files;    // -file, for family "file"
+  std::string fclib_model = "box_friction";
+  PetscInt n = 100, count = 500, seed = 1;
+  PetscReal cond = 1e4, qrange = 1e2, lower = -1e2, upper = 1e2;
+  // solvers
+  std::vector<std::string> solvers = {"lemke", "keller",    "cottle_dantzig",  "murty",
+                                      "bpp",   "fb_newton", "smoothed_newton", "pgs"};
+  PetscInt max_it = 0, block_size = 3;
+  PetscReal omega = 1.0, rel_tol = 1e-10;
+  PetscBool refine = PETSC_TRUE;
+  // the run
+  std::string output;
+  PetscInt chunk = 0, flush_every = 4096;
+  PetscReal flush_seconds = 30.0, delay = 0.0, max_walltime = 0.0;
+  PetscBool strict = PETSC_FALSE, resume = PETSC_TRUE;
+
+  bool fromFiles() const { return family == "file"; }
+};
+
+// Collective: reads and validates every option. *help_only: -help was given (nothing to run).
+PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_only);
+// The reader model of a (validated) -fclib_model name.
+suite::lcp::FclibModel fclibModel(const std::string& name);
+
+constexpr int kFields = 6; // per solver and problem: status, iterations, pivots, time, residual, cpu_time
+inline const char* const kFieldNames[kFields] = {"status", "iterations", "pivots",
+                                                 "time",   "residual",   "cpu_time"};
+
+struct Batch {
+  std::string family;
+  suite::lcp::GeneratorParams gp;
+  long long count = 0;
+  std::vector<std::string> files;
+  std::vector<suite::lcp::Problem> file_problems; // family "file": every rank holds them (read up front)
+  std::vector<std::string> file_errors;           // "" or the reason a file is invalid
+  std::vector<std::unique_ptr<suite::lcp::Solver>> solvers;
+  std::vector<std::string> solver_names;
+  suite::lcp::SolverOptions opt;
+  double delay = 0.0; // testing: seconds of sleep after each problem
+
+  bool fromFiles() const { return family == "file"; }
+  int recordLength() const { return 2 + static_cast<int>(solvers.size()) * kFields; } // index, n, fields
+};
+
+// Collective: the batch of the options; files are read here (a malformed HDF5 file is an error for the job,
+// any other invalid file is recorded in file_errors).
+PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b);
+// Problem k solved by every solver: rec = k, n, then kFields values per solver. Depends on k alone.
+void solveOne(const Batch& b, long long k, double* rec);
+
+constexpr unsigned long long kBlock = 65536;  // problems per block of the streamed passes over the file
+constexpr unsigned long long kMaxRuns = 4096; // runs (start + resumes) whose wall time is recorded
+// The batch header (name, value): /batch attributes that a resumed batch must match exactly.
+using BatchHeader = std::vector<std::pair<std::string, std::string>>;
+
+// Rank 0's results file OUT.partial: every per-problem dataset preallocated at its final size, records
+// buffered and written in place. All methods throw std::runtime_error.
+class Store {
+public:
+  Store(const Batch& b, BatchHeader header) : b_(b), header_(std::move(header)), rec_len_(b.recordLength()) {}
+  // A new OUT.partial (run 0), built under another name and renamed once complete on disk: a kill during
+  // the creation never leaves a half-made OUT.partial.
+  void create(const std::string& partial);
+  void resumeAs(int run) { run_ = run; } // continues the open file as run number `run`
+  void add(const double* rec) {          // buffers one record
+    buf_.insert(buf_.end(), rec, rec + rec_len_);
+    ++nbuf_;
+  }
+  long long buffered() const { return nbuf_; }
+  // Writes the buffered records, flushes, then sets their done flags and flushes again.
+  void flush(double run_wall);
+  suite::H5AppendFile& file() { return f_; }
+  const BatchHeader& header() const { return header_; }
+  long long count() const { return b_.count; }
+  int run() const { return run_; }
+  // Wall seconds of every run and problems solved by each run.
+  void runTotals(std::vector<double>* walls, std::vector<double>* solved);
+
+private:
+  long long key(long long i) const { return static_cast<long long>(buf_[i * rec_len_]); }
+  template <class T> void writeColumn(const std::vector<long long>& order, int c, const std::string& path);
+  void writeBuffered();
+  const Batch& b_;
+  BatchHeader header_;
+  int rec_len_;
+  suite::H5AppendFile f_;
+  std::vector<double> buf_;
+  long long nbuf_ = 0;
+  int run_ = 0;
+};
+
+// Statistics of one solver (trivially copyable: broadcast as bytes).
+struct SolverSummary {
+  double failed = 0, med_it = 0, med_piv = 0, med_pvn = 0, tsum = 0, csum = 0;
+  long long invalid = 0, unsolved = 0, first_unsolved = -1;
+  int first_status = 0;
+  double rate(long long count) const { return tsum > 0 ? count / tsum : 0.0; } // problems per second
+  double cpuRate(long long count) const { return csum > 0 ? count / csum : 0.0; }
+};
+// One streamed pass over /results/<solver>/: histograms and summary attributes written to f.
+SolverSummary summarise(suite::H5AppendFile& f, const std::string& solver, long long count);
+
+struct ResumePoint {
+  std::vector<unsigned char> done; // rank 0: done flags (1 byte per problem)
+  long long ndone = 0;             // every rank: problems done before this run
+};
+BatchHeader batchHeader(const Options& o, const Batch& b);
+// Collective: rank 0 resumes OUT.partial (if resume and it exists) or creates it.
+PetscErrorCode startBatchFile(const suite::RunContext& ctx, const std::string& partial, bool resume,
+                              Store* store, ResumePoint* rp);
+
+struct DealOutcome {
+  long long ndone = 0; // every rank: problems done, this run and before
+  int stopped = 0;     // 0: no stop, 1: signal, 2: -max_walltime
+  double wall = 0;     // seconds spent dealing
+};
+// Collective: solves every problem not done in rp, results in store (rank 0).
+PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b,
+                            const ResumePoint& rp, Store* store, DealOutcome* out);
+
+// Collective: closes OUT.partial of an interrupted run, or completes OUT, prints the summary and checks the
+// outcome. ndone0: problems done before this run.
+PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, long long ndone0,
+                         const DealOutcome& deal, Store* store);
+
+} // namespace lcpbench_app
