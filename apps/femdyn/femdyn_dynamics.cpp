@@ -3,7 +3,6 @@
 #include "femdyn_dynamics.hpp"
 
 #include "core/log.hpp"
-#include "core/log_stages.hpp"
 #include "fem/cpu_timer.hpp"
 
 namespace femdyn_app {
@@ -15,14 +14,8 @@ PetscErrorCode FemdynDynamics::setup() {
   PetscFunctionBeginUser;
   SecondOrderSystem* sys = &r.model_;
   if (r.opt_.probe) {
-    const Options& o = r.opt_;
-    HapticProbeSettings set{{o.probe_point[0], o.probe_point[1], o.probe_point[2]},
-                            o.probe_stiffness,
-                            o.probe_speed,
-                            o.probe_depth,
-                            o.haptic_rate,
-                            o.dt,
-                            o.dirichlet};
+    HapticProbeSettings set = r.opt_.probe_set;
+    set.dt = r.opt_.dt, set.dirichlet = r.opt_.dirichlet;
     PetscCall(HapticProbeObserver::create(r.ctx_, set, r.mesh_, &r.model_, r.solver_.get(), r.partial_, s_,
                                           &r.res_.probe, &probe_));
     sys = probe_->system();
@@ -78,13 +71,13 @@ void FemdynDynamics::record(const StepTimings& tm, double total, double cpu) {
   for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
   r.external = w;
   r.newton = tm.newton_iterations, r.rejected = tm.rejected, r.converged = tm.converged ? 1 : 0;
-  r.tip_uy = run_.tipDeflection(run_.fullDisplacement(s_.u));
+  r.tip_uy = run_.tipMean(run_.model_.fullVector(s_.u), 1, -1);
   run_.res_.steps.push_back(r);
 }
 
 PetscErrorCode FemdynDynamics::writeSnapshot(PetscInt, double) {
   PetscFunctionBeginUser;
-  run_.res_.snapshots.push_back({s_.t, run_.fullDisplacement(s_.u)});
+  run_.res_.snapshots.push_back({s_.t, run_.model_.fullVector(s_.u)});
   PetscFunctionReturn(0);
 }
 
@@ -114,10 +107,10 @@ PetscErrorCode FemdynDynamics::logSummary(const suite::LoopSummary& summary) con
 PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
   PetscFunctionBeginUser;
   run_.res_.loop_time = summary.wall;
-  run_.res_.u_full = run_.fullDisplacement(s_.u);
+  run_.res_.u_full = run_.model_.fullVector(s_.u);
   PetscCall(logSummary(summary));
   if (probe_) PetscCall(probe_->logSummary());
-  PetscCall(run_.writeOutputStage());
+  PetscCall(run_.writeOutput());
   PetscFunctionReturn(0);
 }
 

@@ -31,12 +31,7 @@ public:
 private:
   void record(const suite::fem::StepTimings& tm, double total, double cpu);
   PetscErrorCode logSummary(const suite::LoopSummary& summary) const;
-  // Checkpoints (femdyn_checkpoint.cpp): the Newmark state u, v, a (and the tangent predictor's point) at the
-  // end of a step, and the step history, snapshots and probe history so far (a restarted run writes the same
-  // output as an uninterrupted one). The state is replicated: rank 0 writes it, every rank reads it.
-  suite::CheckpointHeader checkpointHeader() const;
-  PetscErrorCode checkRestart(const std::string& path, const suite::CheckpointHeader& found,
-                              unsigned long long records) const;
+  suite::CheckpointHeader checkpointHeader() const; // femdyn_checkpoint.cpp
 
   FemdynRun& run_;
   suite::fem::Newmark nm_;

@@ -1,7 +1,8 @@
 // femdyn options: one function per group (model, time integration, Newton, haptic probe), named choices
 // documented by -help from their registries in lib/fem (-material, -ordering, -solver, the integrator's
-// -time_scheme, -jacobian, -newton_predictor, -mass), then the cross-option checks. Every check is collective (PetscCheck on the run's communicator).
+// -time_scheme, -jacobian, -newton_predictor, -mass), then the cross-option checks (collective PetscCheck).
 #include "core/named_choice.hpp"
+#include "core/option_string.hpp"
 #include "fem/material.hpp"
 #include "femdyn_run.hpp"
 
@@ -10,25 +11,15 @@ namespace femdyn_app {
 namespace {
 const std::vector<suite::Choice> kMeshes = {{"beam", "structured beam of hexahedra, 6 tets each"},
                                             {"file", "Gmsh or TetGen mesh given by -mesh_file"}};
-
-// A string option without a fixed set of values.
-PetscErrorCode optionsString(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
-                             std::string* value) {
-  char buf[PETSC_MAX_PATH_LEN];
-  PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(buf, value->c_str(), sizeof buf));
-  PetscCall(PetscOptionsString(name, text, "", buf, buf, sizeof buf, nullptr));
-  *value = buf;
-  PetscFunctionReturn(0);
-}
 } // namespace
 
 PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject) {
   PetscInt ncells = 3, nsize = 2;
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-mesh", "Mesh", kMeshes, &opt_.mesh));
-  PetscCall(optionsString(PetscOptionsObject, "-mesh_file",
-                          "Gmsh .msh (2.2/4.1 ASCII) or TetGen basename (.node/.ele)", &opt_.mesh_file));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-mesh_file",
+                                 "Gmsh .msh (2.2/4.1 ASCII) or TetGen basename (.node/.ele)",
+                                 &opt_.mesh_file));
   PetscCall(PetscOptionsReal("-beam_length", "Beam length along x", "", opt_.beam_length, &opt_.beam_length,
                              nullptr));
   PetscCall(
@@ -45,8 +36,9 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
                                  suite::fem::orderingChoices(), &opt_.ordering));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-solver", "Linear solver", suite::fem::solverChoices(),
                                  &opt_.solver));
-  PetscCall(optionsString(PetscOptionsObject, "-dirichlet",
-                          "Clamped plane, e.g. x=0 (all DOFs of its nodes fixed), or none", &opt_.dirichlet));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-dirichlet",
+                                 "Clamped plane, e.g. x=0 (all DOFs of its nodes fixed), or none",
+                                 &opt_.dirichlet));
   PetscFunctionReturn(0);
 }
 
@@ -96,38 +88,39 @@ PetscErrorCode FemdynRun::readNewtonOptions(PetscOptionItems* PetscOptionsObject
                             nm.max_halvings, &nm.max_halvings, nullptr));
   PetscCall(PetscOptionsInt("-snapshot_every", "Displacement/velocity snapshot every N steps (0: none)", "",
                             opt_.snapshot_every, &opt_.snapshot_every, nullptr));
-  PetscCall(optionsString(PetscOptionsObject, "-output", "HDF5 output file", &opt_.output));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-output", "HDF5 output file", &opt_.output));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode FemdynRun::readProbeOptions(PetscOptionItems* PetscOptionsObject) {
   PetscInt npt = 3;
+  auto& p = opt_.probe_set;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsBool("-probe", "Haptic probe: a rigid point pressing on a surface node (penalty)", "",
                              opt_.probe, &opt_.probe, nullptr));
   PetscCall(PetscOptionsRealArray("-probe_point",
                                   "Probe contact point x,y,z (nearest node; default: top of the free end)",
-                                  "", opt_.probe_point, &npt, nullptr));
+                                  "", p.point, &npt, nullptr));
   PetscCall(PetscOptionsReal("-probe_stiffness", "Probe penalty stiffness k (force per length)", "",
-                             opt_.probe_stiffness, &opt_.probe_stiffness, nullptr));
+                             p.stiffness, &p.stiffness, nullptr));
   PetscCall(PetscOptionsReal("-probe_speed", "Probe indentation speed (along -y, from the node's height)", "",
-                             opt_.probe_speed, &opt_.probe_speed, nullptr));
+                             p.speed, &p.speed, nullptr));
   PetscCall(PetscOptionsReal("-probe_depth", "Probe travel below the node's initial height, then it holds",
-                             "", opt_.probe_depth, &opt_.probe_depth, nullptr));
+                             "", p.depth, &p.depth, nullptr));
   PetscCall(PetscOptionsReal("-haptic_rate", "Haptic force output rate in Hz (local model between FEM steps)",
-                             "", opt_.haptic_rate, &opt_.haptic_rate, nullptr));
+                             "", p.haptic_rate, &p.haptic_rate, nullptr));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode FemdynRun::checkProbeOptions() const {
   MPI_Comm comm = ctx_.comm();
+  const auto& p = opt_.probe_set;
   PetscFunctionBeginUser;
   PetscCheck(
-      !opt_.probe || (opt_.probe_stiffness > 0 && opt_.probe_speed >= 0 && opt_.probe_depth >= 0 &&
-                      opt_.haptic_rate > 0),
-      comm, PETSC_ERR_ARG_OUTOFRANGE,
+      !opt_.probe || (p.stiffness > 0 && p.speed >= 0 && p.depth >= 0 && p.haptic_rate > 0), comm,
+      PETSC_ERR_ARG_OUTOFRANGE,
       "-probe: -probe_stiffness %g and -haptic_rate %g must be > 0, -probe_speed %g and -probe_depth %g >= 0",
-      opt_.probe_stiffness, opt_.haptic_rate, opt_.probe_speed, opt_.probe_depth);
+      p.stiffness, p.haptic_rate, p.speed, p.depth);
   PetscCheck(!(opt_.probe && opt_.is_static), comm, PETSC_ERR_ARG_INCOMP,
              "-probe needs a dynamic run (not -static)");
   PetscFunctionReturn(0);

@@ -1,8 +1,8 @@
 // femdyn output: provenance and run attributes, the mesh (corner nodes of the tets for XDMF), ordering
 // metrics, the static result or the per-step timings and energies, the haptic probe's histories, snapshots
 // with an XDMF tetrahedral series, the final displacement.
+#include "core/log_stages.hpp"
 #include "femdyn_run.hpp"
-
 #include "io/h5_output.hpp"
 #include "io/xdmf.hpp"
 
@@ -13,10 +13,15 @@ namespace femdyn_app {
 namespace {
 using ull = unsigned long long;
 
-template <class T> std::vector<T> column(const std::vector<StepRecord>& steps, T StepRecord::*f) {
-  std::vector<T> c(steps.size());
-  for (size_t i = 0; i < steps.size(); ++i) c[i] = steps[i].*f;
-  return c;
+// The column f of the step records as /steps/<name>.
+template <class T>
+PetscErrorCode writeColumn(suite::H5Output& out, const std::vector<StepRecord>& steps,
+                           const StepColumn<T>& c) {
+  std::vector<T> v(steps.size());
+  PetscFunctionBeginUser;
+  for (size_t i = 0; i < steps.size(); ++i) v[i] = steps[i].*c.field;
+  PetscCall(out.writeReplicated(std::string("/steps/") + c.name, v.data(), {(ull)v.size()}, c.units));
+  PetscFunctionReturn(0);
 }
 } // namespace
 
@@ -45,9 +50,7 @@ PetscErrorCode FemdynRun::writeOrdering(suite::H5Output& out) const {
   PetscCall(out.writeAttribute("/ordering", "name", opt_.ordering));
   PetscCall(out.writeAttribute("/ordering", "bandwidth", m.bandwidth));
   PetscCall(out.writeAttribute("/ordering", "profile", m.profile));
-  PetscCall(out.writeAttribute("/ordering", "profile_definition",
-                               "sum_i (i - f_i), f_i = first nonzero column of row i of the permuted lower "
-                               "triangle (diagonal excluded)"));
+  PetscCall(out.writeAttribute("/ordering", "profile_definition", suite::fem::kProfileDefinition));
   PetscCall(out.writeAttribute("/ordering", "nnz_L", m.nnz_L));
   PetscCall(out.writeAttribute("/ordering", "factor_flops", m.flops));
   PetscCall(out.writeAttribute("/ordering", "envelope_flops", m.envelope_flops));
@@ -58,17 +61,12 @@ PetscErrorCode FemdynRun::writeOrdering(suite::H5Output& out) const {
 
 // Mesh: coordinates and the corner nodes of every tet (XDMF Tetrahedron); the final displacement.
 PetscErrorCode FemdynRun::writeMesh(suite::H5Output& out) const {
-  const long long nn = mesh_.numNodes(), ne = mesh_.numElems();
+  const ull nn = (ull)mesh_.numNodes(), ne = (ull)mesh_.numElems();
   PetscFunctionBeginUser;
-  std::vector<double> xyz(3 * nn);
-  for (long long v = 0; v < nn; ++v)
-    for (int i = 0; i < 3; ++i) xyz[3 * v + i] = mesh_.nodes[v][i];
-  std::vector<int> tets(4 * ne);
-  for (long long e = 0; e < ne; ++e)
-    for (int a = 0; a < 4; ++a) tets[4 * e + a] = mesh_.elem(e)[a];
-  PetscCall(out.writeReplicated("/mesh/coordinates", xyz.data(), {(ull)nn, 3}, "m"));
-  PetscCall(out.writeReplicated("/mesh/tets", tets.data(), {(ull)ne, 4}, ""));
-  PetscCall(out.writeReplicated("/final/u", res_.u_full.data(), {(ull)nn, 3}, "m"));
+  PetscCall(
+      out.writeReplicated("/mesh/coordinates", suite::fem::flatCoordinates(mesh_).data(), {nn, 3}, "m"));
+  PetscCall(out.writeReplicated("/mesh/tets", suite::fem::cornerNodes(mesh_).data(), {ne, 4}, ""));
+  PetscCall(out.writeReplicated("/final/u", res_.u_full.data(), {nn, 3}, "m"));
   PetscFunctionReturn(0);
 }
 
@@ -86,31 +84,9 @@ PetscErrorCode FemdynRun::writeStatic(suite::H5Output& out) const {
 // Per-step records (step 0 first) as /steps columns, and the run's rates.
 PetscErrorCode FemdynRun::writeSteps(suite::H5Output& out) const {
   const size_t n = res_.steps.size();
-  const struct {
-    const char* name;
-    double StepRecord::*f;
-    const char* units;
-  } cols[] = {{"time", &StepRecord::time, "s"},
-              {"assemble", &StepRecord::assemble, "s"},
-              {"factor", &StepRecord::factor, "s"},
-              {"solve", &StepRecord::solve, "s"},
-              {"wall", &StepRecord::total, "s"},
-              {"cpu", &StepRecord::cpu, "s"},
-              {"kinetic_energy", &StepRecord::kinetic, "J"},
-              {"strain_energy", &StepRecord::strain, "J"},
-              {"external_work", &StepRecord::external, "J"},
-              {"tip_deflection", &StepRecord::tip_uy, "m"}};
   PetscFunctionBeginUser;
-  for (const auto& c : cols) {
-    const auto v = column(res_.steps, c.f);
-    PetscCall(out.writeReplicated(std::string("/steps/") + c.name, v.data(), {(ull)n}, c.units));
-  }
-  for (const auto& [name, f] : {std::make_pair("newton_iterations", &StepRecord::newton),
-                                std::make_pair("rejected", &StepRecord::rejected),
-                                std::make_pair("converged", &StepRecord::converged)}) {
-    const auto v = column(res_.steps, f);
-    PetscCall(out.writeReplicated(std::string("/steps/") + name, v.data(), {(ull)n}, ""));
-  }
+  for (const auto& c : kStepReals) PetscCall(writeColumn(out, res_.steps, c));
+  for (const auto& c : kStepCounts) PetscCall(writeColumn(out, res_.steps, c));
   double wall = 0, cpu = 0;
   for (size_t i = 1; i < n; ++i) wall += res_.steps[i].total, cpu += res_.steps[i].cpu;
   PetscCall(out.writeAttribute("/", "steps", (long long)(n - 1)));
@@ -121,36 +97,40 @@ PetscErrorCode FemdynRun::writeSteps(suite::H5Output& out) const {
   PetscFunctionReturn(0);
 }
 
+// force_predicted[i]: the local model's force at sync_time[i+1], made at sync_time[i].
 PetscErrorCode FemdynRun::writeProbe(suite::H5Output& out) const {
   const auto& pr = res_.probe;
-  const ull ns = pr.sync_time.size(), nh = pr.haptic_time.size();
+  const struct {
+    const char* name;
+    const std::vector<double>& v;
+    const char* units;
+  } series[] = {{"sync_time", pr.sync_time, "s"},
+                {"force_full", pr.force_full, "N"},
+                {"force_predicted", pr.force_predicted, "N"},
+                {"compliance_yy", pr.compliance_yy, "m/N"},
+                {"haptic_time", pr.haptic_time, "s"},
+                {"haptic_force", pr.haptic_force, "N"}};
   PetscFunctionBeginUser;
   PetscCall(out.createGroup("/probe"));
   PetscCall(out.writeAttribute("/probe", "node", (long long)pr.node));
-  PetscCall(out.writeAttribute("/probe", "stiffness", opt_.probe_stiffness));
-  PetscCall(out.writeAttribute("/probe", "haptic_rate", opt_.haptic_rate));
+  PetscCall(out.writeAttribute("/probe", "stiffness", opt_.probe_set.stiffness));
+  PetscCall(out.writeAttribute("/probe", "haptic_rate", opt_.probe_set.haptic_rate));
   PetscCall(out.writeAttribute("/probe", "haptic_ticks", pr.ticks));
   PetscCall(out.writeAttribute("/probe", "haptic_tick_cpu_seconds", pr.tick_seconds));
   PetscCall(out.writeAttribute("/probe", "compliance_cpu_seconds", pr.compliance_seconds));
-  PetscCall(out.writeReplicated("/probe/sync_time", pr.sync_time.data(), {ns}, "s"));
-  PetscCall(out.writeReplicated("/probe/force_full", pr.force_full.data(), {ns}, "N"));
-  // force_predicted[i]: the local model's force at sync_time[i+1], made at sync_time[i].
-  PetscCall(out.writeReplicated("/probe/force_predicted", pr.force_predicted.data(), {ns}, "N"));
-  PetscCall(out.writeReplicated("/probe/compliance_yy", pr.compliance_yy.data(), {ns}, "m/N"));
-  PetscCall(out.writeReplicated("/probe/haptic_time", pr.haptic_time.data(), {nh}, "s"));
-  PetscCall(out.writeReplicated("/probe/haptic_force", pr.haptic_force.data(), {nh}, "N"));
+  for (const auto& s : series)
+    PetscCall(out.writeReplicated(std::string("/probe/") + s.name, s.v.data(), {(ull)s.v.size()}, s.units));
   PetscFunctionReturn(0);
 }
 
 // Snapshots /snapshots/NNNNNN/u and the steps of the XDMF series over them (or over /final/u alone).
 PetscErrorCode FemdynRun::writeSnapshots(suite::H5Output& out,
                                          std::vector<suite::XdmfTetStep>* xsteps) const {
-  const ull nn = (ull)mesh_.numNodes();
   PetscFunctionBeginUser;
   for (size_t k = 0; k < res_.snapshots.size(); ++k) {
     char name[64];
     std::snprintf(name, sizeof name, "/snapshots/%06zu/u", k);
-    PetscCall(out.writeReplicated(name, res_.snapshots[k].second.data(), {nn, 3}, "m"));
+    PetscCall(out.writeReplicated(name, res_.snapshots[k].second.data(), {(ull)mesh_.numNodes(), 3}, "m"));
     xsteps->push_back({res_.snapshots[k].first, {{"displacement", name, 3}}});
   }
   if (xsteps->empty())
@@ -159,8 +139,12 @@ PetscErrorCode FemdynRun::writeSnapshots(suite::H5Output& out,
 }
 
 PetscErrorCode FemdynRun::writeOutput() const {
+  suite::LogStages stages;
   suite::H5Output out;
+  std::vector<suite::XdmfTetStep> xsteps;
   PetscFunctionBeginUser;
+  PetscCall(suite::LogStages::get(&stages));
+  suite::StageScope stage(stages.output);
   PetscCall(out.open(ctx_.comm(), opt_.output));
   PetscCall(out.writeProvenance(ctx_));
   PetscCall(writeRunAttributes(out));
@@ -171,7 +155,6 @@ PetscErrorCode FemdynRun::writeOutput() const {
   else if (!res_.steps.empty())
     PetscCall(writeSteps(out));
   if (!res_.probe.sync_time.empty()) PetscCall(writeProbe(out));
-  std::vector<suite::XdmfTetStep> xsteps;
   PetscCall(writeSnapshots(out, &xsteps));
   PetscCall(out.commit(&ctx_));
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)mesh_.numNodes(), (ull)mesh_.numElems()};

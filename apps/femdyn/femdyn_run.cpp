@@ -15,16 +15,11 @@ namespace femdyn_app {
 
 using namespace suite::fem;
 
-std::vector<double> FemdynRun::fullDisplacement(const std::vector<double>& free) const {
-  std::vector<double> full(model_.numDofs(), 0.0);
-  model_.scatterFree(free.data(), full.data());
-  return full;
-}
-
-double FemdynRun::tipDeflection(const std::vector<double>& u) const {
+// The mean of component c (times sign) over the tip-face nodes (0 without any).
+double FemdynRun::tipMean(const std::vector<double>& u, int c, double sign) const {
   double s = 0;
-  for (int v : tip_nodes_) s -= u[3 * v + 1];
-  return tip_nodes_.empty() ? 0.0 : s / tip_nodes_.size();
+  for (int v : tip_nodes_) s += sign * u[3 * v + c];
+  return s / std::max<size_t>(1, tip_nodes_.size());
 }
 
 PetscErrorCode FemdynRun::solveStaticCase() {
@@ -34,16 +29,13 @@ PetscErrorCode FemdynRun::solveStaticCase() {
   PetscCall(solveStatic(ctx_.comm(), &model_, solver_.get(), f_ext_, (int)opt_.load_steps,
                         (int)opt_.newmark.newton_max_it, opt_.newmark.newton_rtol, &u, &res_.stat, partial_));
   res_.loop_time = wallSeconds() - t0;
-  res_.u_full = fullDisplacement(u);
-  res_.tip_deflection = tipDeflection(res_.u_full);
-  double ux = 0;
-  for (int v : tip_nodes_) ux += res_.u_full[3 * v];
-  ux /= std::max<size_t>(1, tip_nodes_.size());
-  res_.tip_ux = ux;
+  res_.u_full = model_.fullVector(u);
+  res_.tip_deflection = tipMean(res_.u_full, 1, -1);
+  res_.tip_ux = tipMean(res_.u_full, 0);
   PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
                            "femdyn static: tip_deflection %.6f (mean -u_y on %zu tip nodes), tip u_x %.6f, "
                            "%d load steps, %d Newton iterations, residual %.3e, strain energy %.6e, %.3f s",
-                           res_.tip_deflection, tip_nodes_.size(), ux, res_.stat.load_steps,
+                           res_.tip_deflection, tip_nodes_.size(), res_.tip_ux, res_.stat.load_steps,
                            res_.stat.newton_iterations, res_.stat.residual, res_.stat.energy,
                            res_.loop_time));
   PetscFunctionReturn(0);
@@ -66,16 +58,6 @@ PetscErrorCode FemdynRun::solveDynamic() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FemdynRun::writeOutputStage() const {
-  suite::LogStages stages;
-  PetscFunctionBeginUser;
-  PetscCall(suite::LogStages::get(&stages));
-  PetscCall(PetscLogStagePush(stages.output));
-  PetscCall(writeOutput());
-  PetscCall(PetscLogStagePop());
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode FemdynRun::solve() {
   PetscFunctionBeginUser;
   if (!opt_.is_static && opt_.steps > 0) {
@@ -86,27 +68,24 @@ PetscErrorCode FemdynRun::solve() {
     PetscCall(solveStaticCase());
   else
     res_.u_full.assign(model_.numDofs(), 0.0); // -steps 0: setup, ordering and analysis only
-  PetscCall(writeOutputStage());
+  PetscCall(writeOutput());
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode runFemdyn(const suite::RunContext& ctx) {
-  PetscFunctionBeginUser;
   suite::LogStages stages;
-  PetscCall(suite::LogStages::get(&stages));
   FemdynRun run(ctx);
-  PetscCall(PetscLogStagePush(stages.setup));
-  PetscCall(run.readOptions());
-  PetscCall(ctx.checkUnusedOptions());
-  if (ctx.helpRequested()) {
-    PetscCall(PetscLogStagePop());
-    PetscFunctionReturn(0);
+  PetscFunctionBeginUser;
+  PetscCall(suite::LogStages::get(&stages));
+  {
+    suite::StageScope setup(stages.setup);
+    PetscCall(run.readOptions());
+    PetscCall(ctx.checkUnusedOptions());
+    if (ctx.helpRequested()) PetscFunctionReturn(0);
+    PetscCall(run.setup());
   }
-  PetscCall(run.setup());
-  PetscCall(PetscLogStagePop());
-  PetscCall(PetscLogStagePush(stages.solve));
+  suite::StageScope solve(stages.solve);
   PetscCall(run.solve()); // ends with the output (in the output stage)
-  PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
 

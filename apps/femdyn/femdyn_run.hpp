@@ -1,6 +1,6 @@
 // The femdyn run: options (femdyn_options.cpp), mesh and model setup (femdyn_setup.cpp), the static solve or
-// the Newmark dynamics on the suite's time loop (femdyn_dynamics.*, the haptic probe as an observer in
-// haptic_probe_observer.*), checkpoints (femdyn_checkpoint.cpp) and the HDF5/XDMF output (femdyn_output.cpp).
+// the Newmark dynamics on the suite's time loop (femdyn_dynamics.*, the haptic probe as an observer,
+// fem/haptic_probe.hpp), checkpoints (femdyn_checkpoint.cpp) and the HDF5/XDMF output (femdyn_output.cpp).
 #pragma once
 
 #include "core/run_context.hpp"
@@ -30,17 +30,33 @@ struct Options {
   double beam_size[2] = {1, 1}, gravity[3] = {0, 0, 0};
   PetscInt beam_cells[3] = {10, 1, 1}, order = 1, steps = 100, load_steps = 1, snapshot_every = 0;
   suite::fem::NewmarkParams newmark;
-  PetscBool is_static = PETSC_FALSE;
-  // Haptic probe: a rigid point pressing (along -y) on the surface node nearest to probe_point.
-  PetscBool probe = PETSC_FALSE;
-  double probe_point[3] = {1e300, 1e300, 1e300}; // default: top (max y) node of the free end, middle of z
-  double probe_stiffness = 1000, probe_speed = 0.5, probe_depth = 0.2, haptic_rate = 1000;
+  PetscBool is_static = PETSC_FALSE, probe = PETSC_FALSE;
+  suite::fem::HapticProbeSettings probe_set; // -probe: a rigid point pressing (along -y) on a surface node
 };
 
 struct StepRecord {
   double time, assemble, factor, solve, total, cpu, kinetic, strain, external, tip_uy;
   int newton, rejected, converged;
 };
+// Its columns, in the order of /steps and of the checkpoint's history: the reals, then the counts.
+template <class T> struct StepColumn {
+  const char* name;
+  T StepRecord::*field;
+  const char* units;
+};
+inline constexpr StepColumn<double> kStepReals[] = {{"time", &StepRecord::time, "s"},
+                                                    {"assemble", &StepRecord::assemble, "s"},
+                                                    {"factor", &StepRecord::factor, "s"},
+                                                    {"solve", &StepRecord::solve, "s"},
+                                                    {"wall", &StepRecord::total, "s"},
+                                                    {"cpu", &StepRecord::cpu, "s"},
+                                                    {"kinetic_energy", &StepRecord::kinetic, "J"},
+                                                    {"strain_energy", &StepRecord::strain, "J"},
+                                                    {"external_work", &StepRecord::external, "J"},
+                                                    {"tip_deflection", &StepRecord::tip_uy, "m"}};
+inline constexpr StepColumn<int> kStepCounts[] = {{"newton_iterations", &StepRecord::newton, ""},
+                                                  {"rejected", &StepRecord::rejected, ""},
+                                                  {"converged", &StepRecord::converged, ""}};
 
 struct Results {
   suite::fem::HapticProbeRecord probe;
@@ -64,7 +80,7 @@ public:
 
 private:
   friend class FemdynDynamics; // the time-stepped side of the run (femdyn_dynamics.hpp)
-  // Options (femdyn_options.cpp), one group each; the first four run inside the options block.
+  // Options (femdyn_options.cpp); the first four run inside the options block.
   PetscErrorCode readModelOptions(PetscOptionItems* PetscOptionsObject);
   PetscErrorCode readTimeOptions(PetscOptionItems* PetscOptionsObject);
   PetscErrorCode readNewtonOptions(PetscOptionItems* PetscOptionsObject);
@@ -79,10 +95,8 @@ private:
   // Solves (femdyn_run.cpp).
   PetscErrorCode solveStaticCase();
   PetscErrorCode solveDynamic();
-  std::vector<double> fullDisplacement(const std::vector<double>& free) const;
-  double tipDeflection(const std::vector<double>& u_full) const;
-  // Output (femdyn_output.cpp): writeOutputStage runs writeOutput in the output log stage.
-  PetscErrorCode writeOutputStage() const;
+  double tipMean(const std::vector<double>& u_full, int c, double sign = 1) const;
+  // Output (femdyn_output.cpp), in the output log stage.
   PetscErrorCode writeOutput() const;
   PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
   PetscErrorCode writeOrdering(suite::H5Output& out) const;

@@ -9,7 +9,6 @@
 #include "io/h5_output.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 namespace femdyn_app {
 
@@ -88,14 +87,9 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
   res_.metrics = computeMetrics(graphOfMatrix(model_.pattern()), perm_);
   solver_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
   PetscCall(solver_->analyze(comm, model_.pattern(), perm_));
-  if (solver_->distributedAssembly()) {
-    // Each rank assembles the elements whose first corner node it owns (the solver's METIS node partition).
-    const auto& part = solver_->nodePartition();
-    std::vector<char> owned(mesh_.numElems(), 0);
-    for (int e = 0; e < mesh_.numElems(); ++e) owned[e] = part[mesh_.elem(e)[0]] == ctx_.rank();
-    model_.setOwnedElements(std::move(owned));
-    partial_ = true;
-    opt_.newmark.partial_sums = true;
+  if (solver_->distributedAssembly()) { // each rank assembles its elements of the solver's node partition
+    model_.ownElementsOfNodes(solver_->nodePartition(), ctx_.rank());
+    partial_ = opt_.newmark.partial_sums = true;
   }
   res_.factor = solver_->stats();
   PetscFunctionReturn(0);

@@ -3,8 +3,8 @@
 // CHOLMOD or the distributed PETSc path (after Nilsson & Dieckmann, SIGRAD 2003). With skyline/banded/cholmod
 // the computation is serial and replicated on every rank; with -solver petsc each rank assembles its elements
 // of a METIS partition of the nodes into an MPIAIJ matrix solved with KSP (time-stepping state replicated).
-// Checkpoints
-// (-checkpoint_dir, -checkpoint_every, -restart latest) and stop requests (SIGTERM/SIGUSR1, -max_walltime).
+// Checkpoints (-checkpoint_dir, -checkpoint_every, -restart latest) and stop requests (SIGTERM/SIGUSR1,
+// -max_walltime).
 //
 // Sample runs (tests/sample_runs.py executes each line):
 //   femdyn -static -tip_load 1 -beam_cells 20,2,2 -order 2 -output cant.h5       # tip_deflection attribute
@@ -15,13 +15,11 @@
 //   femdyn -material stvk -time_scheme generalized_alpha -rho_inf 0.5 -steps 50 -tip_load 1 -output ga.h5
 //   mpiexec -n 2 femdyn -static -tip_load 1 -beam_cells 20,2,2 -solver petsc -ksp_type cg -pc_type gamg -output p.h5
 //   femdyn -material stvk -steps 200 -tip_load 1 -checkpoint_dir ckpt -checkpoint_every 50 -output c.h5
-#include "core/run_context.hpp"
 #include "femdyn_run.hpp"
 
-static const char help[] = "FEM elastodynamics (Newmark + Newton) with RCM/AMD/METIS orderings.\n";
-
 int main(int argc, char** argv) {
-  suite::RunContext ctx(&argc, &argv, help, "femdyn");
+  suite::RunContext ctx(&argc, &argv, "FEM elastodynamics (Newmark + Newton) with RCM/AMD/METIS orderings.\n",
+                        "femdyn");
   if (ctx.initError()) return ctx.exitCode(ctx.initError());
   return ctx.exitCode(femdyn_app::runFemdyn(ctx));
 }

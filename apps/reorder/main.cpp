@@ -4,13 +4,12 @@
 // Sample runs (tests/sample_runs.py executes each line):
 //   reorder -matrix ../shared/data/matrices/can_1072.mtx -ordering all -output can1072.h5
 //   reorder -matrix ../shared/data/matrices/bcsstk10.mtx -ordering rcm -output b10.h5
-#include "core/run_context.hpp"
 #include "reorder_run.hpp"
 
-static const char help[] = "Orderings of a Matrix Market matrix: bandwidth, profile, nnz(L), flops, time.\n";
-
 int main(int argc, char** argv) {
-  suite::RunContext ctx(&argc, &argv, help, "reorder");
+  suite::RunContext ctx(&argc, &argv,
+                        "Orderings of a Matrix Market matrix: bandwidth, profile, nnz(L), flops, time.\n",
+                        "reorder");
   if (ctx.initError()) return ctx.exitCode(ctx.initError());
   return ctx.exitCode(reorder_app::runReorder(ctx));
 }

@@ -1,16 +1,10 @@
 // reorder: see main.cpp. Ordering time: minimum over -repeat runs of the thread CPU time (fem/cpu_timer.hpp).
-#include "reorder_run.hpp"
-
 #include "core/log.hpp"
-#include "core/named_choice.hpp"
-#include "fem/cpu_timer.hpp"
+#include "core/option_string.hpp"
 #include "fem/matrix_market.hpp"
 #include "fem/ordering.hpp"
 #include "io/h5_output.hpp"
-
-#include <algorithm>
-#include <string>
-#include <vector>
+#include "reorder_run.hpp"
 
 namespace reorder_app {
 
@@ -23,40 +17,18 @@ struct Options {
 };
 
 PetscErrorCode readOptions(MPI_Comm comm, Options* o) {
-  char matrix[PETSC_MAX_PATH_LEN] = "", output[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
-  // The registered orderings (lib/fem/ordering.cpp), each with its help line, and "all" of them.
-  std::vector<suite::Choice> choices = orderingChoices();
+  std::vector<suite::Choice> choices = orderingChoices(); // each with its help line, and "all" of them
   choices.push_back({"all", "every ordering above, in this order"});
   PetscOptionsBegin(comm, "", "reorder options", "");
-  PetscCall(PetscOptionsString("-matrix", "Matrix Market file (coordinate; symmetric or general)", "", matrix,
-                               matrix, sizeof matrix, nullptr));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-matrix",
+                                 "Matrix Market file (coordinate; symmetric or general)", &o->matrix));
   PetscCall(
       suite::optionsChoice(PetscOptionsObject, "-ordering", "Fill-reducing ordering", choices, &o->ordering));
-  PetscCall(PetscOptionsString("-output", "HDF5 output file", "", output, output, sizeof output, nullptr));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-output", "HDF5 output file", &o->output));
   PetscCall(PetscOptionsInt("-repeat", "Ordering time = minimum over this many runs", "", o->repeat,
                             &o->repeat, nullptr));
   PetscOptionsEnd();
-  o->matrix = matrix, o->output = output;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode writeMatrixInfo(const suite::RunContext& ctx, suite::H5Output& out, const Options& o,
-                               const SymCsc& A, const MatrixMarketInfo& info) {
-  MPI_Comm comm = ctx.comm();
-  PetscFunctionBeginUser;
-  PetscCall(out.writeAttribute("/", "matrix", o.matrix));
-  PetscCall(out.writeAttribute("/", "n", (long long)A.n));
-  PetscCall(out.writeAttribute("/", "nnz_lower", (long long)A.nnzUpper()));
-  PetscCall(out.writeAttribute(
-      "/", "profile_definition",
-      "sum_i (i - f_i), f_i = first nonzero column of row i of the permuted lower triangle "
-      "(diagonal excluded)"));
-  PetscCall(suite::logInfo(comm, ctx.quiet(),
-                           "reorder: %s  n = %d  nnz(lower incl. diagonal) = %lld  (%s %s)", o.matrix.c_str(),
-                           A.n, A.nnzUpper(), info.field.c_str(), info.symmetry.c_str()));
-  PetscCall(suite::logInfo(comm, ctx.quiet(), "%-8s %10s %12s %12s %12s %12s", "ordering", "bandwidth",
-                           "profile", "nnz(L)", "flops", "time [ms]"));
   PetscFunctionReturn(0);
 }
 
@@ -68,22 +40,16 @@ PetscErrorCode applyOrdering(const suite::RunContext& ctx, suite::H5Output& out,
   PetscFunctionBeginUser;
   PetscCall(findOrdering(comm, name, &fn));
   std::vector<int> p;
-  double best = 1e300;
-  for (PetscInt r = 0; r < repeat; ++r) {
-    const double t0 = threadCpuSeconds();
-    p = fn(g);
-    best = std::min(best, threadCpuSeconds() - t0);
-  }
+  const double best = timeOrdering(fn, g, (int)repeat, &p);
   PetscCheck(isPermutation(p, g.n), comm, PETSC_ERR_PLIB, "ordering %s did not return a permutation",
              name.c_str());
   const OrderingMetrics m = computeMetrics(g, p);
   PetscCall(suite::logInfo(comm, ctx.quiet(), "%-8s %10lld %12lld %12lld %12.4g %12.4f", name.c_str(),
                            m.bandwidth, m.profile, m.nnz_L, m.flops, 1e3 * best));
   const std::string grp = "/" + name;
-  const long long b = m.bandwidth, pr = m.profile, nz = m.nnz_L;
-  PetscCall(out.writeReplicated(grp + "/bandwidth", &b, {1}, ""));
-  PetscCall(out.writeReplicated(grp + "/profile", &pr, {1}, ""));
-  PetscCall(out.writeReplicated(grp + "/nnz_L", &nz, {1}, ""));
+  const std::pair<const char*, long long> counts[] = {
+      {"bandwidth", m.bandwidth}, {"profile", m.profile}, {"nnz_L", m.nnz_L}};
+  for (const auto& [key, v] : counts) PetscCall(out.writeReplicated(grp + "/" + key, &v, {1}, ""));
   PetscCall(out.writeReplicated(grp + "/flops", &m.flops, {1}, ""));
   PetscCall(out.writeReplicated(grp + "/time", &best, {1}, "s"));
   PetscCall(out.writeReplicated(grp + "/permutation", p.data(), {(unsigned long long)p.size()}, ""));
@@ -109,7 +75,15 @@ PetscErrorCode runReorder(const suite::RunContext& ctx) {
   suite::H5Output out;
   PetscCall(out.open(comm, o.output));
   PetscCall(out.writeProvenance(ctx));
-  PetscCall(writeMatrixInfo(ctx, out, o, A, info));
+  PetscCall(out.writeAttribute("/", "matrix", o.matrix));
+  PetscCall(out.writeAttribute("/", "n", (long long)A.n));
+  PetscCall(out.writeAttribute("/", "nnz_lower", (long long)A.nnzUpper()));
+  PetscCall(out.writeAttribute("/", "profile_definition", kProfileDefinition));
+  PetscCall(suite::logInfo(comm, ctx.quiet(),
+                           "reorder: %s  n = %d  nnz(lower incl. diagonal) = %lld  (%s %s)", o.matrix.c_str(),
+                           A.n, A.nnzUpper(), info.field.c_str(), info.symmetry.c_str()));
+  PetscCall(suite::logInfo(comm, ctx.quiet(), "%-8s %10s %12s %12s %12s %12s", "ordering", "bandwidth",
+                           "profile", "nnz(L)", "flops", "time [ms]"));
   const std::vector<std::string> names =
       o.ordering == "all" ? orderingNames() : std::vector<std::string>{o.ordering};
   for (const auto& name : names) PetscCall(applyOrdering(ctx, out, g, name, o.repeat));

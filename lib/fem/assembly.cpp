@@ -263,6 +263,18 @@ void ElasticModel::setOwnedElements(std::vector<char> owned) {
   }
 }
 
+void ElasticModel::ownElementsOfNodes(const std::vector<int>& node_part, int rank) {
+  std::vector<char> owned(mesh_->numElems(), 0);
+  for (int e = 0; e < mesh_->numElems(); ++e) owned[e] = node_part[mesh_->elem(e)[0]] == rank;
+  setOwnedElements(std::move(owned));
+}
+
+std::vector<double> ElasticModel::fullVector(const std::vector<double>& free) const {
+  std::vector<double> full(eq_.size(), 0.0);
+  scatterFree(free.data(), full.data());
+  return full;
+}
+
 void ElasticModel::scatterFree(const double* free, double* full) const {
   for (size_t d = 0; d < eq_.size(); ++d)
     if (eq_[d] >= 0) full[d] = free[eq_[d]];

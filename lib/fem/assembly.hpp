@@ -59,9 +59,12 @@ public:
   // (internal force, tangent, energy and mass are then this rank's partial sums; the linear stiffness is
   // reassembled). Empty: all elements (replicated computation).
   void setOwnedElements(std::vector<char> owned);
+  // The elements whose first corner node this rank owns (node_part[node] = owning rank) as setOwnedElements.
+  void ownElementsOfNodes(const std::vector<int>& node_part, int rank);
   bool partial() const { return !owned_.empty(); }
 
-  void scatterFree(const double* free, double* full) const; // full[fixed] untouched
+  void scatterFree(const double* free, double* full) const;              // full[fixed] untouched
+  std::vector<double> fullVector(const std::vector<double>& free) const; // fixed DOFs zero
   void gatherFree(const double* full, double* free) const;
 
 private:

@@ -104,6 +104,20 @@ static double bboxDiagonal(const TetMesh& mesh) {
   return std::sqrt(d);
 }
 
+std::vector<double> flatCoordinates(const TetMesh& mesh) {
+  std::vector<double> xyz(3 * mesh.nodes.size());
+  for (size_t v = 0; v < mesh.nodes.size(); ++v)
+    for (int i = 0; i < 3; ++i) xyz[3 * v + i] = mesh.nodes[v][i];
+  return xyz;
+}
+
+std::vector<int> cornerNodes(const TetMesh& mesh) {
+  std::vector<int> tets(4 * static_cast<size_t>(mesh.numElems()));
+  for (int e = 0; e < mesh.numElems(); ++e)
+    for (int a = 0; a < 4; ++a) tets[4 * static_cast<size_t>(e) + a] = mesh.elem(e)[a];
+  return tets;
+}
+
 std::vector<int> nodesOnPlane(const TetMesh& mesh, int axis, double value, double tol) {
   const double eps = tol * bboxDiagonal(mesh);
   std::vector<int> out;

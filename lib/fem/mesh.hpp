@@ -52,6 +52,9 @@ double facesArea(const TetMesh& mesh, const std::vector<std::vector<int>>& faces
 // the nodes on it (fixed: 3 per node). Collective error on a malformed plane.
 PetscErrorCode clampPlane(MPI_Comm comm, const char* option, const std::string& plane, const TetMesh& mesh,
                           std::vector<char>* fixed);
+// Flat node coordinates (x,y,z per node) and the 4 corner nodes of each element (HDF5/XDMF output).
+std::vector<double> flatCoordinates(const TetMesh& mesh);
+std::vector<int> cornerNodes(const TetMesh& mesh);
 // Node adjacency graph (CSR, no self loops, sorted): nodes sharing an element.
 void nodeGraph(const TetMesh& mesh, std::vector<int>* xadj, std::vector<int>* adj);
 

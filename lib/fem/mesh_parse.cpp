@@ -176,26 +176,21 @@ TetMesh parseTetGen(const std::string& node_content, const std::string& ele_cont
   return mesh;
 }
 
-TetMesh parseGmsh(const std::string& content, const std::string& name) {
+namespace {
+// A Gmsh ASCII 2.2/4.1 reader's state: the nodes so far (and their tags), the tetrahedra's nodes.
+struct GmshReader {
+  Tokens& t;
   TetMesh mesh;
-  Tokens t(content, name, false);
-  t.expect("$MeshFormat");
-  const double version = t.real("format version");
-  const long long ftype = t.integer("file type");
-  t.integer("data size");
-  if (!((version == 2.2 || version == 4.1) && ftype == 0))
-    fail(name + ": Gmsh format " + std::to_string(version) + " (file type " + std::to_string(ftype) +
-         ") not supported; use ASCII 2.2 or 4.1");
-  t.expect("$EndMeshFormat");
   std::unordered_map<long long, int> index; // node tag -> index
   std::vector<int> tets;
-  bool p2 = false, have_nodes = false;
-  auto addNode = [&](long long tag, const std::array<double, 3>& x) {
+  bool p2 = false;
+
+  void addNode(long long tag, const std::array<double, 3>& x) {
     if (!index.emplace(tag, static_cast<int>(mesh.nodes.size())).second)
       fail(t.where() + ": duplicate node tag " + std::to_string(tag));
     mesh.nodes.push_back(x);
-  };
-  auto addElement = [&](long long type, const std::vector<long long>& tags) {
+  }
+  void addElement(long long type, const std::vector<long long>& tags) {
     if (type != 4 && type != 11) return;
     const bool q = type == 11;
     if (!tets.empty() && q != p2) fail(t.where() + ": mixes 4- and 10-node tetrahedra");
@@ -207,79 +202,99 @@ TetMesh parseGmsh(const std::string& content, const std::string& name) {
       if (it == index.end()) fail(t.where() + ": unknown node tag " + std::to_string(g));
       tets.push_back(it->second);
     }
-  };
+  }
+  std::array<double, 3> point() {
+    std::array<double, 3> x;
+    for (int c = 0; c < 3; ++c) x[c] = t.real("coordinate");
+    return x;
+  }
+  void nodes22() {
+    const long long n = t.integer("number of nodes");
+    t.checkCount(n, 8, "nodes");
+    for (long long i = 0; i < n; ++i) {
+      const long long tag = t.integer("node tag");
+      addNode(tag, point());
+    }
+  }
+  void nodes41() {
+    const long long nblocks = t.integer("number of node blocks");
+    t.integer("number of nodes");
+    t.integer("min node tag");
+    t.integer("max node tag");
+    t.checkCount(nblocks, 8, "node blocks");
+    for (long long b = 0; b < nblocks; ++b) {
+      t.integer("entity dimension");
+      t.integer("entity tag");
+      const long long param = t.integer("parametric flag"), cnt = t.integer("nodes in block");
+      if (param != 0) fail(t.where() + ": parametric nodes not supported");
+      t.checkCount(cnt, 8, "nodes in the block");
+      std::vector<long long> tags(cnt);
+      for (auto& g : tags) g = t.integer("node tag");
+      for (long long i = 0; i < cnt; ++i) addNode(tags[i], point());
+    }
+  }
+  int nodesOfType(long long type) {
+    const int nn = gmshNodesOf(type);
+    if (nn < 0) fail(t.where() + ": unsupported element type " + std::to_string(type));
+    return nn;
+  }
+  void elements22() {
+    const long long n = t.integer("number of elements");
+    t.checkCount(n, 8, "elements");
+    for (long long i = 0; i < n; ++i) {
+      t.integer("element tag");
+      const long long type = t.integer("element type"), ntags = t.integer("number of tags");
+      t.checkCount(ntags, 2, "element tags");
+      for (long long k = 0; k < ntags; ++k) t.integer("element tag value");
+      std::vector<long long> tags(nodesOfType(type));
+      for (auto& g : tags) g = t.integer("element node");
+      addElement(type, tags);
+    }
+  }
+  void elements41() {
+    const long long nblocks = t.integer("number of element blocks");
+    t.integer("number of elements");
+    t.integer("min element tag");
+    t.integer("max element tag");
+    t.checkCount(nblocks, 8, "element blocks");
+    for (long long b = 0; b < nblocks; ++b) {
+      t.integer("entity dimension");
+      t.integer("entity tag");
+      const long long type = t.integer("element type"), cnt = t.integer("elements in block");
+      const int nn = nodesOfType(type);
+      t.checkCount(cnt, 2 * (1 + nn), "elements in the block");
+      std::vector<long long> tags(nn);
+      for (long long i = 0; i < cnt; ++i) {
+        t.integer("element tag");
+        for (auto& g : tags) g = t.integer("element node");
+        addElement(type, tags);
+      }
+    }
+  }
+};
+} // namespace
+
+TetMesh parseGmsh(const std::string& content, const std::string& name) {
+  Tokens t(content, name, false);
+  t.expect("$MeshFormat");
+  const double version = t.real("format version");
+  const long long ftype = t.integer("file type");
+  t.integer("data size");
+  if (!((version == 2.2 || version == 4.1) && ftype == 0))
+    fail(name + ": Gmsh format " + std::to_string(version) + " (file type " + std::to_string(ftype) +
+         ") not supported; use ASCII 2.2 or 4.1");
+  t.expect("$EndMeshFormat");
+  GmshReader r{t};
+  bool have_nodes = false;
   std::string tok;
   while (t.next(&tok)) {
     if (tok == "$Nodes") {
       have_nodes = true;
-      if (version == 2.2) {
-        const long long n = t.integer("number of nodes");
-        t.checkCount(n, 8, "nodes");
-        for (long long i = 0; i < n; ++i) {
-          const long long tag = t.integer("node tag");
-          std::array<double, 3> x;
-          for (int c = 0; c < 3; ++c) x[c] = t.real("coordinate");
-          addNode(tag, x);
-        }
-      } else {
-        const long long nblocks = t.integer("number of node blocks");
-        t.integer("number of nodes");
-        t.integer("min node tag");
-        t.integer("max node tag");
-        t.checkCount(nblocks, 8, "node blocks");
-        for (long long b = 0; b < nblocks; ++b) {
-          t.integer("entity dimension");
-          t.integer("entity tag");
-          const long long param = t.integer("parametric flag"), cnt = t.integer("nodes in block");
-          if (param != 0) fail(t.where() + ": parametric nodes not supported");
-          t.checkCount(cnt, 8, "nodes in the block");
-          std::vector<long long> tags(cnt);
-          for (auto& g : tags) g = t.integer("node tag");
-          for (long long i = 0; i < cnt; ++i) {
-            std::array<double, 3> x;
-            for (int c = 0; c < 3; ++c) x[c] = t.real("coordinate");
-            addNode(tags[i], x);
-          }
-        }
-      }
+      version == 2.2 ? r.nodes22() : r.nodes41();
       t.expect("$EndNodes");
     } else if (tok == "$Elements") {
       if (!have_nodes) fail(t.where() + ": $Elements before $Nodes");
-      if (version == 2.2) {
-        const long long n = t.integer("number of elements");
-        t.checkCount(n, 8, "elements");
-        for (long long i = 0; i < n; ++i) {
-          t.integer("element tag");
-          const long long type = t.integer("element type"), ntags = t.integer("number of tags");
-          t.checkCount(ntags, 2, "element tags");
-          for (long long k = 0; k < ntags; ++k) t.integer("element tag value");
-          const int nn = gmshNodesOf(type);
-          if (nn < 0) fail(t.where() + ": unsupported element type " + std::to_string(type));
-          std::vector<long long> tags(nn);
-          for (auto& g : tags) g = t.integer("element node");
-          addElement(type, tags);
-        }
-      } else {
-        const long long nblocks = t.integer("number of element blocks");
-        t.integer("number of elements");
-        t.integer("min element tag");
-        t.integer("max element tag");
-        t.checkCount(nblocks, 8, "element blocks");
-        for (long long b = 0; b < nblocks; ++b) {
-          t.integer("entity dimension");
-          t.integer("entity tag");
-          const long long type = t.integer("element type"), cnt = t.integer("elements in block");
-          const int nn = gmshNodesOf(type);
-          if (nn < 0) fail(t.where() + ": unsupported element type " + std::to_string(type));
-          t.checkCount(cnt, 2 * (1 + nn), "elements in the block");
-          std::vector<long long> tags(nn);
-          for (long long i = 0; i < cnt; ++i) {
-            t.integer("element tag");
-            for (auto& g : tags) g = t.integer("element node");
-            addElement(type, tags);
-          }
-        }
-      }
+      version == 2.2 ? r.elements22() : r.elements41();
       t.expect("$EndElements");
     } else if (!tok.empty() && tok[0] == '$' && tok.rfind("$End", 0) != 0) {
       const std::string end = "$End" + tok.substr(1); // skip an unknown section
@@ -289,15 +304,17 @@ TetMesh parseGmsh(const std::string& content, const std::string& name) {
       fail(t.where() + ": unexpected '" + tok.substr(0, 40) + "'");
     }
   }
-  if (tets.empty()) fail(name + ": no tetrahedra (Gmsh types 4 or 11) in the file");
-  mesh.nodes_per_elem = p2 ? 10 : 4;
-  mesh.elems = std::move(tets);
-  return mesh;
+  if (r.tets.empty()) fail(name + ": no tetrahedra (Gmsh types 4 or 11) in the file");
+  r.mesh.nodes_per_elem = r.p2 ? 10 : 4;
+  r.mesh.elems = std::move(r.tets);
+  return std::move(r.mesh);
 }
 
-SymCsc parseMatrixMarket(const std::string& content, const std::string& name, MatrixMarketInfo* info) {
-  std::istringstream in(content);
-  std::string line, banner, object, format;
+namespace {
+// The banner "%%MatrixMarket matrix coordinate <field> <symmetry>" (case-insensitive) into info; line: its text.
+void parseMatrixMarketBanner(std::istringstream& in, const std::string& name, std::string& line,
+                             MatrixMarketInfo* info) {
+  std::string banner, object, format;
   if (!std::getline(in, line)) fail(name + ": empty file");
   {
     std::istringstream s(line);
@@ -311,6 +328,12 @@ SymCsc parseMatrixMarket(const std::string& content, const std::string& name, Ma
     fail(name + ": field '" + info->field.substr(0, 40) + "' not supported (real|integer|pattern)");
   if (!(info->symmetry == "symmetric" || info->symmetry == "general"))
     fail(name + ": symmetry '" + info->symmetry.substr(0, 40) + "' not supported (symmetric|general)");
+}
+
+// After the comments, the size line "rows cols entries" (a square matrix, sizes a file of `bytes` can hold);
+// returns its line number.
+int parseMatrixMarketSize(std::istringstream& in, const std::string& name, long long bytes, std::string& line,
+                          MatrixMarketInfo* info) {
   int lineno = 1;
   while (std::getline(in, line)) {
     ++lineno;
@@ -325,25 +348,32 @@ SymCsc parseMatrixMarket(const std::string& content, const std::string& name, Ma
   }
   // Hostile sizes: every entry takes >= 4 bytes of the file; the order n is bounded by the file size too
   // (a Matrix Market file of order n describes n columns: we allocate O(n + entries)).
-  const long long bytes = static_cast<long long>(content.size());
   if (info->entries > bytes / 4 || info->rows > 64 * bytes + 1024 || info->rows > (1LL << 31) - 2)
     fail(name + " line " + std::to_string(lineno) + ": size line claims " + std::to_string(info->rows) +
          " rows and " + std::to_string(info->entries) + " entries, more than a " + std::to_string(bytes) +
          "-byte file can hold");
-  const int n = static_cast<int>(info->rows);
-  const bool pattern = info->field == "pattern";
-  struct Entry {
-    int col, row;
-    double v;
-    bool upper_given; // value from an upper (or symmetric) entry
-  };
-  std::vector<Entry> ent;
-  ent.reserve(static_cast<size_t>(info->entries) + n);
+  return lineno;
+}
+
+struct MatrixMarketEntry {
+  int col, row;
+  double v;
+  bool upper_given; // value from an upper (or symmetric) entry
+};
+
+// The structural diagonal, then the entries as (column, row) of the upper triangle.
+std::vector<MatrixMarketEntry> parseMatrixMarketEntries(std::istringstream& in, const std::string& name,
+                                                        int lineno, std::string& line,
+                                                        const MatrixMarketInfo& info) {
+  const int n = static_cast<int>(info.rows);
+  const bool pattern = info.field == "pattern";
+  std::vector<MatrixMarketEntry> ent;
+  ent.reserve(static_cast<size_t>(info.entries) + n);
   for (int c = 0; c < n; ++c) ent.push_back({c, c, 0.0, false}); // structural diagonal
-  for (long long k = 0; k < info->entries; ++k) {
+  for (long long k = 0; k < info.entries; ++k) {
     if (!std::getline(in, line))
       fail(name + ": truncated after line " + std::to_string(lineno) + " (" + std::to_string(k) + " of " +
-           std::to_string(info->entries) + " entries)");
+           std::to_string(info.entries) + " entries)");
     ++lineno;
     std::istringstream s(line);
     long long i, j;
@@ -354,11 +384,15 @@ SymCsc parseMatrixMarket(const std::string& content, const std::string& name, Ma
       fail(name + " line " + std::to_string(lineno) + ": index (" + std::to_string(i) + ", " +
            std::to_string(j) + ") outside 1.." + std::to_string(n));
     const int r = static_cast<int>(std::min(i, j)) - 1, c = static_cast<int>(std::max(i, j)) - 1;
-    const bool upper = !(info->symmetry == "general" && i > j); // general lower entry: pattern of A^T only
+    const bool upper = !(info.symmetry == "general" && i > j); // general lower entry: pattern of A^T only
     ent.push_back({c, r, upper ? v : 0.0, upper});
   }
-  // Sort by (column, row); duplicates: the last given upper value wins (as the map-based reader did).
-  std::stable_sort(ent.begin(), ent.end(), [](const Entry& a, const Entry& b) {
+  return ent;
+}
+
+// Sort by (column, row); duplicates: the last given upper value wins (as the map-based reader did).
+SymCsc matrixMarketCsc(std::vector<MatrixMarketEntry>& ent, int n) {
+  std::stable_sort(ent.begin(), ent.end(), [](const MatrixMarketEntry& a, const MatrixMarketEntry& b) {
     return a.col != b.col ? a.col < b.col : a.row < b.row;
   });
   SymCsc A;
@@ -378,6 +412,16 @@ SymCsc parseMatrixMarket(const std::string& content, const std::string& name, Ma
   }
   for (int c = 0; c < n; ++c) A.colptr[c + 1] += A.colptr[c];
   return A;
+}
+} // namespace
+
+SymCsc parseMatrixMarket(const std::string& content, const std::string& name, MatrixMarketInfo* info) {
+  std::istringstream in(content);
+  std::string line;
+  parseMatrixMarketBanner(in, name, line, info);
+  const int lineno = parseMatrixMarketSize(in, name, static_cast<long long>(content.size()), line, info);
+  std::vector<MatrixMarketEntry> ent = parseMatrixMarketEntries(in, name, lineno, line, *info);
+  return matrixMarketCsc(ent, static_cast<int>(info->rows));
 }
 
 } // namespace suite::fem

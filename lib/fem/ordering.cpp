@@ -2,6 +2,10 @@
 // that -help prints under -ordering).
 #include "fem/ordering.hpp"
 
+#include "fem/cpu_timer.hpp"
+
+#include <algorithm>
+
 #include <numeric>
 
 namespace suite::fem {
@@ -47,6 +51,16 @@ PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* 
   for (const auto& e : kOrderings)
     if (name == e.name) *fn = e.fn;
   PetscFunctionReturn(0);
+}
+
+double timeOrdering(OrderingFn fn, const Graph& g, int repeat, std::vector<int>* perm) {
+  double best = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    const double t0 = threadCpuSeconds();
+    *perm = fn(g);
+    best = std::min(best, threadCpuSeconds() - t0);
+  }
+  return best;
 }
 
 } // namespace suite::fem

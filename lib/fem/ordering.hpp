@@ -31,5 +31,11 @@ std::vector<std::string> orderingNames(); // natural cm rcm amd metis auto
 std::vector<suite::Choice> orderingChoices();
 // Collective error naming the known orderings on an unknown name.
 PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* fn);
+// *perm = fn(g), run `repeat` times: the minimum thread CPU time of one run, in seconds.
+double timeOrdering(OrderingFn fn, const Graph& g, int repeat, std::vector<int>* perm);
+
+// The profile of OrderingMetrics, as the outputs describe it.
+inline constexpr char kProfileDefinition[] = "sum_i (i - f_i), f_i = first nonzero column of row i of the "
+                                             "permuted lower triangle (diagonal excluded)";
 
 } // namespace suite::fem
