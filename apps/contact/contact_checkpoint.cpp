@@ -26,6 +26,24 @@ suite::CheckpointField field(MPI_Comm comm, const std::string& name, unsigned lo
   return suite::CheckpointField{name, {rows, cols}, {0, 0}, {own, cols}, data};
 }
 
+// Rows of the checkpoint's contact table (checked: a contact checkpoint with a sane table shape).
+PetscErrorCode contactRows(MPI_Comm comm, const std::string& path, unsigned long long* rows) {
+  suite::H5Input in;
+  bool has = false;
+  suite::Dims d;
+  PetscFunctionBeginUser;
+  PetscCall(in.open(comm, path));
+  PetscCall(in.hasObject("/fields/contacts", &has));
+  PetscCheck(has, comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart %s: no /fields/contacts (not a contact checkpoint)", path.c_str());
+  PetscCall(in.datasetDims("/fields/contacts", &d));
+  PetscCheck(d.size() == 2 && d[0] >= 1 && d[1] == 8 && d[0] <= 100000000ULL, comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart %s: /fields/contacts has a bad shape", path.c_str());
+  *rows = d[0];
+  PetscCall(in.close());
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode writeContactCheckpoint(MPI_Comm comm, const std::string& path, const std::string& scheme,
@@ -53,20 +71,7 @@ PetscErrorCode readContactCheckpoint(MPI_Comm comm, const std::string& path, con
   PetscFunctionBeginUser;
   const int nb = (int)bodies->size();
   unsigned long long rows = 0;
-  {
-    suite::H5Input in;
-    PetscCall(in.open(comm, path));
-    bool has = false;
-    PetscCall(in.hasObject("/fields/contacts", &has));
-    PetscCheck(has, comm, PETSC_ERR_FILE_UNEXPECTED,
-               "restart %s: no /fields/contacts (not a contact checkpoint)", path.c_str());
-    suite::Dims d;
-    PetscCall(in.datasetDims("/fields/contacts", &d));
-    PetscCheck(d.size() == 2 && d[0] >= 1 && d[1] == 8 && d[0] <= 100000000ULL, comm,
-               PETSC_ERR_FILE_UNEXPECTED, "restart %s: /fields/contacts has a bad shape", path.c_str());
-    rows = d[0];
-    PetscCall(in.close());
-  }
+  PetscCall(contactRows(comm, path, &rows));
   std::vector<double> b(nb * kStateSize), sleep(2 * nb), contacts(rows * 8);
   suite::CheckpointHeader expected{"contact", scheme, 0, 0.0, dt, {(long long)nb}}, found;
   PetscCall(suite::readCheckpoint(comm, path, expected, &found,
