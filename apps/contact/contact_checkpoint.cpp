@@ -17,8 +17,6 @@ std::string checkpointScheme(const std::string& scene, FrictionModel f) {
 
 namespace {
 
-constexpr int kBody = 13; // x (3), q (x, y, z, w), v (3), w (3)
-
 // Replicated array of shape {rows, cols}: rank 0 owns all of it.
 suite::CheckpointField field(MPI_Comm comm, const std::string& name, unsigned long long rows,
                              unsigned long long cols, double* data) {
@@ -28,6 +26,24 @@ suite::CheckpointField field(MPI_Comm comm, const std::string& name, unsigned lo
   return suite::CheckpointField{name, {rows, cols}, {0, 0}, {own, cols}, data};
 }
 
+// Rows of the checkpoint's contact table (checked: a contact checkpoint with a sane table shape).
+PetscErrorCode contactRows(MPI_Comm comm, const std::string& path, unsigned long long* rows) {
+  suite::H5Input in;
+  bool has = false;
+  suite::Dims d;
+  PetscFunctionBeginUser;
+  PetscCall(in.open(comm, path));
+  PetscCall(in.hasObject("/fields/contacts", &has));
+  PetscCheck(has, comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart %s: no /fields/contacts (not a contact checkpoint)", path.c_str());
+  PetscCall(in.datasetDims("/fields/contacts", &d));
+  PetscCheck(d.size() == 2 && d[0] >= 1 && d[1] == 8 && d[0] <= 100000000ULL, comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart %s: /fields/contacts has a bad shape", path.c_str());
+  *rows = d[0];
+  PetscCall(in.close());
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode writeContactCheckpoint(MPI_Comm comm, const std::string& path, const std::string& scheme,
@@ -35,21 +51,15 @@ PetscErrorCode writeContactCheckpoint(MPI_Comm comm, const std::string& path, co
                                       const Stepper& stepper) {
   PetscFunctionBeginUser;
   const int nb = (int)bodies.size();
-  std::vector<double> b(std::max(1, nb * kBody)), sleep, contacts;
-  for (int i = 0; i < nb; ++i) {
-    const Body& B = bodies[i];
-    double* r = &b[i * kBody];
-    const double v[kBody] = {B.x.x(), B.x.y(), B.x.z(), B.q.x(), B.q.y(), B.q.z(), B.q.w(),
-                             B.v.x(), B.v.y(), B.v.z(), B.w.x(), B.w.y(), B.w.z()};
-    std::copy(v, v + kBody, r);
-  }
+  std::vector<double> b(std::max(1, nb * kStateSize)), sleep, contacts;
+  for (int i = 0; i < nb; ++i) packState(bodies[i], &b[i * kStateSize]);
   stepper.exportState(nb, &sleep, &contacts);
   const unsigned long long nc = contacts.size() / 8;
   contacts.insert(contacts.begin(), 8, 0.0);
   contacts[0] = (double)nc;
   suite::CheckpointHeader h{"contact", scheme, step, time, dt, {(long long)nb}};
   PetscCall(suite::writeCheckpoint(comm, path, h,
-                                   {field(comm, "bodies", nb, kBody, b.data()),
+                                   {field(comm, "bodies", nb, kStateSize, b.data()),
                                     field(comm, "sleep", nb, 2, sleep.data()),
                                     field(comm, "contacts", nc + 1, 8, contacts.data())}));
   PetscFunctionReturn(0);
@@ -61,24 +71,11 @@ PetscErrorCode readContactCheckpoint(MPI_Comm comm, const std::string& path, con
   PetscFunctionBeginUser;
   const int nb = (int)bodies->size();
   unsigned long long rows = 0;
-  {
-    suite::H5Input in;
-    PetscCall(in.open(comm, path));
-    bool has = false;
-    PetscCall(in.hasObject("/fields/contacts", &has));
-    PetscCheck(has, comm, PETSC_ERR_FILE_UNEXPECTED,
-               "restart %s: no /fields/contacts (not a contact checkpoint)", path.c_str());
-    suite::Dims d;
-    PetscCall(in.datasetDims("/fields/contacts", &d));
-    PetscCheck(d.size() == 2 && d[0] >= 1 && d[1] == 8 && d[0] <= 100000000ULL, comm,
-               PETSC_ERR_FILE_UNEXPECTED, "restart %s: /fields/contacts has a bad shape", path.c_str());
-    rows = d[0];
-    PetscCall(in.close());
-  }
-  std::vector<double> b(nb * kBody), sleep(2 * nb), contacts(rows * 8);
+  PetscCall(contactRows(comm, path, &rows));
+  std::vector<double> b(nb * kStateSize), sleep(2 * nb), contacts(rows * 8);
   suite::CheckpointHeader expected{"contact", scheme, 0, 0.0, dt, {(long long)nb}}, found;
   PetscCall(suite::readCheckpoint(comm, path, expected, &found,
-                                  {field(comm, "bodies", nb, kBody, b.data()),
+                                  {field(comm, "bodies", nb, kStateSize, b.data()),
                                    field(comm, "sleep", nb, 2, sleep.data()),
                                    field(comm, "contacts", rows, 8, contacts.data())}));
   PetscCallMPI(MPI_Bcast(b.data(), (int)b.size(), MPI_DOUBLE, 0, comm));
@@ -92,14 +89,7 @@ PetscErrorCode readContactCheckpoint(MPI_Comm comm, const std::string& path, con
   bool finite = true;
   for (double v : b) finite = finite && std::isfinite(v);
   PetscCheck(finite, comm, PETSC_ERR_FILE_UNEXPECTED, "restart %s: non-finite body state", path.c_str());
-  for (int i = 0; i < nb; ++i) {
-    Body& B = (*bodies)[i];
-    const double* r = &b[i * kBody];
-    B.x = Vec3(r[0], r[1], r[2]);
-    B.q = Quat(r[6], r[3], r[4], r[5]); // Eigen: (w, x, y, z)
-    B.v = Vec3(r[7], r[8], r[9]);
-    B.w = Vec3(r[10], r[11], r[12]);
-  }
+  for (int i = 0; i < nb; ++i) unpackState(&b[i * kStateSize], &(*bodies)[i]);
   std::string err;
   try {
     stepper->importState(nb, sleep, std::vector<double>(contacts.begin() + 8, contacts.end()));

@@ -4,29 +4,13 @@
 #include "contact/friction_formulation.hpp"
 #include "contact/lemke_rf.hpp"
 #include "core/named_choice.hpp"
-#include "lcp/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace contact_app {
 
 namespace {
-
-std::vector<std::string> splitList(const std::string& s) {
-  std::vector<std::string> v;
-  std::stringstream ss(s);
-  std::string tok;
-  while (std::getline(ss, tok, ','))
-    if (!tok.empty() && tok != "none") v.push_back(tok);
-  return v;
-}
-
-std::string joinList(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
-  return s;
-}
 
 // One-line option declarations inside the PetscOptionsBegin/End block (each documented by -help).
 struct Reader {
@@ -56,6 +40,15 @@ struct Reader {
     *v = buf;
     PetscFunctionReturn(0);
   }
+  // A list of solvers (contactSolverChoices); 'none' entries are dropped ('none' alone: the empty list).
+  PetscErrorCode solvers(const char* name, const char* text, bool none, std::vector<std::string>* v) const {
+    std::vector<suite::Choice> choices = contactSolverChoices();
+    PetscFunctionBeginUser;
+    if (none) choices.push_back({"none", "no solver (alone: the empty list)"});
+    PetscCall(suite::optionsChoiceList(po, name, text, choices, v));
+    v->erase(std::remove(v->begin(), v->end(), "none"), v->end());
+    PetscFunctionReturn(0);
+  }
 };
 
 PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
@@ -82,23 +75,23 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
 
 // Friction model and the LCP solvers.
 PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
-  std::string friction = frictionName(t->friction), fallback = joinList(t->fallback_solvers),
-              poly = joinList(t->polyhedral_solvers);
+  std::string friction = frictionName(t->friction);
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoice(r.po, "-friction", "Friction model", frictionChoices(), &friction));
   PetscCheck(frictionFromName(friction, &t->friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model", friction.c_str());
   PetscCall(r.real("-mu", "Friction coefficient", &t->mu));
-  PetscCall(r.string("-lcp_solver", "LCP solver (lib/lcp registry)", &t->lcp_solver));
+  PetscCall(suite::optionsChoice(r.po, "-lcp_solver", "LCP solver", contactSolverChoices(), &t->lcp_solver));
   PetscCall(
-      r.string("-fallback_solvers", "Comma list tried when the solver fails ('none': stop)", &fallback));
+      r.solvers("-fallback_solvers", "Solvers tried when the solver fails", true, &t->fallback_solvers));
   PetscCall(r.real("-lcp_tol", "Acceptance: natural-map residual <= tol (1 + |q|_inf)", &t->lcp_tol));
   PetscCall(r.integer("-lcp_max_iterations", "Iteration cap of the primary LCP solver (0: its default)",
                       &t->lcp_max_iterations));
-  PetscCall(r.string("-polyhedral_solvers",
-                     "Polyhedral: solver chain, first the reference (each answer verified)", &poly));
-  t->fallback_solvers = splitList(fallback);
-  t->polyhedral_solvers = splitList(poly);
+  PetscCall(r.solvers("-polyhedral_solvers",
+                      "Polyhedral: solver chain, first the reference (each answer verified)", false,
+                      &t->polyhedral_solvers));
+  PetscCheck(!t->polyhedral_solvers.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-polyhedral_solvers: needs at least one solver");
   PetscFunctionReturn(0);
 }
 
@@ -140,64 +133,61 @@ PetscErrorCode runOptions(const Reader& r, AppOptions* o) {
   PetscCall(r.integer("-steps", "Number of steps", &o->steps));
   PetscCall(r.real("-overlap_tol", "Largest allowed overlap of static bodies (m)", &o->overlap_tol));
   PetscCall(r.integer("-output_every", "Frame interval in steps", &o->output_every));
-  PetscCall(PetscOptionsString_Private(r.po, "-output", "HDF5 output file", nullptr, o->output, o->output,
-                                       sizeof o->output, nullptr));
-  PetscCall(PetscOptionsString_Private(r.po, "-dump_problems",
-                                       "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5", nullptr,
-                                       o->dump, o->dump, sizeof o->dump, nullptr));
+  PetscCall(r.string("-output", "HDF5 output file", &o->output));
+  PetscCall(
+      r.string("-dump_problems", "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5", &o->dump));
   PetscCall(r.integer("-dump_max", "Most problems dumped", &o->dump_max));
   PetscFunctionReturn(0);
 }
 
-// Every solver name known (lib/lcp's registry or the contact library's own).
-PetscErrorCode checkSolvers(MPI_Comm comm, const StepperOptions& t) {
-  std::string names;
+// A numeric option's range check: lo < (or <=) value < (or <=) hi; hi = inf reads "must be > lo" (">= lo"), and
+// an open infinite bound rejects inf. NaN fails every range.
+struct Range {
+  const char* option;
+  double value;
+  char lo_bracket; // '(' open, '[' closed
+  double lo, hi;
+  char hi_bracket; // ')' open, ']' closed
+  bool integer = false;
+};
+
+PetscErrorCode checkRange(MPI_Comm comm, const Range& c) {
+  const bool ok = (c.lo_bracket == '(' ? c.value > c.lo : c.value >= c.lo) &&
+                  (c.hi_bracket == ')' ? c.value < c.hi : c.value <= c.hi);
+  char value[64], rule[64];
+  std::snprintf(value, sizeof value, c.integer ? "%.0f" : "%g", c.value);
+  if (std::isinf(c.hi))
+    std::snprintf(rule, sizeof rule, c.lo_bracket == '(' ? "> %g" : ">= %g", c.lo);
+  else
+    std::snprintf(rule, sizeof rule, "in %c%g, %g%c", c.lo_bracket, c.lo, c.hi, c.hi_bracket);
   PetscFunctionBeginUser;
-  for (auto& n : suite::lcp::solverNames()) names += (names.empty() ? "" : ", ") + n;
-  PetscCheck(makeContactSolver(t.lcp_solver) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-lcp_solver %s: unknown solver (%s)", t.lcp_solver.c_str(), names.c_str());
-  PetscCheck(!t.polyhedral_solvers.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-polyhedral_solvers: needs at least one solver");
-  for (const auto& n : t.polyhedral_solvers)
-    PetscCheck(makeContactSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-polyhedral_solvers: unknown solver %s (%s, lemke_rf)", n.c_str(), names.c_str());
-  for (const auto& n : t.fallback_solvers)
-    PetscCheck(makeContactSolver(n) != nullptr, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-fallback_solvers: unknown solver %s (%s)", n.c_str(), names.c_str());
+  PetscCheck(ok, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: must be %s", c.option, value, rule);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
   const StepperOptions& t = o.step;
+  const double inf = INFINITY;
+  const Range ranges[] = {
+      {"-lcp_tol", t.lcp_tol, '(', 0, 1, ')'},
+      {"-mu", t.mu, '[', 0, inf, ')'},
+      {"-dt", t.dt, '(', 0, inf, ')'},
+      {"-steps", (double)o.steps, '[', 0, inf, ']', true},
+      {"-gravity", -t.gravity.z(), '[', 0, inf, ')'},
+      {"-baumgarte", t.baumgarte, '(', 0, 1, ']'},
+      {"-regularisation", t.regularisation, '[', 0, inf, ']'},
+      {"-regularisation_t", t.regularisation_t, '[', 0, inf, ']'},
+      {"-margin", t.margin, '[', 0, inf, ']'},
+      {"-splitting_max_it", (double)t.splitting_max_it, '[', 1, inf, ']', true},
+      {"-splitting_tol", t.splitting_tol, '(', 0, inf, ']'},
+      {"-polyhedral_directions", (double)t.polyhedral_directions, '[', 3, inf, ']', true},
+      {"-output_every", (double)o.output_every, '[', 1, inf, ']', true},
+      {"-sleep_velocity", t.sleep_velocity, '(', 0, inf, ']'},
+      {"-sleep_steps", (double)t.sleep_steps, '[', 1, inf, ']', true},
+      {"-overlap_tol", o.overlap_tol, '[', 0, inf, ']'},
+  };
   PetscFunctionBeginUser;
-  PetscCheck(t.lcp_tol > 0 && t.lcp_tol < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-lcp_tol %g: must be in (0, 1)",
-             (double)t.lcp_tol);
-  PetscCheck(t.mu >= 0 && std::isfinite(t.mu), comm, PETSC_ERR_ARG_OUTOFRANGE, "-mu %g: must be >= 0",
-             (double)t.mu);
-  PetscCheck(t.dt > 0 && std::isfinite(t.dt), comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g: must be > 0",
-             (double)t.dt);
-  PetscCheck(o.steps >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-steps %d: must be >= 0", (int)o.steps);
-  const double g = -t.gravity.z();
-  PetscCheck(g >= 0 && std::isfinite(g), comm, PETSC_ERR_ARG_OUTOFRANGE, "-gravity %g: must be >= 0", g);
-  PetscCheck(t.baumgarte > 0 && t.baumgarte <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-baumgarte %g: must be in (0, 1]", (double)t.baumgarte);
-  PetscCheck(t.regularisation >= 0 && t.regularisation_t >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-regularisation %g / -regularisation_t %g: must be >= 0", (double)t.regularisation,
-             (double)t.regularisation_t);
-  PetscCheck(t.margin >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-margin %g: must be >= 0", (double)t.margin);
-  PetscCheck(t.splitting_max_it >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-splitting_max_it %d: must be >= 1",
-             t.splitting_max_it);
-  PetscCheck(t.splitting_tol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-splitting_tol %g: must be > 0",
-             (double)t.splitting_tol);
-  PetscCheck(t.polyhedral_directions >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-polyhedral_directions %d: must be >= 3", t.polyhedral_directions);
-  PetscCheck(o.output_every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %d: must be >= 1",
-             (int)o.output_every);
-  PetscCheck(t.sleep_velocity > 0 && t.sleep_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-sleep_velocity %g / -sleep_steps %d: must be > 0 / >= 1", (double)t.sleep_velocity,
-             t.sleep_steps);
-  PetscCheck(o.overlap_tol >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-overlap_tol %g: must be >= 0",
-             (double)o.overlap_tol);
+  for (const Range& c : ranges) PetscCall(checkRange(comm, c));
   PetscFunctionReturn(0);
 }
 
@@ -212,24 +202,8 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   PetscCall(stepperOptions(r, comm, &o->step));
   PetscCall(runOptions(r, o));
   PetscOptionsEnd();
-  PetscCall(checkSolvers(comm, o->step));
   PetscCall(checkRanges(comm, *o));
   PetscFunctionReturn(0);
-}
-
-std::string simplifications(const AppOptions& o, const std::vector<Body>& bodies) {
-  std::string s;
-  if (o.step.mu == 0 || o.step.friction == FrictionModel::None)
-    s += "no friction rows (plain LCP); ";
-  else if (o.step.friction != FrictionModel::Polyhedral)
-    s += "box friction (per-direction bounds, not a cone); ";
-  bool cyl = false;
-  for (const Body& b : bodies) cyl = cyl || b.shape.type == ShapeType::Cylinder;
-  if (cyl) s += "cylinders act as capsules except against planes; ";
-  s += "zero-bound tangent rows left out; ";
-  s += o.step.sleep ? "sleeping on (bodies at rest are frozen, contacts among them not solved)"
-                    : "sleeping off (every contact is solved each step)";
-  return s;
 }
 
 } // namespace contact_app

@@ -8,7 +8,6 @@
 #include <petscsys.h>
 
 #include <string>
-#include <vector>
 
 namespace contact_app {
 
@@ -19,12 +18,9 @@ struct AppOptions {
   StepperOptions step;
   PetscInt steps = 200, output_every = 10, dump_max = 1000;
   PetscReal overlap_tol = 1e-3;
-  char output[PETSC_MAX_PATH_LEN] = "contact.h5";
-  char dump[PETSC_MAX_PATH_LEN] = "";
+  std::string output = "contact.h5", dump; // dump: -dump_problems prefix ("": none)
 };
 
 PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o);
-// The model simplifications this run makes (written to the output and the log).
-std::string simplifications(const AppOptions& o, const std::vector<Body>& bodies);
 
 } // namespace contact_app

@@ -6,115 +6,24 @@
 
 namespace suite::contact {
 
-namespace {
-PetscErrorCode writeBodies(H5Output& out, const std::vector<Body>& bodies) {
-  using U = unsigned long long;
-  const U nb = bodies.size();
-  std::vector<int> type(nb), is_static(nb);
-  std::vector<double> dims(nb * 4), mass(nb);
-  std::string names;
-  PetscFunctionBeginUser;
-  for (U i = 0; i < nb; ++i) {
-    const Body& b = bodies[i];
-    type[i] = (int)b.shape.type;
-    is_static[i] = b.is_static;
-    dims[4 * i + 0] = b.shape.radius;
-    dims[4 * i + 1] = b.shape.half_length;
-    dims[4 * i + 2] = b.shape.half.x();
-    dims[4 * i + 3] = b.shape.half.y();
-    mass[i] = b.mass;
-    names += (i ? "," : "") + b.name;
-  }
-  if (nb) {
-    PetscCall(out.writeReplicated("/bodies/type", type.data(), {nb}, ""));
-    PetscCall(out.writeReplicated("/bodies/static", is_static.data(), {nb}, ""));
-    PetscCall(out.writeReplicated("/bodies/radius_halflength_halfx_halfy", dims.data(), {nb, 4}, "m"));
-    PetscCall(out.writeReplicated("/bodies/mass", mass.data(), {nb}, "kg"));
-  }
-  PetscCall(out.writeAttribute("/bodies", "names", names));
-  PetscCall(out.writeAttribute("/bodies", "types", "0 plane, 1 sphere, 2 box, 3 capsule, 4 cylinder"));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode writeFrames(H5Output& out, unsigned long long nb, const Recorder& rec) {
-  const unsigned long long nf = rec.frame_time.size();
-  PetscFunctionBeginUser;
-  if (nf) {
-    PetscCall(out.writeReplicated("/frames/time", rec.frame_time.data(), {nf}, "s"));
-    PetscCall(out.writeReplicated("/frames/step", rec.frame_step.data(), {nf}, ""));
-    PetscCall(out.writeReplicated("/frames/positions", rec.pos.data(), {nf, nb, 3}, "m"));
-    PetscCall(out.writeReplicated("/frames/orientations", rec.quat.data(), {nf, nb, 4}, ""));
-    PetscCall(out.writeReplicated("/frames/velocities", rec.vel.data(), {nf, nb, 6}, "m/s, rad/s"));
-  }
-  PetscCall(out.writeAttribute("/frames", "orientations", "unit quaternions w, x, y, z (body to world)"));
-  PetscCall(out.writeAttribute("/frames", "velocities", "vx, vy, vz (m/s), wx, wy, wz (rad/s), world frame"));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
-  const unsigned long long ns = rec.time.size();
-  PetscFunctionBeginUser;
-  if (ns) {
-    PetscCall(out.writeReplicated("/steps/time", rec.time.data(), {ns}, "s"));
-    PetscCall(out.writeReplicated("/steps/contacts", rec.contacts.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/rows", rec.rows.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/sleeping", rec.sleeping.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/force_ratio", rec.force_ratio.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/cone_violation", rec.cone_violation.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/solver", rec.solver_index.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/iterations", rec.iterations.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/pivots", rec.pivots.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/fallbacks", rec.fallbacks.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/residual", rec.residual.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/splitting_iterations", rec.splitting_iterations.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/splitting_error", rec.splitting_error.data(), {ns}, "N s"));
-    PetscCall(out.writeReplicated("/steps/energy", rec.energy.data(), {ns}, "J"));
-    PetscCall(out.writeReplicated("/steps/wall_time", rec.step_wall.data(), {ns}, "s"));
-  }
-  std::string sn;
-  for (size_t k = 0; k < rec.solver_names.size(); ++k) sn += (k ? "," : "") + rec.solver_names[k];
-  PetscCall(out.writeAttribute("/steps", "solver_names", sn));
-  PetscCall(out.writeAttribute("/steps", "force_ratio",
-                               "sum over body pairs |sum tangential impulse| / sum normal"));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode writeSplitting(H5Output& out, const Recorder& rec) {
-  const unsigned long long nh = rec.split_errors.size(), ns = rec.time.size();
-  PetscFunctionBeginUser;
-  if (nh) {
-    PetscCall(out.writeReplicated("/splitting/error", rec.split_errors.data(), {nh}, "N s"));
-    PetscCall(out.writeReplicated("/splitting/force_ratio", rec.split_ratios.data(), {nh}, ""));
-    PetscCall(out.writeReplicated("/splitting/offset", rec.split_offset.data(), {ns + 1}, ""));
-    PetscCall(out.writeAttribute("/splitting", "layout",
-                                 "pass k of step s at offset[s] + k; error = max|delta lambda_n| "
-                                 "(pass 1: max lambda_n)"));
-  }
-  PetscFunctionReturn(0);
-}
-} // namespace
-
-PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path,
-                                  const std::vector<Body>& bodies, const Recorder& rec,
-                                  const OutputInfo& info) {
+PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path, const SceneParams& scene,
+                                  const StepperOptions& step, const std::vector<Body>& bodies,
+                                  const Recorder& rec, const RunOutcome& outcome) {
   H5Output out;
   PetscFunctionBeginUser;
   PetscCall(out.open(ctx.comm(), path));
   PetscCall(out.writeProvenance(ctx));
-  PetscCall(out.writeAttribute("/", "scene", info.scene));
-  PetscCall(out.writeAttribute("/", "friction", info.friction));
-  PetscCall(out.writeAttribute("/", "lcp_solver", info.lcp_solver));
-  PetscCall(out.writeAttribute("/", "dt", info.dt));
-  PetscCall(out.writeAttribute("/", "mu", info.mu));
-  PetscCall(out.writeAttribute("/", "theta", info.theta));
-  PetscCall(out.writeAttribute("/", "steps_requested", info.steps_requested));
-  PetscCall(out.writeAttribute("/", "steps", info.steps_done));
-  PetscCall(out.writeAttribute("/", "status", info.status));
-  PetscCall(out.writeAttribute("/", "simplifications", info.simplifications));
-  PetscCall(writeBodies(out, bodies));
-  PetscCall(writeFrames(out, bodies.size(), rec));
-  PetscCall(writeSteps(out, rec));
-  PetscCall(writeSplitting(out, rec));
+  PetscCall(out.writeAttribute("/", "scene", scene.scene));
+  PetscCall(out.writeAttribute("/", "friction", frictionName(step.friction)));
+  PetscCall(out.writeAttribute("/", "lcp_solver", step.lcp_solver));
+  PetscCall(out.writeAttribute("/", "dt", step.dt));
+  PetscCall(out.writeAttribute("/", "mu", step.mu));
+  PetscCall(out.writeAttribute("/", "theta", scene.theta_deg));
+  PetscCall(out.writeAttribute("/", "steps_requested", outcome.steps_requested));
+  PetscCall(out.writeAttribute("/", "steps", outcome.steps_done));
+  PetscCall(out.writeAttribute("/", "status", outcome.status));
+  PetscCall(out.writeAttribute("/", "simplifications", simplifications(step, bodies)));
+  PetscCall(rec.write(out, bodies));
   PetscCall(out.commit(&ctx));
   if (ctx.rank() == 0 && !rec.frame_time.empty())
     writeXdmf(path + ".xmf", path, bodies.size(), rec.frame_time.size(), rec.frame_time);

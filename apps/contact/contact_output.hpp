@@ -1,8 +1,10 @@
-// Output of the contact app: per-frame trajectories, per-step solver statistics, splitting histories,
-// body table, and an XDMF point-cloud sidecar (Polyvertex, one grid per frame) so ParaView plays the scene.
+// Output of the contact app: the run's settings and outcome as root attributes, the record of the run
+// (Recorder::write: bodies, frames, steps, splitting histories), and an XDMF point-cloud sidecar
+// (Polyvertex, one grid per frame) so ParaView plays the scene.
 #pragma once
 
 #include "contact/recorder.hpp"
+#include "contact/scenes.hpp"
 #include "contact/stepper.hpp"
 #include "core/run_context.hpp"
 
@@ -11,14 +13,15 @@
 
 namespace suite::contact {
 
-struct OutputInfo {
-  std::string scene, friction, lcp_solver, status, simplifications;
-  double dt = 0, mu = 0, theta = 0;
+// The run's outcome: "completed", "failed: ..." or "stopped at step N (...)", steps asked for and done.
+struct RunOutcome {
+  std::string status;
   long long steps_requested = 0, steps_done = 0;
 };
 
-PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path,
-                                  const std::vector<Body>& bodies, const Recorder& rec,
-                                  const OutputInfo& info);
+// The settings written are the scene's and the stepper's (friction model, solver, dt, mu, theta).
+PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path, const SceneParams& scene,
+                                  const StepperOptions& step, const std::vector<Body>& bodies,
+                                  const Recorder& rec, const RunOutcome& outcome);
 
 } // namespace suite::contact

@@ -26,10 +26,11 @@ public:
   ContactStepping(const suite::RunContext& ctx, const AppOptions& o, std::vector<Body> bodies)
       : ctx_(ctx), o_(o), bodies_(std::move(bodies)), stepper_(o.step),
         scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
-    stepper_.keepProblems(o.dump[0] != 0);
+    stepper_.keepProblems(!o.dump.empty());
   }
+  // a fresh run's first frame is its step-0 snapshot
   PetscErrorCode start(PetscInt step, double t, bool restarted) override {
-    if (restarted) rec_.frame(bodies_, step, t); // a fresh run's first frame is its step-0 snapshot
+    if (restarted) rec_.frame(bodies_, step, t);
     return 0;
   }
   PetscErrorCode proposeDt(PetscInt, double, double* dt) override {
@@ -86,7 +87,7 @@ PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suit
 // -dump_problems: every problem of the step (one per splitting pass), at most -dump_max in the run.
 PetscErrorCode ContactStepping::dumpProblems(PetscInt step) {
   PetscFunctionBeginUser;
-  if (!o_.dump[0]) PetscFunctionReturn(0);
+  if (o_.dump.empty()) PetscFunctionReturn(0);
   const auto& ps = stepper_.lastProblems();
   for (size_t k = 0; k < ps.size() && dumped_ < o_.dump_max; ++k, ++dumped_) {
     char tag[64];
@@ -100,7 +101,7 @@ PetscErrorCode ContactStepping::dumpProblems(PetscInt step) {
 // A failed step: the bodies are unchanged; its (last) problem is dumped next to the output.
 PetscErrorCode ContactStepping::failed(PetscInt step, const StepStats& st, suite::StepOutcome* out) {
   PetscFunctionBeginUser;
-  std::string dump = std::string(o_.output) + ".failed_step" + std::to_string(step) + ".h5";
+  std::string dump = o_.output + ".failed_step" + std::to_string(step) + ".h5";
   if (!stepper_.lastProblems().empty())
     PetscCall(suite::lcp::writeProblemH5(ctx_.comm(), dump, stepper_.lastProblems().back()));
   else
@@ -117,22 +118,12 @@ PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
   PetscFunctionBeginUser;
   PetscCall(suite::LogStages::get(&stages));
   PetscCall(PetscLogStagePush(stages.output));
-  OutputInfo info{o_.scene.scene,
-                  frictionName(o_.step.friction),
-                  o_.step.lcp_solver,
-                  "completed",
-                  "",
-                  o_.step.dt,
-                  o_.step.mu,
-                  o_.scene.theta_deg,
-                  (long long)o_.steps,
-                  (long long)sum.steps};
-  info.simplifications = simplifications(o_, bodies_);
-  if (sum.failed) info.status = "failed: " + failure_;
-  if (sum.stopped)
-    info.status = "stopped at step " + std::to_string(sum.steps) + " (" + sum.stop_reason + ")";
+  std::string status = "completed";
+  if (sum.failed) status = "failed: " + failure_;
+  if (sum.stopped) status = "stopped at step " + std::to_string(sum.steps) + " (" + sum.stop_reason + ")";
   if (rec_.frame_step.back() != sum.steps) rec_.frame(bodies_, sum.steps, sum.t);
-  PetscCall(writeContactOutput(ctx_, o_.output, bodies_, rec_, info));
+  PetscCall(writeContactOutput(ctx_, o_.output, o_.scene, o_.step, bodies_, rec_,
+                               {status, (long long)o_.steps, (long long)sum.steps}));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }

@@ -2,6 +2,7 @@
 // = cylinder + two hemispheres with the parallel-axis shift of each hemisphere's centroid 3r/8).
 #include "contact/body.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -137,6 +138,19 @@ Body makeBody(const std::string& name, const Shape& shape, double density, doubl
   b.inertia = b.mass * unit_i;
   b.inv_inertia = b.inertia.cwiseInverse();
   return b;
+}
+
+void packState(const Body& b, double* r) {
+  const double v[kStateSize] = {b.x.x(), b.x.y(), b.x.z(), b.q.x(), b.q.y(), b.q.z(), b.q.w(),
+                                b.v.x(), b.v.y(), b.v.z(), b.w.x(), b.w.y(), b.w.z()};
+  std::copy(v, v + kStateSize, r);
+}
+
+void unpackState(const double* r, Body* b) {
+  b->x = Vec3(r[0], r[1], r[2]);
+  b->q = Quat(r[6], r[3], r[4], r[5]); // Eigen: (w, x, y, z)
+  b->v = Vec3(r[7], r[8], r[9]);
+  b->w = Vec3(r[10], r[11], r[12]);
 }
 
 } // namespace suite::contact

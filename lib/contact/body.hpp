@@ -64,4 +64,9 @@ struct Body {
 Body makeBody(const std::string& name, const Shape& shape, double density, double mass, const Vec3& x,
               const Quat& q, bool is_static);
 
+// The dynamic state of a body as kStateSize numbers (checkpoints): x (3), q (x, y, z, w), v (3), w (3).
+constexpr int kStateSize = 13;
+void packState(const Body& b, double* r);
+void unpackState(const double* r, Body* b);
+
 } // namespace suite::contact

@@ -186,13 +186,11 @@ void sphereBox(int a, const Vec3& c, double r, const Body& B, int b, double marg
   push(out, a, b, c - r * n, n, -best - r, feature);
 }
 
-// Box-box: separating axis over the six face axes and the nine edge-edge axes; a face axis gives the incident
-// face clipped by the reference face (up to 4 points), an edge-edge axis one point between the two edges.
-void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) {
-  const Mat3 Ra = A.R(), Rb = B.R();
-  const Vec3 d = B.x - A.x;
+// Face axes of the box-box SAT: the largest separation s over the three face normals of each box (a later axis
+// only when clearly larger); *owner: 0 for A's faces, 1 for B's.
+double faceAxis(const Body& A, const Body& B, const Mat3& Ra, const Mat3& Rb, const Vec3& d, int* owner,
+                int* axis) {
   double best = -INFINITY;
-  int owner = 0, axis = 0;
   for (int o = 0; o < 2; ++o) {
     const Mat3& Ro = o == 0 ? Ra : Rb;
     for (int k = 0; k < 3; ++k) {
@@ -204,13 +202,18 @@ void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) 
       }
       const double s = std::abs(d.dot(L)) - ra - rb;
       const double bias = 1e-9 * (A.shape.half.norm() + B.shape.half.norm());
-      if (s > best + bias) best = s, owner = o, axis = k;
+      if (s > best + bias) best = s, *owner = o, *axis = k;
     }
   }
-  // the nine edge-edge axes (Gottschalk, Lin & Manocha 1996): taken only when clearly better than every face
-  // axis, so that face contacts (several points) are kept for resting and stacked boxes
+  return best;
+}
+
+// The nine edge-edge axes (Gottschalk, Lin & Manocha 1996): taken only when clearly better than every face
+// axis (best), so that face contacts (several points) are kept for resting and stacked boxes. Returns the
+// largest separation (best if no edge axis is taken, *ei = -1).
+double edgeAxis(const Body& A, const Body& B, const Mat3& Ra, const Mat3& Rb, const Vec3& d, double best,
+                int* ei, int* ej) {
   const double scale = A.shape.half.norm() + B.shape.half.norm();
-  int ei = -1, ej = -1;
   double ebest = best;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -224,28 +227,72 @@ void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) 
         rb += B.shape.half[k] * std::abs(L.dot(Rb.col(k)));
       }
       const double s = std::abs(d.dot(L)) - ra - rb;
-      if (s > ebest + 1e-4 * scale) ebest = s, ei = i, ej = j;
+      if (s > ebest + 1e-4 * scale) ebest = s, *ei = i, *ej = j;
     }
-  if (std::max(best, ebest) >= margin) return;
-  if (ei >= 0) {
-    Vec3 L = Ra.col(ei).cross(Rb.col(ej)).normalized();
-    if (L.dot(d) < 0) L = -L; // from A towards B
-    Vec3 pa = A.x, pb = B.x;  // centres of the nearest edges
-    for (int k = 0; k < 3; ++k) {
-      if (k != ei) pa += (L.dot(Ra.col(k)) > 0 ? 1.0 : -1.0) * A.shape.half[k] * Ra.col(k);
-      if (k != ej) pb -= (L.dot(Rb.col(k)) > 0 ? 1.0 : -1.0) * B.shape.half[k] * Rb.col(k);
-    }
-    // closest points of the two edge lines pa + s ua, pb + t ub, clamped to the edges
-    const Vec3 ua = Ra.col(ei), ub = Rb.col(ej), w = pa - pb;
-    const double bb = ua.dot(ub), dd = ua.dot(w), ee = ub.dot(w), den = 1.0 - bb * bb;
-    double sa = den > 1e-12 ? (bb * ee - dd) / den : 0.0;
-    sa = std::clamp(sa, -A.shape.half[ei], A.shape.half[ei]);
-    double tb = std::clamp(ee + bb * sa, -B.shape.half[ej], B.shape.half[ej]);
-    sa = std::clamp(bb * tb - dd, -A.shape.half[ei], A.shape.half[ei]);
-    const Vec3 ca = pa + sa * ua, cb = pb + tb * ub;
-    push(out, a, b, 0.5 * (ca + cb), -L, (cb - ca).dot(L), 0); // normal from b into a
-    return;
+  return ebest;
+}
+
+// Edge-edge contact: one point between edge ei of A and edge ej of B.
+void edgeEdge(const Body& A, int a, const Body& B, int b, const Mat3& Ra, const Mat3& Rb, const Vec3& d,
+              int ei, int ej, Cs* out) {
+  Vec3 L = Ra.col(ei).cross(Rb.col(ej)).normalized();
+  if (L.dot(d) < 0) L = -L; // from A towards B
+  Vec3 pa = A.x, pb = B.x;  // centres of the nearest edges
+  for (int k = 0; k < 3; ++k) {
+    if (k != ei) pa += (L.dot(Ra.col(k)) > 0 ? 1.0 : -1.0) * A.shape.half[k] * Ra.col(k);
+    if (k != ej) pb -= (L.dot(Rb.col(k)) > 0 ? 1.0 : -1.0) * B.shape.half[k] * Rb.col(k);
   }
+  // closest points of the two edge lines pa + s ua, pb + t ub, clamped to the edges
+  const Vec3 ua = Ra.col(ei), ub = Rb.col(ej), w = pa - pb;
+  const double bb = ua.dot(ub), dd = ua.dot(w), ee = ub.dot(w), den = 1.0 - bb * bb;
+  double sa = den > 1e-12 ? (bb * ee - dd) / den : 0.0;
+  sa = std::clamp(sa, -A.shape.half[ei], A.shape.half[ei]);
+  double tb = std::clamp(ee + bb * sa, -B.shape.half[ej], B.shape.half[ej]);
+  sa = std::clamp(bb * tb - dd, -A.shape.half[ei], A.shape.half[ei]);
+  const Vec3 ca = pa + sa * ua, cb = pb + tb * ub;
+  push(out, a, b, 0.5 * (ca + cb), -L, (cb - ca).dot(L), 0); // normal from b into a
+}
+
+// Sutherland-Hodgman: poly clipped against the four side planes s . (p - fc) <= e of the reference face
+// (false: nothing left).
+bool clipToFace(const Vec3& fc, const Vec3& u1, double e1, const Vec3& u2, double e2,
+                std::vector<Vec3>* poly) {
+  const std::array<std::pair<Vec3, double>, 4> planes = {
+      std::make_pair(u1, e1), std::make_pair(Vec3(-u1), e1), std::make_pair(u2, e2),
+      std::make_pair(Vec3(-u2), e2)};
+  for (const auto& [s, e] : planes) {
+    std::vector<Vec3> next;
+    for (size_t i = 0; i < poly->size(); ++i) {
+      const Vec3& P = (*poly)[i];
+      const Vec3& Q = (*poly)[(i + 1) % poly->size()];
+      const double dp = s.dot(P - fc) - e, dq = s.dot(Q - fc) - e;
+      if (dp <= 0) next.push_back(P);
+      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) next.push_back(P + (Q - P) * (dp / (dp - dq)));
+    }
+    poly->swap(next);
+    if (poly->empty()) return false;
+  }
+  return true;
+}
+
+// More than 4 points: keep the extreme points along the diagonals of the reference face (axes u1, u2).
+void keepFour(const Vec3& u1, const Vec3& u2, std::vector<std::pair<Vec3, double>>* pts) {
+  std::vector<std::pair<Vec3, double>> keep;
+  for (const Vec3& dir : {Vec3(u1 + u2), Vec3(u1 - u2), Vec3(-u1 - u2), Vec3(-u1 + u2)}) {
+    size_t bi = 0;
+    for (size_t i = 1; i < pts->size(); ++i)
+      if ((*pts)[i].first.dot(dir) > (*pts)[bi].first.dot(dir)) bi = i;
+    bool dup = false;
+    for (auto& k : keep) dup = dup || (k.first - (*pts)[bi].first).norm() < 1e-12;
+    if (!dup) keep.push_back((*pts)[bi]);
+  }
+  pts->swap(keep);
+}
+
+// Face contact: the incident face of the other box clipped by face `axis` of the reference box (owner 0: A,
+// 1: B), up to 4 points.
+void faceContact(const Body& A, int a, const Body& B, int b, const Mat3& Ra, const Mat3& Rb, int owner,
+                 int axis, double margin, Cs* out) {
   const Body& Rf = owner == 0 ? A : B;
   const Body& In = owner == 0 ? B : A;
   const Mat3& Rr = owner == 0 ? Ra : Rb;
@@ -265,42 +312,31 @@ void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) 
   const int iu = (j + 1) % 3, iv = (j + 2) % 3;
   const Vec3 w1 = Ri.col(iu) * In.shape.half[iu], w2 = Ri.col(iv) * In.shape.half[iv];
   std::vector<Vec3> poly = {ic + w1 + w2, ic - w1 + w2, ic - w1 - w2, ic + w1 - w2};
-  // Sutherland-Hodgman against the four side planes s . (p - fc) <= e
-  const std::array<std::pair<Vec3, double>, 4> planes = {
-      std::make_pair(u1, e1), std::make_pair(Vec3(-u1), e1), std::make_pair(u2, e2),
-      std::make_pair(Vec3(-u2), e2)};
-  for (const auto& [s, e] : planes) {
-    std::vector<Vec3> next;
-    for (size_t i = 0; i < poly.size(); ++i) {
-      const Vec3& P = poly[i];
-      const Vec3& Q = poly[(i + 1) % poly.size()];
-      const double dp = s.dot(P - fc) - e, dq = s.dot(Q - fc) - e;
-      if (dp <= 0) next.push_back(P);
-      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) next.push_back(P + (Q - P) * (dp / (dp - dq)));
-    }
-    poly.swap(next);
-    if (poly.empty()) return;
-  }
+  if (!clipToFace(fc, u1, e1, u2, e2, &poly)) return;
   std::vector<std::pair<Vec3, double>> pts;
   for (const Vec3& p : poly) {
     const double phi = (p - fc).dot(nr);
     if (phi < margin) pts.push_back({p, phi});
   }
-  if (pts.size() > 4) { // keep the extreme points along the diagonals of the reference face
-    std::vector<std::pair<Vec3, double>> keep;
-    for (const Vec3& dir : {Vec3(u1 + u2), Vec3(u1 - u2), Vec3(-u1 - u2), Vec3(-u1 + u2)}) {
-      size_t bi = 0;
-      for (size_t i = 1; i < pts.size(); ++i)
-        if (pts[i].first.dot(dir) > pts[bi].first.dot(dir)) bi = i;
-      bool dup = false;
-      for (auto& k : keep) dup = dup || (k.first - pts[bi].first).norm() < 1e-12;
-      if (!dup) keep.push_back(pts[bi]);
-    }
-    pts.swap(keep);
-  }
+  if (pts.size() > 4) keepFour(u1, u2, &pts);
   const Vec3 n = (&In == &A) ? nr : Vec3(-nr); // from b into a
   int f = 0;
   for (auto& [p, phi] : pts) push(out, a, b, p, n, phi, f++);
+}
+
+// Box-box: separating axis over the six face axes and the nine edge-edge axes; a face axis gives the incident
+// face clipped by the reference face (up to 4 points), an edge-edge axis one point between the two edges.
+void boxBox(const Body& A, int a, const Body& B, int b, double margin, Cs* out) {
+  const Mat3 Ra = A.R(), Rb = B.R();
+  const Vec3 d = B.x - A.x;
+  int owner = 0, axis = 0, ei = -1, ej = -1;
+  const double best = faceAxis(A, B, Ra, Rb, d, &owner, &axis);
+  const double ebest = edgeAxis(A, B, Ra, Rb, d, best, &ei, &ej);
+  if (std::max(best, ebest) >= margin) return;
+  if (ei >= 0)
+    edgeEdge(A, a, B, b, Ra, Rb, d, ei, ej, out);
+  else
+    faceContact(A, a, B, b, Ra, Rb, owner, axis, margin, out);
 }
 
 bool roundish(ShapeType t) {

@@ -8,15 +8,19 @@
 // ("lemke_rf"), standard LCPs only.
 #pragma once
 
+#include "core/named_choice.hpp"
 #include "lcp/solver.hpp"
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace suite::contact {
 
 std::unique_ptr<lcp::Solver> makeLemkeRefactored();
 // lib/lcp's registry plus the contact library's own solvers ("lemke_rf"); nullptr if unknown.
 std::unique_ptr<lcp::Solver> makeContactSolver(const std::string& name);
+// The names makeContactSolver accepts, each with its one-line description (for -help and validation).
+std::vector<Choice> contactSolverChoices();
 
 } // namespace suite::contact

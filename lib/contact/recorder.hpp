@@ -1,12 +1,18 @@
 // What a contact run records: frames (every body's position, orientation and velocities at chosen steps)
 // and the statistics of every step (contacts, problem size, solver, iterations, fallbacks, splitting history,
-// energy, wall time), in flat arrays ready to be written (apps/contact/contact_output.cpp).
+// energy, wall time), in flat arrays, and writes them to HDF5 (the output of apps/contact).
 #pragma once
 
 #include "contact/stepper.hpp"
 
+#include <petscsys.h>
+
 #include <string>
 #include <vector>
+
+namespace suite {
+class H5Output;
+}
 
 namespace suite::contact {
 
@@ -25,6 +31,8 @@ struct Recorder {
 
   void frame(const std::vector<Body>& bodies, long long step, double t);
   void step(const StepStats& s, double t, double energy_value, double wall);
+  // Writes the body table and everything recorded (recorder_h5.cpp): /bodies, /frames, /steps, /splitting.
+  PetscErrorCode write(H5Output& out, const std::vector<Body>& bodies) const;
 };
 
 } // namespace suite::contact

@@ -22,6 +22,21 @@ double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity) {
   return e;
 }
 
+std::string simplifications(const StepperOptions& o, const std::vector<Body>& bodies) {
+  std::string s;
+  if (o.mu == 0 || o.friction == FrictionModel::None)
+    s += "no friction rows (plain LCP); ";
+  else if (o.friction != FrictionModel::Polyhedral)
+    s += "box friction (per-direction bounds, not a cone); ";
+  bool cyl = false;
+  for (const Body& b : bodies) cyl = cyl || b.shape.type == ShapeType::Cylinder;
+  if (cyl) s += "cylinders act as capsules except against planes; ";
+  s += "zero-bound tangent rows left out; ";
+  s += o.sleep ? "sleeping on (bodies at rest are frozen, contacts among them not solved)"
+               : "sleeping off (every contact is solved each step)";
+  return s;
+}
+
 void forceMeasures(const std::vector<Contact>& cs, const std::vector<Vec3>& lam, double mu, double* ratio,
                    double* violation, double* normal) {
   std::map<std::pair<int, int>, Vec3> ft;

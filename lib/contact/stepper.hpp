@@ -150,5 +150,7 @@ double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity);
 // violation sum_i max(0, |lambda_t,i| - mu lambda_n,i) / sum lambda_n, and sum lambda_n (normal).
 void forceMeasures(const std::vector<Contact>& cs, const std::vector<Vec3>& lam, double mu, double* ratio,
                    double* violation, double* normal);
+// The model simplifications a run with these options makes on these bodies (one line, for output and log).
+std::string simplifications(const StepperOptions& o, const std::vector<Body>& bodies);
 
 } // namespace suite::contact

@@ -73,3 +73,17 @@ TEST(ContactSolverChain, UnknownAndFailedNeverSolved) {
   EXPECT_NE(why.find("nosuch: unknown solver; "), std::string::npos) << why;
   EXPECT_NE(why.find("pgs: max_iterations"), std::string::npos) << why;
 }
+
+// The solver choices of -lcp_solver / -fallback_solvers / -polyhedral_solvers: lib/lcp's registry in its order,
+// then lemke_rf, each with a description and each made by makeContactSolver.
+TEST(ContactSolverChain, ChoicesAreTheRegistryPlusLemkeRf) {
+  const std::vector<suite::Choice> choices = contactSolverChoices();
+  const std::vector<lcp::SolverInfo> registry = lcp::solverRegistry();
+  ASSERT_EQ(choices.size(), registry.size() + 1);
+  for (size_t i = 0; i < registry.size(); ++i) EXPECT_EQ(choices[i].name, registry[i].name);
+  EXPECT_EQ(choices.back().name, "lemke_rf");
+  for (const suite::Choice& c : choices) {
+    EXPECT_FALSE(c.help.empty()) << c.name;
+    EXPECT_NE(makeContactSolver(c.name), nullptr) << c.name;
+  }
+}
