@@ -172,26 +172,34 @@ bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, int ncell, long long n, lon
   return any;
 }
 
-// Zeroes block row k of the system of split flux s (0: f+, 1: f-).
-template <int NV> static void zeroBlockRow(const CompactLineRows& out, int s, int k) {
+// Zeroes block row k of the NV x NV blocks A, B, C of one split-flux system.
+template <int NV> static void zeroBlockRow(double* A, double* B, double* C, int k) {
   constexpr int NN = NV * NV;
-  std::fill(out.A[s] + NN * k, out.A[s] + NN * (k + 1), 0.0);
-  std::fill(out.B[s] + NN * k, out.B[s] + NN * (k + 1), 0.0);
-  std::fill(out.C[s] + NN * k, out.C[s] + NN * (k + 1), 0.0);
+  std::fill(A + NN * k, A + NN * (k + 1), 0.0);
+  std::fill(B + NN * k, B + NN * (k + 1), 0.0);
+  std::fill(C + NN * k, C + NN * (k + 1), 0.0);
 }
 
-// Pade row at face k: central, so the split cancels; conserved-space right-hand side.
+// Pade row at face k: central, so the split cancels; conserved-space right-hand side. Scalar line: the row
+// is linear, so the rows of f+ and f- add up to the row of f.
 template <int NV>
-static void padeRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                    RowFunction fn, int k, const CompactLineRows& out) {
+static void padeScalarRow(const typename LineGas<NV>::V* fs, RowFunction fn, int k, double* abc,
+                          double* rhs) {
+  for (int c = 0; c < NV; ++c) {
+    double v[6];
+    for (int m = 0; m < 6; ++m) v[m] = fs[m][c];
+    rhs[NV * k + c] = fn(v).r;
+  }
+  abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
+}
+
+// The same on a block line: diagonal blocks, one right-hand side per split flux. `out` is taken by value here
+// and below: a copy the row functions cannot reach stays in registers across their calls.
+template <int NV>
+static void padeBlockRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
+                         RowFunction fn, int k, CompactLineRows out) {
   constexpr int NN = NV * NV;
   for (int c = 0; c < NV; ++c) {
-    if (!out.blocks) { // the row is linear: the rows of f+ and f- add up to the row of f
-      double v[6];
-      for (int m = 0; m < 6; ++m) v[m] = fs[m][c];
-      out.rhs[NV * k + c] = fn(v).r;
-      continue;
-    }
     double r[2];
     for (int s = 0; s < 2; ++s) {
       double v[6];
@@ -205,7 +213,6 @@ static void padeRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV
       out.d[s][NV * k + c] = r[s];
     }
   }
-  if (!out.blocks) out.abc[3 * k] = 1.0 / 3.0, out.abc[3 * k + 1] = 1.0, out.abc[3 * k + 2] = 1.0 / 3.0;
 }
 
 // Row r of the NV x NV blocks A, B, C of one split flux from its per-field rows: R diag(a) L etc. with the
@@ -235,8 +242,7 @@ static void blockRowEntries(const typename LineGas<NV>::Eigen& e, const Row* row
 // when `characteristic`. On a scalar line only explicit rows may reach here.
 template <int NV>
 static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                            RowFunction fn, bool characteristic, double g, int k,
-                            const CompactLineRows& out) {
+                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
   typename G::Eigen e;
@@ -259,7 +265,7 @@ static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename Li
       }
       out.d[s][NV * k + r] = dr[r];
       if (explicit_row) { // the block row is the identity
-        if (r == 0) zeroBlockRow<NV>(out, s, k);
+        if (r == 0) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
         out.B[s][NN * k + (NV + 1) * r] = 1.0;
         continue;
       }
@@ -273,7 +279,7 @@ static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename Li
 template <int NV>
 void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
                                          bool periodic, double alpha, const char* shocks,
-                                         const CompactLineRows& out) {
+                                         CompactLineRows out) {
   prepareLine(q, xm, alpha);
   for (int k = 0; k < nown; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
@@ -284,9 +290,11 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
                                     : (shock ? scheme_->shock_row : scheme_->smooth_row);
     if (out.blocks && !(shock && !boundary)) // rows that set only diagonals (Pade, explicit closures)
-      for (int s = 0; s < 2; ++s) zeroBlockRow<NV>(out, s, k);
-    if (!shock && !boundary)
-      padeRow<NV>(qs, fs, a, fn, k, out);
+      for (int s = 0; s < 2; ++s) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
+    if (!shock && !boundary && !out.blocks)
+      padeScalarRow<NV>(fs, fn, k, out.abc, out.rhs);
+    else if (!shock && !boundary)
+      padeBlockRow<NV>(qs, fs, a, fn, k, out);
     else
       splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out);
   }

@@ -77,7 +77,7 @@ private:
   bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
                        char* shock);
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
-                       const char* shocks, const CompactLineRows& out);
+                       const char* shocks, CompactLineRows out);
   // Steps of linesFaceFluxes for compact schemes.
   void markBlockLines(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm, int nown,
                       bool periodic);
