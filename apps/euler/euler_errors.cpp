@@ -40,6 +40,16 @@ PetscErrorCode EulerRun::readReference(std::vector<double> ref[3], double scale[
   PetscFunctionReturn(0);
 }
 
+// ref[c] at this rank's cells, c = rho, u, p: the exact solution at the final time.
+void EulerRun::exactLineFields(std::vector<double> ref[3]) const {
+  for (PetscInt k = 0; k < m_[0]; ++k) {
+    double x[3];
+    cellCentre(s_[0] + k, 0, 0, x);
+    const suite::euler::PrimN w = problem_.exact(x, time_);
+    ref[0][k] = w.rho, ref[1][k] = w.u[0], ref[2][k] = w.p;
+  }
+}
+
 PetscErrorCode EulerRun::computeLineErrors() {
   std::vector<double> fields[5];
   std::vector<double>* ref = err_.exact;
@@ -51,12 +61,7 @@ PetscErrorCode EulerRun::computeLineErrors() {
   if (!opt_.reference.empty())
     PetscCall(readReference(ref, scale));
   else
-    for (PetscInt k = 0; k < m_[0]; ++k) {
-      double x[3];
-      cellCentre(s_[0] + k, 0, 0, x);
-      const suite::euler::PrimN w = problem_.exact(x, time_);
-      ref[0][k] = w.rho, ref[1][k] = w.u[0], ref[2][k] = w.p;
-    }
+    exactLineFields(ref);
   for (int c = 0; c < 3; ++c)
     for (PetscInt k = 0; k < m_[0]; ++k) {
       const double e = std::abs((*num[c])[k] - ref[c][k]);

@@ -79,10 +79,13 @@ private:
   PetscErrorCode writeGridResults();
   PetscErrorCode writeXdmf();
   PetscErrorCode writeSpectrum(const std::string& group); // E(k) into group/k, group/E
+  // -scheme_spectrum table into -output (euler_scheme_spectrum.cpp)
+  PetscErrorCode writeSchemeSpectrum(int n, const std::vector<double> cols[6]);
   PetscErrorCode computeErrors();
   PetscErrorCode computeLineErrors(); // rho, u, p against the exact solution or -reference
   PetscErrorCode computeGridErrors(); // rho against the exact solution
   PetscErrorCode readReference(std::vector<double> ref[3], double scale[3]) const;
+  void exactLineFields(std::vector<double> ref[3]) const; // ref[c] = exact rho, u, p at this rank's cells
   // end of run (euler_report.cpp)
   PetscErrorCode reportConservation();
   PetscErrorCode reportStatistics(const suite::LoopSummary& summary);

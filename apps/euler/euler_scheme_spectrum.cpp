@@ -41,7 +41,14 @@ PetscErrorCode EulerRun::schemeSpectrum() {
       PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "%-10.5f %-12.6f %-12.6f %-12.6f %-12.6f %-12.6f",
                                cols[0][i], cols[1][i], cols[2][i], cols[3][i], cols[4][i], cols[5][i]));
   }
-  if (opt_.output.empty()) PetscFunctionReturn(0);
+  if (!opt_.output.empty()) PetscCall(writeSchemeSpectrum(n, cols));
+  PetscFunctionReturn(0);
+}
+
+// /scheme_spectrum/{w, smooth_re, smooth_im, shock_re, shock_im, pade_exact} (cols[0..5]) into -output.
+PetscErrorCode EulerRun::writeSchemeSpectrum(int n, const std::vector<double> cols[6]) {
+  PetscFunctionBeginUser;
+  const size_t m = cols[0].size();
   PetscCall(out_.open(ctx_.comm(), opt_.output));
   PetscCall(out_.writeProvenance(ctx_));
   PetscCall(out_.writeAttribute("/", "scheme", opt_.scheme));

@@ -172,14 +172,114 @@ bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, int ncell, long long n, lon
   return any;
 }
 
+// Zeroes block row k of the NV x NV blocks A, B, C of one split-flux system.
+template <int NV> static void zeroBlockRow(double* A, double* B, double* C, int k) {
+  constexpr int NN = NV * NV;
+  std::fill(A + NN * k, A + NN * (k + 1), 0.0);
+  std::fill(B + NN * k, B + NN * (k + 1), 0.0);
+  std::fill(C + NN * k, C + NN * (k + 1), 0.0);
+}
+
+// Pade row at face k: central, so the split cancels; conserved-space right-hand side. Scalar line: the row
+// is linear, so the rows of f+ and f- add up to the row of f.
 template <int NV>
-void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
-                                         bool periodic, double alpha, const char* shocks, bool blocks,
-                                         double* abc, double* rhs, double* A[2], double* B[2], double* C[2],
-                                         double* d[2]) {
+static void padeScalarRow(const typename LineGas<NV>::V* fs, RowFunction fn, int k, double* abc,
+                          double* rhs) {
+  for (int c = 0; c < NV; ++c) {
+    double v[6];
+    for (int m = 0; m < 6; ++m) v[m] = fs[m][c];
+    rhs[NV * k + c] = fn(v).r;
+  }
+  abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
+}
+
+// The same on a block line: diagonal blocks, one right-hand side per split flux. `out` is taken by value here
+// and below: a copy the row functions cannot reach stays in registers across their calls.
+template <int NV>
+static void padeBlockRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
+                         RowFunction fn, int k, CompactLineRows out) {
+  constexpr int NN = NV * NV;
+  for (int c = 0; c < NV; ++c) {
+    double r[2];
+    for (int s = 0; s < 2; ++s) {
+      double v[6];
+      for (int m = 0; m < 6; ++m) v[m] = 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
+      r[s] = fn(v).r;
+    }
+    for (int s = 0; s < 2; ++s) {
+      out.A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+      out.B[s][NN * k + (NV + 1) * c] = 1.0;
+      out.C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+      out.d[s][NV * k + c] = r[s];
+    }
+  }
+}
+
+// Row r of the NV x NV blocks A, B, C of one split flux from its per-field rows: R diag(a) L etc. with the
+// characteristic decomposition, diag(a) etc. without.
+template <int NV>
+static void blockRowEntries(const typename LineGas<NV>::Eigen& e, const Row* rows, bool characteristic, int r,
+                            double* A, double* B, double* C) {
+  for (int cc = 0; cc < NV; ++cc) {
+    double sa = 0, sb = 0, sc = 0;
+    if (characteristic) {
+      for (int c = 0; c < NV; ++c) {
+        const double rl = e.R[NV * r + c] * e.L[NV * c + cc];
+        sa += rl * rows[c].a;
+        sb += rl * rows[c].b;
+        sc += rl * rows[c].c;
+      }
+    } else if (r == cc) {
+      sa = rows[r].a, sb = rows[r].b, sc = rows[r].c;
+    }
+    A[NV * r + cc] = sa;
+    B[NV * r + cc] = sb;
+    C[NV * r + cc] = sc;
+  }
+}
+
+// Split (ENO-Pade shock, CRWENO) row or explicit closure at face k: rows of f+ and f-, characteristic-wise
+// when `characteristic`. On a scalar line only explicit rows may reach here.
+template <int NV>
+static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
+                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
-  const double g = opt_.gamma;
+  typename G::Eigen e;
+  Row rows[2][NV];
+  splitRows<NV>(qs, fs, a, fn, characteristic, g, &e, rows);
+  bool explicit_row = true;
+  for (int s = 0; s < 2; ++s)
+    for (int c = 0; c < NV; ++c)
+      explicit_row = explicit_row && rows[s][c].a == 0.0 && rows[s][c].c == 0.0 && rows[s][c].b == 1.0;
+  for (int s = 0; s < 2; ++s) {
+    typename G::V rs;
+    for (int c = 0; c < NV; ++c) rs[c] = rows[s][c].r;
+    const typename G::V dr = characteristic ? G::mul(e.R, rs) : rs;
+    for (int r = 0; r < NV; ++r) {
+      if (!out.blocks) { // only explicit rows reach here on a scalar line
+        if (!explicit_row) throw std::logic_error("DirectionSweep: compact shock row on a scalar line");
+        if (s == 0) out.rhs[NV * k + r] = 0.0;
+        out.rhs[NV * k + r] += dr[r];
+        continue;
+      }
+      out.d[s][NV * k + r] = dr[r];
+      if (explicit_row) { // the block row is the identity
+        if (r == 0) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
+        out.B[s][NN * k + (NV + 1) * r] = 1.0;
+        continue;
+      }
+      blockRowEntries<NV>(e, rows[s], characteristic, r, out.A[s] + NN * k, out.B[s] + NN * k,
+                          out.C[s] + NN * k);
+    }
+  }
+  if (!out.blocks) out.abc[3 * k] = 0.0, out.abc[3 * k + 1] = 1.0, out.abc[3 * k + 2] = 0.0;
+}
+
+template <int NV>
+void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
+                                         bool periodic, double alpha, const char* shocks,
+                                         CompactLineRows out) {
   prepareLine(q, xm, alpha);
   for (int k = 0; k < nown; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
@@ -189,83 +289,14 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     const bool shock = boundary ? !scheme_->hybrid : shocks[k] != 0;
     const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
                                     : (shock ? scheme_->shock_row : scheme_->smooth_row);
-    if (blocks && !(shock && !boundary)) // rows that set only diagonals (Pade, explicit closures)
-      for (int s = 0; s < 2; ++s) {
-        std::fill(A[s] + NN * k, A[s] + NN * (k + 1), 0.0);
-        std::fill(B[s] + NN * k, B[s] + NN * (k + 1), 0.0);
-        std::fill(C[s] + NN * k, C[s] + NN * (k + 1), 0.0);
-      }
-    if (!shock && !boundary) { // Pade row: central, so the split cancels; conserved-space right-hand side
-      for (int c = 0; c < NV; ++c) {
-        if (!blocks) { // the row is linear: the rows of f+ and f- add up to the row of f
-          double v[6];
-          for (int m = 0; m < 6; ++m) v[m] = fs[m][c];
-          rhs[NV * k + c] = fn(v).r;
-          continue;
-        }
-        double r[2];
-        for (int s = 0; s < 2; ++s) {
-          double v[6];
-          for (int m = 0; m < 6; ++m) v[m] = 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
-          r[s] = fn(v).r;
-        }
-        for (int s = 0; s < 2; ++s) {
-          A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
-          B[s][NN * k + (NV + 1) * c] = 1.0;
-          C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
-          d[s][NV * k + c] = r[s];
-        }
-      }
-      if (!blocks) abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
-      continue;
-    }
-    typename G::Eigen e;
-    Row rows[2][NV];
-    splitRows<NV>(qs, fs, a, fn, opt_.characteristic, g, &e, rows);
-    bool explicit_row = true;
-    for (int s = 0; s < 2; ++s)
-      for (int c = 0; c < NV; ++c)
-        explicit_row = explicit_row && rows[s][c].a == 0.0 && rows[s][c].c == 0.0 && rows[s][c].b == 1.0;
-    for (int s = 0; s < 2; ++s) {
-      V rs;
-      for (int c = 0; c < NV; ++c) rs[c] = rows[s][c].r;
-      const V dr = opt_.characteristic ? G::mul(e.R, rs) : rs;
-      for (int r = 0; r < NV; ++r) {
-        if (!blocks) { // only explicit rows reach here on a scalar line
-          if (!explicit_row) throw std::logic_error("DirectionSweep: compact shock row on a scalar line");
-          if (s == 0) rhs[NV * k + r] = 0.0;
-          rhs[NV * k + r] += dr[r];
-          continue;
-        }
-        d[s][NV * k + r] = dr[r];
-        if (explicit_row) { // the block row is the identity
-          if (r == 0) {
-            std::fill(A[s] + NN * k, A[s] + NN * (k + 1), 0.0);
-            std::fill(B[s] + NN * k, B[s] + NN * (k + 1), 0.0);
-            std::fill(C[s] + NN * k, C[s] + NN * (k + 1), 0.0);
-          }
-          B[s][NN * k + (NV + 1) * r] = 1.0;
-          continue;
-        }
-        for (int cc = 0; cc < NV; ++cc) {
-          double sa = 0, sb = 0, sc = 0;
-          if (opt_.characteristic) {
-            for (int c = 0; c < NV; ++c) {
-              const double rl = e.R[NV * r + c] * e.L[NV * c + cc];
-              sa += rl * rows[s][c].a;
-              sb += rl * rows[s][c].b;
-              sc += rl * rows[s][c].c;
-            }
-          } else if (r == cc) {
-            sa = rows[s][r].a, sb = rows[s][r].b, sc = rows[s][r].c;
-          }
-          A[s][NN * k + NV * r + cc] = sa;
-          B[s][NN * k + NV * r + cc] = sb;
-          C[s][NN * k + NV * r + cc] = sc;
-        }
-      }
-    }
-    if (!blocks) abc[3 * k] = 0.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 0.0;
+    if (out.blocks && !(shock && !boundary)) // rows that set only diagonals (Pade, explicit closures)
+      for (int s = 0; s < 2; ++s) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
+    if (!shock && !boundary && !out.blocks)
+      padeScalarRow<NV>(fs, fn, k, out.abc, out.rhs);
+    else if (!shock && !boundary)
+      padeBlockRow<NV>(qs, fs, a, fn, k, out);
+    else
+      splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out);
   }
 }
 
@@ -326,119 +357,168 @@ void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* 
 template <int NV>
 void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs,
                                          int xm, bool periodic, double alpha, double lambda, V* h) {
-  using G = LineGas<NV>;
-  constexpr int NN = NV * NV;
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
   if (!scheme_->compact) {
     for (int l = 0; l < nlines; ++l)
       lineExplicit(q + (size_t)l * ncell, n, xs, xm, periodic, alpha, h + (size_t)l * nface);
   } else {
     const int nown = xm + ((!periodic && xs + xm == n) ? 1 : 0);
-    flag_.resize(nlines);
-    shock_.resize((size_t)nlines * nown);
-    for (int l = 0; l < nlines; ++l)
-      flag_[l] =
-          lineNeedsBlocks(q + (size_t)l * ncell, ncell, n, xs, nown, periodic, &shock_[(size_t)l * nown]);
-    int size = 1;
-    MPI_Comm_size(comm, &size);
-    if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flag_.data(), nlines, MPI_INT, MPI_LOR, comm);
-    blocks_.clear();
-    for (int l = 0; l < nlines; ++l)
-      if (flag_[l]) blocks_.push_back(l);
-    const int nb = (int)blocks_.size(), ns = nlines - nb;
-    // Scalar lines: all in one batched solve.
-    sabc_.resize((size_t)3 * nown * ns);
-    srhs_.resize((size_t)NV * nown * ns);
-    int is = 0;
-    for (int l = 0; l < nlines; ++l)
-      if (!flag_[l]) {
-        double* none[2] = {nullptr, nullptr};
-        lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown],
-                        false, &sabc_[(size_t)3 * nown * is], &srhs_[(size_t)NV * nown * is], none, none,
-                        none, none);
-        ++is;
-      }
-    sx_.resize((size_t)ns * nface * NV);
-    if (ns > 0) {
-      StageScope stage;
-      if (!opt_.gather_lines)
-        lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
-      else // comparison path: every line gathered to every rank, one exchange per line
-        for (int l = 0; l < ns; ++l)
-          gather_.solveScalar(comm, nown, &sabc_[(size_t)3 * nown * l], NV, &srhs_[(size_t)NV * nown * l],
-                              periodic, xs, nface, &sx_[(size_t)NV * nface * l]);
+    markBlockLines(comm, q, nlines, n, xs, xm, nown, periodic);
+    scalarLinesFaceFluxes(comm, q, nlines, n, xs, xm, nown, periodic, alpha, h);
+    blockLinesFaceFluxes(comm, q, n, xs, xm, nown, periodic, alpha, h);
+  }
+  if (opt_.positivity && lambda > 0.0) limitFaces(q, nlines, xm, alpha, lambda, h);
+}
+
+// Marks the shock rows of every line (shock_) and the lines that need the block solve (flag_, agreed over the
+// ranks of the line; blocks_: their indices).
+template <int NV>
+void DirectionSweep<NV>::markBlockLines(MPI_Comm comm, const V* q, int nlines, long long n, long long xs,
+                                        int xm, int nown, bool periodic) {
+  const int ncell = xm + 2 * kGhost;
+  flag_.resize(nlines);
+  shock_.resize((size_t)nlines * nown);
+  for (int l = 0; l < nlines; ++l)
+    flag_[l] =
+        lineNeedsBlocks(q + (size_t)l * ncell, ncell, n, xs, nown, periodic, &shock_[(size_t)l * nown]);
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flag_.data(), nlines, MPI_INT, MPI_LOR, comm);
+  blocks_.clear();
+  for (int l = 0; l < nlines; ++l)
+    if (flag_[l]) blocks_.push_back(l);
+}
+
+// Face fluxes of the lines not in blocks_: scalar rows with NV right-hand sides, all in one batched solve.
+template <int NV>
+void DirectionSweep<NV>::scalarLinesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n,
+                                               long long xs, int xm, int nown, bool periodic, double alpha,
+                                               V* h) {
+  const int ncell = xm + 2 * kGhost, nface = xm + 1, ns = nlines - (int)blocks_.size();
+  sabc_.resize((size_t)3 * nown * ns);
+  srhs_.resize((size_t)NV * nown * ns);
+  int is = 0;
+  for (int l = 0; l < nlines; ++l)
+    if (!flag_[l]) {
+      const CompactLineRows out = {
+          false, &sabc_[(size_t)3 * nown * is], &srhs_[(size_t)NV * nown * is], {}, {}, {}, {}};
+      lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown],
+                      out);
+      ++is;
     }
-    is = 0;
-    for (int l = 0; l < nlines; ++l)
-      if (!flag_[l]) {
-        const double* x = &sx_[(size_t)is++ * nface * NV];
-        V* hl = h + (size_t)l * nface;
-        for (int k = 0; k < nface; ++k)
-          for (int c = 0; c < NV; ++c) hl[k][c] = x[NV * k + c];
-      }
-    // Block lines (two NV x NV systems each), in batches of at most opt_.batch_bytes of rows: the same batches
-    // on every rank of the line, so the message count is ceil(block rows / budget), independent of how the
-    // lines are split over the ranks, and memory stays bounded whatever the number of shocked lines.
-    // The batch size must be the same on every rank of the line (it is the line count of a collective), so it
-    // comes from the global line length and the rank count, not from this rank's rows (the last rank of an open
-    // line owns one row more; uneven splits differ too): about batch_bytes per rank.
-    int nranks = 1;
-    MPI_Comm_size(comm, &nranks);
-    const double line_bytes = sizeof(double) * 2.0 * (double)(n + 1) / nranks * (3 * NN + NV);
-    const int chunk = (int)std::max(1.0, std::min(1e9, std::floor((double)opt_.batch_bytes / line_bytes)));
-    for (int c0 = 0; c0 < nb; c0 += chunk) {
-      const int cn = std::min(chunk, nb - c0);
-      bA_.resize((size_t)2 * cn * nown * NN);
-      bB_.resize(bA_.size());
-      bC_.resize(bA_.size());
-      bd_.resize((size_t)2 * cn * nown * NV);
-      for (int ib = 0; ib < cn; ++ib) {
-        double* A[2] = {&bA_[(size_t)(2 * ib) * nown * NN], &bA_[(size_t)(2 * ib + 1) * nown * NN]};
-        double* B[2] = {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]};
-        double* C[2] = {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]};
-        double* d[2] = {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]};
-        const int l = blocks_[c0 + ib];
-        lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown],
-                        true, nullptr, nullptr, A, B, C, d);
-      }
-      bx_.resize((size_t)2 * cn * nface * NV);
-      StageScope stage; // until the end of this batch
-      if (!opt_.gather_lines)
-        lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs,
-                     nface, bx_.data());
-      else if constexpr (NV == 3) // comparison path (1D): each system gathered to every rank
-        for (int m = 0; m < 2 * cn; ++m) {
-          const size_t o = (size_t)m * nown * NN;
-          gather_.solve(comm, NV, nown, &bA_[o], &bB_[o], &bC_[o], &bd_[(size_t)m * nown * NV], periodic, xs,
-                        nface, &bx_[(size_t)m * nface * NV]);
-        }
-      else
-        throw std::invalid_argument("gathered line solves (-line_solve gather) are 1D only");
-      for (int ib = 0; ib < cn; ++ib) {
-        const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
-        const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
-        V* hl = h + (size_t)blocks_[c0 + ib] * nface;
-        for (int k = 0; k < nface; ++k)
-          for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
-      }
+  sx_.resize((size_t)ns * nface * NV);
+  if (ns > 0) {
+    StageScope stage;
+    if (!opt_.gather_lines)
+      lines_.solveScalar(comm, ns, nown, sabc_.data(), NV, srhs_.data(), periodic, xs, nface, sx_.data());
+    else // comparison path: every line gathered to every rank, one exchange per line
+      for (int l = 0; l < ns; ++l)
+        gather_.solveScalar(comm, nown, &sabc_[(size_t)3 * nown * l], NV, &srhs_[(size_t)NV * nown * l],
+                            periodic, xs, nface, &sx_[(size_t)NV * nface * l]);
+  }
+  is = 0;
+  for (int l = 0; l < nlines; ++l)
+    if (!flag_[l]) {
+      const double* x = &sx_[(size_t)is++ * nface * NV];
+      V* hl = h + (size_t)l * nface;
+      for (int k = 0; k < nface; ++k)
+        for (int c = 0; c < NV; ++c) hl[k][c] = x[NV * k + c];
+    }
+}
+
+// Face fluxes of the lines in blocks_ (two NV x NV systems each), in batches of at most opt_.batch_bytes of
+// rows: the same batches on every rank of the line, so the message count is ceil(block rows / budget),
+// independent of how the lines are split over the ranks, and memory stays bounded whatever the number of
+// shocked lines. The batch size must be the same on every rank of the line (it is the line count of a
+// collective), so it comes from the global line length and the rank count, not from this rank's rows (the
+// last rank of an open line owns one row more; uneven splits differ too): about batch_bytes per rank.
+template <int NV>
+void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long long n, long long xs, int xm,
+                                              int nown, bool periodic, double alpha, V* h) {
+  constexpr int NN = NV * NV;
+  const int nb = (int)blocks_.size(), nface = xm + 1;
+  int nranks = 1;
+  MPI_Comm_size(comm, &nranks);
+  const double line_bytes = sizeof(double) * 2.0 * (double)(n + 1) / nranks * (3 * NN + NV);
+  const int chunk = (int)std::max(1.0, std::min(1e9, std::floor((double)opt_.batch_bytes / line_bytes)));
+  for (int c0 = 0; c0 < nb; c0 += chunk) {
+    const int cn = std::min(chunk, nb - c0);
+    blockBatchRows(q, n, xs, xm, nown, periodic, alpha, c0, cn);
+    StageScope stage; // until the end of this batch
+    blockBatchSolve(comm, nown, periodic, xs, nface, cn);
+    for (int ib = 0; ib < cn; ++ib) {
+      const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
+      const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
+      V* hl = h + (size_t)blocks_[c0 + ib] * nface;
+      for (int k = 0; k < nface; ++k)
+        for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
     }
   }
-  if (opt_.positivity && lambda > 0.0) {
-    const double g = opt_.gamma;
-    for (int l = 0; l < nlines; ++l) {
-      const V* ql = q + (size_t)l * ncell;
-      V* hl = h + (size_t)l * nface;
-      for (int k = 0; k < nface; ++k) {
-        if (G::sidesPositive(ql[k + 2], ql[k + 3], lambda, g, hl[k])) continue; // the limiter would keep h
-        double a = alpha;
-        if (opt_.local_lf && !scheme_->compact) {
-          a = 0.0;
-          for (int m = 0; m < 6; ++m) a = std::max(a, G::maxSpeed(ql[k + m], g));
-          a *= 1.0 + 1e-12;
-        }
-        a = std::max(std::max(G::maxSpeed(ql[k + 2], g), G::maxSpeed(ql[k + 3], g)) * (1.0 + 1e-12), a);
-        if (G::limitPositivity(ql[k + 2], ql[k + 3], a, lambda, g, &hl[k]) < 1.0) ++stats_.limited_faces;
+}
+
+// Rows of the block lines blocks_[c0 .. c0 + cn - 1] into bA_, bB_, bC_, bd_ (systems 2 ib and 2 ib + 1: the
+// f+ and f- systems of line blocks_[c0 + ib]).
+template <int NV>
+void DirectionSweep<NV>::blockBatchRows(const V* q, long long n, long long xs, int xm, int nown,
+                                        bool periodic, double alpha, int c0, int cn) {
+  constexpr int NN = NV * NV;
+  const int ncell = xm + 2 * kGhost;
+  bA_.resize((size_t)2 * cn * nown * NN);
+  bB_.resize(bA_.size());
+  bC_.resize(bA_.size());
+  bd_.resize((size_t)2 * cn * nown * NV);
+  for (int ib = 0; ib < cn; ++ib) {
+    const CompactLineRows out = {
+        true,
+        nullptr,
+        nullptr,
+        {&bA_[(size_t)(2 * ib) * nown * NN], &bA_[(size_t)(2 * ib + 1) * nown * NN]},
+        {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]},
+        {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]},
+        {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]}};
+    const int l = blocks_[c0 + ib];
+    lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown], out);
+  }
+}
+
+// Solves the 2 cn block systems of a batch (blockBatchRows) into bx_.
+template <int NV>
+void DirectionSweep<NV>::blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface,
+                                         int cn) {
+  constexpr int NN = NV * NV;
+  bx_.resize((size_t)2 * cn * nface * NV);
+  if (!opt_.gather_lines)
+    lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs, nface,
+                 bx_.data());
+  else if constexpr (NV == 3) // comparison path (1D): each system gathered to every rank
+    for (int m = 0; m < 2 * cn; ++m) {
+      const size_t o = (size_t)m * nown * NN;
+      gather_.solve(comm, NV, nown, &bA_[o], &bB_[o], &bC_[o], &bd_[(size_t)m * nown * NV], periodic, xs,
+                    nface, &bx_[(size_t)m * nface * NV]);
+    }
+  else
+    throw std::invalid_argument("gathered line solves (-line_solve gather) are 1D only");
+}
+
+// Hu-Adams-Shu positivity limiter on the face fluxes h of nlines lines (lambda = dt/dx scaled).
+template <int NV>
+void DirectionSweep<NV>::limitFaces(const V* q, int nlines, int xm, double alpha, double lambda, V* h) {
+  using G = LineGas<NV>;
+  const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  const double g = opt_.gamma;
+  for (int l = 0; l < nlines; ++l) {
+    const V* ql = q + (size_t)l * ncell;
+    V* hl = h + (size_t)l * nface;
+    for (int k = 0; k < nface; ++k) {
+      if (G::sidesPositive(ql[k + 2], ql[k + 3], lambda, g, hl[k])) continue; // the limiter would keep h
+      double a = alpha;
+      if (opt_.local_lf && !scheme_->compact) {
+        a = 0.0;
+        for (int m = 0; m < 6; ++m) a = std::max(a, G::maxSpeed(ql[k + m], g));
+        a *= 1.0 + 1e-12;
       }
+      a = std::max(std::max(G::maxSpeed(ql[k + 2], g), G::maxSpeed(ql[k + 3], g)) * (1.0 + 1e-12), a);
+      if (G::limitPositivity(ql[k + 2], ql[k + 3], a, lambda, g, &hl[k]) < 1.0) ++stats_.limited_faces;
     }
   }
 }

@@ -30,6 +30,18 @@
 
 namespace suite::euler {
 
+// One line's rows for the compact solve: scalar rows (blocks false: abc, rhs with NV right-hand sides) or the
+// two NV x NV block systems A[s], B[s], C[s], d[s] of the split fluxes f+ (s = 0) and f- (s = 1).
+struct CompactLineRows {
+  bool blocks;
+  double* abc;
+  double* rhs;
+  double* A[2];
+  double* B[2];
+  double* C[2];
+  double* d[2];
+};
+
 template <int NV> class DirectionSweep {
 public:
   using V = typename LineGas<NV>::V;
@@ -65,8 +77,18 @@ private:
   bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
                        char* shock);
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
-                       const char* shocks, bool blocks, double* abc, double* rhs, double* A[2], double* B[2],
-                       double* C[2], double* d[2]);
+                       const char* shocks, CompactLineRows out);
+  // Steps of linesFaceFluxes for compact schemes.
+  void markBlockLines(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm, int nown,
+                      bool periodic);
+  void scalarLinesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm,
+                             int nown, bool periodic, double alpha, V* h);
+  void blockLinesFaceFluxes(MPI_Comm comm, const V* q, long long n, long long xs, int xm, int nown,
+                            bool periodic, double alpha, V* h);
+  void blockBatchRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
+                      int c0, int cn);
+  void blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface, int cn);
+  void limitFaces(const V* q, int nlines, int xm, double alpha, double lambda, V* h);
   void prepareLine(const V* q, int xm, double alpha_global);
 
   const SchemeInfo* scheme_;

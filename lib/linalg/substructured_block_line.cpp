@@ -145,7 +145,6 @@ template <int BS>
 void SubstructuredBlockLine::solveImpl(MPI_Comm comm, int n, const double* A, const double* B,
                                        const double* C, const double* d, int nrhs, bool periodic,
                                        long long first, int count, double* x) {
-  constexpr int bb = BS * BS;
   int rank = 0, P = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &P);
@@ -153,28 +152,51 @@ void SubstructuredBlockLine::solveImpl(MPI_Comm comm, int n, const double* A, co
   const bool hasL = rank > 0 || periodic, hasR = rank + 1 < P || periodic;
   if (n < 2 || count < n || count > n + 1 || (count == n + 1 && !hasR))
     throw std::invalid_argument("SubstructuredBlockLine: needs >= 2 rows per rank and count = nloc (+1)");
-  const int cP = nrhs, cQ = nrhs + (hasL ? BS : 0), m = cQ + (hasR ? BS : 0), rs = BS * m;
+  const int cP = nrhs, cQ = nrhs + (hasL ? BS : 0), m = cQ + (hasR ? BS : 0);
+  const Layout L{n, nrhs, cP, cQ, m, BS * m, hasL, hasR};
+  const bool ok = eliminateLocal<BS>(L, A, B, C, d);
+  gatherEnds<BS>(comm, P, L, ok);
+  reducedSolve<BS>(P, nrhs, periodic, &zr_);
+  double xl[BS * 8], xr[BS * 8]; // nrhs <= 8
+  finishRows<BS>(L, rank, P, xl, xr, x);
+  if (count == n + 1)
+    for (int e = 0; e < BS * nrhs; ++e) x[(size_t)n * BS * nrhs + e] = xr[e];
+  (void)first;
+  checkResidual<BS>(comm, L, A, B, C, d, xl, xr, x);
+}
+
+// Pass 1: this rank's rows of T_r [Y P Q] = [d, -A_0 E_0, -C_{n-1} E_{n-1}] into R_; false on a tiny pivot.
+template <int BS>
+bool SubstructuredBlockLine::eliminateLocal(const Layout& L, const double* A, const double* B,
+                                            const double* C, const double* d) {
+  constexpr int bb = BS * BS;
+  const int n = L.n, nrhs = L.nrhs, m = L.m, rs = L.rs;
   R_.assign((size_t)n * rs, 0.0);
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < BS; ++a)
       for (int k = 0; k < nrhs; ++k) R_[(size_t)i * rs + a * m + k] = d[((size_t)i * BS + a) * nrhs + k];
   for (int a = 0; a < BS; ++a)
     for (int b = 0; b < BS; ++b) {
-      if (hasL) R_[a * m + cP + b] = -A[a * BS + b];
-      if (hasR) R_[(size_t)(n - 1) * rs + a * m + cQ + b] = -C[(size_t)(n - 1) * bb + a * BS + b];
+      if (L.hasL) R_[a * m + L.cP + b] = -A[a * BS + b];
+      if (L.hasR) R_[(size_t)(n - 1) * rs + a * m + L.cQ + b] = -C[(size_t)(n - 1) * bb + a * BS + b];
     }
-  const bool ok = eliminate<BS>(n, A, B, C, nrhs, cQ, m, R_.data());
+  return eliminate<BS>(n, A, B, C, nrhs, L.cQ, m, R_.data());
+}
 
-  // Ends: YF, YL (bs x nrhs), PF, PL, QF, QL (bs x bs), and the local success flag.
+// Pass 2: the end rows of every rank (YF, YL: bs x nrhs; PF, PL, QF, QL: bs x bs; and the local success
+// flag) into all_ends_, by one MPI_Allgather. Throws NeedsFallback (on every rank) if any rank failed.
+template <int BS> void SubstructuredBlockLine::gatherEnds(MPI_Comm comm, int P, const Layout& L, bool ok) {
+  constexpr int bb = BS * BS;
+  const int nrhs = L.nrhs, m = L.m;
   const int E = 2 * BS * nrhs + 4 * bb + 1;
   ends_.assign(E, 0.0);
   for (int side = 0; side < 2; ++side) {
-    const double* row = R_.data() + (size_t)(side ? n - 1 : 0) * rs;
+    const double* row = R_.data() + (size_t)(side ? L.n - 1 : 0) * L.rs;
     for (int a = 0; a < BS; ++a) {
       for (int k = 0; k < nrhs; ++k) ends_[side * BS * nrhs + a * nrhs + k] = row[a * m + k];
       for (int b = 0; b < BS; ++b) {
-        if (hasL) ends_[2 * BS * nrhs + side * bb + a * BS + b] = row[a * m + cP + b];
-        if (hasR) ends_[2 * BS * nrhs + (2 + side) * bb + a * BS + b] = row[a * m + cQ + b];
+        if (L.hasL) ends_[2 * BS * nrhs + side * bb + a * BS + b] = row[a * m + L.cP + b];
+        if (L.hasR) ends_[2 * BS * nrhs + (2 + side) * bb + a * BS + b] = row[a * m + L.cQ + b];
       }
     }
   }
@@ -187,31 +209,41 @@ void SubstructuredBlockLine::solveImpl(MPI_Comm comm, int n, const double* A, co
     ++stats_.fallbacks;
     throw NeedsFallback{};
   }
-  reducedSolve<BS>(P, nrhs, periodic, &zr_);
-  const int N = 2 * P * BS;
+}
+
+// Pass 3, after reducedSolve: the neighbours' rows xl (last row of the rank before) and xr (first row of the
+// rank after; zero where there is none), and this rank's rows x_i = Y_i + P_i xl + Q_i xr.
+template <int BS>
+void SubstructuredBlockLine::finishRows(const Layout& L, int rank, int P, double* xl, double* xr, double* x) {
+  const int n = L.n, nrhs = L.nrhs, m = L.m, N = 2 * P * BS;
   const int left = rank > 0 ? rank - 1 : P - 1, right = rank + 1 < P ? rank + 1 : 0;
-  double xl[BS * 8], xr[BS * 8]; // nrhs <= 8
   for (int a = 0; a < BS; ++a)
     for (int k = 0; k < nrhs; ++k) {
-      xl[a * nrhs + k] = hasL ? zr_[(size_t)k * N + (2 * left + 1) * BS + a] : 0.0;
-      xr[a * nrhs + k] = hasR ? zr_[(size_t)k * N + 2 * right * BS + a] : 0.0;
+      xl[a * nrhs + k] = L.hasL ? zr_[(size_t)k * N + (2 * left + 1) * BS + a] : 0.0;
+      xr[a * nrhs + k] = L.hasR ? zr_[(size_t)k * N + 2 * right * BS + a] : 0.0;
     }
   for (int i = 0; i < n; ++i) {
-    const double* Ri = R_.data() + (size_t)i * rs;
+    const double* Ri = R_.data() + (size_t)i * L.rs;
     for (int a = 0; a < BS; ++a)
       for (int k = 0; k < nrhs; ++k) {
         double v = Ri[a * m + k];
         for (int b = 0; b < BS; ++b) {
-          if (hasL) v += Ri[a * m + cP + b] * xl[b * nrhs + k];
-          if (hasR) v += Ri[a * m + cQ + b] * xr[b * nrhs + k];
+          if (L.hasL) v += Ri[a * m + L.cP + b] * xl[b * nrhs + k];
+          if (L.hasR) v += Ri[a * m + L.cQ + b] * xr[b * nrhs + k];
         }
         x[((size_t)i * BS + a) * nrhs + k] = v;
       }
   }
-  if (count == n + 1)
-    for (int e = 0; e < BS * nrhs; ++e) x[(size_t)n * BS * nrhs + e] = xr[e];
+}
 
-  // Residual of this rank's rows of the global system (x_{-1} = xl, x_n = xr).
+// Pass 4: residual of this rank's rows of the global system (x_{-1} = xl, x_n = xr), reduced over the ranks
+// (one MPI_Allreduce). Throws NeedsFallback (on every rank) if it exceeds the tolerance.
+template <int BS>
+void SubstructuredBlockLine::checkResidual(MPI_Comm comm, const Layout& L, const double* A, const double* B,
+                                           const double* C, const double* d, const double* xl,
+                                           const double* xr, const double* x) {
+  constexpr int bb = BS * BS;
+  const int n = L.n, nrhs = L.nrhs;
   double worst[2] = {0.0, 0.0}; // max |residual|, max |d|
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < BS; ++a)
@@ -222,13 +254,12 @@ void SubstructuredBlockLine::solveImpl(MPI_Comm comm, int n, const double* A, co
           const double xm1 = i > 0 ? x[((size_t)(i - 1) * BS + b) * nrhs + k] : xl[b * nrhs + k];
           const double xp1 = i + 1 < n ? x[((size_t)(i + 1) * BS + b) * nrhs + k] : xr[b * nrhs + k];
           r += B[(size_t)i * bb + a * BS + b] * x[((size_t)i * BS + b) * nrhs + k];
-          if (i > 0 || hasL) r += A[(size_t)i * bb + a * BS + b] * xm1;
-          if (i + 1 < n || hasR) r += C[(size_t)i * bb + a * BS + b] * xp1;
+          if (i > 0 || L.hasL) r += A[(size_t)i * bb + a * BS + b] * xm1;
+          if (i + 1 < n || L.hasR) r += C[(size_t)i * bb + a * BS + b] * xp1;
         }
         worst[0] = std::max(worst[0], std::isfinite(r) ? std::fabs(r) : 1e300);
       }
   MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, comm);
-  (void)first;
   if (!(worst[0] <= tolerance * std::max(worst[1], 1e-300))) {
     ++stats_.fallbacks;
     throw NeedsFallback{};

@@ -51,6 +51,20 @@ private:
   bool eliminate(int n, const double* A, const double* B, const double* C, int nrhs, int mf, int m,
                  double* R);
   template <int BS> void reducedSolve(int P, int nrhs, bool periodic, std::vector<double>* z);
+  // Columns of R_ (this rank's block rows of [Y P Q], see 1. above): Y in 0 .. nrhs - 1, P from cP (if hasL),
+  // Q from cQ (if hasR); m columns, block row stride rs = bs m.
+  struct Layout {
+    int n, nrhs, cP, cQ, m, rs;
+    bool hasL, hasR;
+  };
+  // The steps of solveImpl (1. to 4. above).
+  template <int BS>
+  bool eliminateLocal(const Layout& L, const double* A, const double* B, const double* C, const double* d);
+  template <int BS> void gatherEnds(MPI_Comm comm, int P, const Layout& L, bool ok);
+  template <int BS> void finishRows(const Layout& L, int rank, int P, double* xl, double* xr, double* x);
+  template <int BS>
+  void checkResidual(MPI_Comm comm, const Layout& L, const double* A, const double* B, const double* C,
+                     const double* d, const double* xl, const double* xr, const double* x);
 
   DistributedTridiag fallback_;
   Stats stats_;

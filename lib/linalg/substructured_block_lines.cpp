@@ -401,21 +401,17 @@ void checkArguments(MPI_Comm comm, int nlines, int nloc, bool periodic, int coun
 void SubstructuredBlockLines::fallbackLines(MPI_Comm comm, int bs, int nrhs, int nloc, const double* A,
                                             const double* B, const double* C, int ms, const double* d,
                                             bool periodic, int count, double* x) {
-  int rank = 0, P = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &P);
-  const int bb = bs * bs, ny = bs * nrhs, per_row = 3 * bb + ny;
-  nlocs_.assign(P, nloc);
-  if (P > 1) MPI_Allgather(&nloc, 1, MPI_INT, nlocs_.data(), 1, MPI_INT, comm);
-  long long nb = 0, offset = 0;
-  for (int r = 0; r < P; ++r) {
-    if (r == rank) offset = nb;
-    nb += nlocs_[r];
-  }
-  const int nfail = (int)fail_.size();
-  if ((long long)nfail * nb * per_row > INT_MAX)
-    throw std::runtime_error("SubstructuredBlockLines: " + std::to_string(nfail) +
-                             " lines need the gathered fallback solve, too many for one MPI_Allgatherv");
+  long long offset = 0;
+  const long long nb = gatherFailingRows(comm, bs, nrhs, nloc, A, B, C, ms, d, &offset);
+  const long long N = nb * bs;
+  if (N > INT_MAX / 8) throw std::runtime_error("SubstructuredBlockLines: line too long for the fallback");
+  for (int f = 0; f < (int)fail_.size(); ++f) solveFailingLine(f, bs, nrhs, nb, periodic, offset, count, x);
+}
+
+// This rank's rows of the lines in fail_ into send_ (see fallbackLines for the layout).
+void SubstructuredBlockLines::packFailingRows(int bs, int nrhs, int nloc, const double* A, const double* B,
+                                              const double* C, int ms, const double* d) {
+  const int bb = bs * bs, ny = bs * nrhs, per_row = 3 * bb + ny, nfail = (int)fail_.size();
   send_.resize((size_t)nfail * nloc * per_row);
   for (int f = 0; f < nfail; ++f) {
     const size_t l = fail_[f];
@@ -427,6 +423,29 @@ void SubstructuredBlockLines::fallbackLines(MPI_Comm comm, int bs, int nrhs, int
       for (int k = 0; k < ny; ++k) s[3 * bb + k] = d[row * ny + k];
     }
   }
+}
+
+// The rows of the lines in fail_ of every rank into recv_ (one MPI_Allgather of the row counts into nlocs_,
+// one MPI_Allgatherv). Returns the global block rows of a line, *offset: this rank's first.
+long long SubstructuredBlockLines::gatherFailingRows(MPI_Comm comm, int bs, int nrhs, int nloc,
+                                                     const double* A, const double* B, const double* C,
+                                                     int ms, const double* d, long long* offset) {
+  int rank = 0, P = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &P);
+  const int bb = bs * bs, ny = bs * nrhs, per_row = 3 * bb + ny;
+  nlocs_.assign(P, nloc);
+  if (P > 1) MPI_Allgather(&nloc, 1, MPI_INT, nlocs_.data(), 1, MPI_INT, comm);
+  long long nb = 0;
+  for (int r = 0; r < P; ++r) {
+    if (r == rank) *offset = nb;
+    nb += nlocs_[r];
+  }
+  const int nfail = (int)fail_.size();
+  if ((long long)nfail * nb * per_row > INT_MAX)
+    throw std::runtime_error("SubstructuredBlockLines: " + std::to_string(nfail) +
+                             " lines need the gathered fallback solve, too many for one MPI_Allgatherv");
+  packFailingRows(bs, nrhs, nloc, A, B, C, ms, d);
   if (P > 1) {
     counts_.resize(P);
     displs_.resize(P);
@@ -441,46 +460,65 @@ void SubstructuredBlockLines::fallbackLines(MPI_Comm comm, int bs, int nrhs, int
   } else {
     recv_ = send_;
   }
-  const long long N = nb * bs;
-  if (N > INT_MAX / 8) throw std::runtime_error("SubstructuredBlockLines: line too long for the fallback");
-  const int n = (int)N, kl = periodic ? 3 * bs - 1 : 2 * bs - 1, ku = kl, ldab = 2 * kl + ku + 1;
-  auto pos = [&](long long i) { return periodic ? (2 * i <= nb - 1 ? 2 * i : 2 * (nb - 1 - i) + 1) : i; };
-  for (int f = 0; f < nfail; ++f) {
-    band_.assign((size_t)ldab * n, 0.0);
-    rhs_.assign((size_t)n * nrhs, 0.0);
-    auto add = [&](long long pi, long long pj, const double* M) {
-      for (int a = 0; a < bs; ++a)
-        for (int b = 0; b < bs; ++b) {
-          const long long row = pi * bs + a, col = pj * bs + b;
-          band_[(size_t)(kl + ku + row - col) + (size_t)col * ldab] += M[a * bs + b];
-        }
-    };
-    long long i = 0; // global block row; rank r's data start at nfail * (rows before r) * per_row
-    for (int r = 0; r < P; ++r) {
-      const double* base = recv_.data() + ((size_t)nfail * i + (size_t)f * nlocs_[r]) * per_row;
-      for (int k = 0; k < nlocs_[r]; ++k, ++i) {
-        const double* s = base + (size_t)k * per_row;
-        const long long p = pos(i);
-        add(p, p, s + bb);
-        if (i > 0 || periodic) add(p, pos((i - 1 + nb) % nb), s);
-        if (i + 1 < nb || periodic) add(p, pos((i + 1) % nb), s + 2 * bb);
-        for (int a = 0; a < bs; ++a)
-          for (int c = 0; c < nrhs; ++c) rhs_[(size_t)c * n + p * bs + a] = s[3 * bb + a * nrhs + c];
+  return nb;
+}
+
+namespace {
+// Position of global block row i of a fallback line of nb block rows in its band system (see fallbackLines).
+long long bandPos(long long i, long long nb, bool periodic) {
+  return periodic ? (2 * i <= nb - 1 ? 2 * i : 2 * (nb - 1 - i) + 1) : i;
+}
+} // namespace
+
+// The band system (band_: kl = ku sub- and super-diagonals, LAPACK band storage; rhs_: column-major right-hand
+// sides) of failing line fail_[f] from its rows gathered in recv_.
+void SubstructuredBlockLines::assembleFailingLine(int f, int bs, int nrhs, long long nb, bool periodic,
+                                                  int kl) {
+  const int P = (int)nlocs_.size(), nfail = (int)fail_.size();
+  const int bb = bs * bs, per_row = 3 * bb + bs * nrhs, n = (int)(nb * bs), ku = kl, ldab = 2 * kl + ku + 1;
+  band_.assign((size_t)ldab * n, 0.0);
+  rhs_.assign((size_t)n * nrhs, 0.0);
+  auto add = [&](long long pi, long long pj, const double* M) {
+    for (int a = 0; a < bs; ++a)
+      for (int b = 0; b < bs; ++b) {
+        const long long row = pi * bs + a, col = pj * bs + b;
+        band_[(size_t)(kl + ku + row - col) + (size_t)col * ldab] += M[a * bs + b];
       }
-    }
-    ipiv_.resize(n);
-    int info = 0;
-    dgbsv_(&n, &kl, &ku, &nrhs, band_.data(), &ldab, ipiv_.data(), rhs_.data(), &n, &info);
-    if (info != 0)
-      throw std::runtime_error("SubstructuredBlockLines: line " + std::to_string(fail_[f]) +
-                               " is singular (exact fallback solve, LAPACK dgbsv info " +
-                               std::to_string(info) + ")");
-    double* xl = x + (size_t)fail_[f] * count * ny;
-    for (int k = 0; k < count; ++k) {
-      const long long g = (offset + k) % nb, p = pos(g);
+  };
+  long long i = 0; // global block row; rank r's data start at nfail * (rows before r) * per_row
+  for (int r = 0; r < P; ++r) {
+    const double* base = recv_.data() + ((size_t)nfail * i + (size_t)f * nlocs_[r]) * per_row;
+    for (int k = 0; k < nlocs_[r]; ++k, ++i) {
+      const double* s = base + (size_t)k * per_row;
+      const long long p = bandPos(i, nb, periodic);
+      add(p, p, s + bb);
+      if (i > 0 || periodic) add(p, bandPos((i - 1 + nb) % nb, nb, periodic), s);
+      if (i + 1 < nb || periodic) add(p, bandPos((i + 1) % nb, nb, periodic), s + 2 * bb);
       for (int a = 0; a < bs; ++a)
-        for (int c = 0; c < nrhs; ++c) xl[(size_t)k * ny + a * nrhs + c] = rhs_[(size_t)c * n + p * bs + a];
+        for (int c = 0; c < nrhs; ++c) rhs_[(size_t)c * n + p * bs + a] = s[3 * bb + a * nrhs + c];
     }
+  }
+}
+
+// Band LU (dgbsv, partial pivoting) of failing line fail_[f] (nb block rows); this rank's count solution rows,
+// from global block row offset, into x. Throws std::runtime_error if the line is singular.
+void SubstructuredBlockLines::solveFailingLine(int f, int bs, int nrhs, long long nb, bool periodic,
+                                               long long offset, int count, double* x) {
+  const int ny = bs * nrhs, n = (int)(nb * bs), kl = periodic ? 3 * bs - 1 : 2 * bs - 1, ku = kl;
+  const int ldab = 2 * kl + ku + 1;
+  assembleFailingLine(f, bs, nrhs, nb, periodic, kl);
+  ipiv_.resize(n);
+  int info = 0;
+  dgbsv_(&n, &kl, &ku, &nrhs, band_.data(), &ldab, ipiv_.data(), rhs_.data(), &n, &info);
+  if (info != 0)
+    throw std::runtime_error("SubstructuredBlockLines: line " + std::to_string(fail_[f]) +
+                             " is singular (exact fallback solve, LAPACK dgbsv info " + std::to_string(info) +
+                             ")");
+  double* xl = x + (size_t)fail_[f] * count * ny;
+  for (int k = 0; k < count; ++k) {
+    const long long g = (offset + k) % nb, p = bandPos(g, nb, periodic);
+    for (int a = 0; a < bs; ++a)
+      for (int c = 0; c < nrhs; ++c) xl[(size_t)k * ny + a * nrhs + c] = rhs_[(size_t)c * n + p * bs + a];
   }
 }
 

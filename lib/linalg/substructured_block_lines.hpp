@@ -74,6 +74,14 @@ private:
   // them is singular.
   void fallbackLines(MPI_Comm comm, int bs, int nrhs, int nloc, const double* A, const double* B,
                      const double* C, int ms, const double* d, bool periodic, int count, double* x);
+  // Its steps: rows of the failing lines to every rank (recv_), then per line band assembly and dgbsv.
+  long long gatherFailingRows(MPI_Comm comm, int bs, int nrhs, int nloc, const double* A, const double* B,
+                              const double* C, int ms, const double* d, long long* offset);
+  void packFailingRows(int bs, int nrhs, int nloc, const double* A, const double* B, const double* C, int ms,
+                       const double* d);
+  void assembleFailingLine(int f, int bs, int nrhs, long long nb, bool periodic, int kl);
+  void solveFailingLine(int f, int bs, int nrhs, long long nb, bool periodic, long long offset, int count,
+                        double* x);
 
   Stats stats_;
   std::vector<double> ends_, all_ends_, res_, G_, work_, red_, z_, zu_, s_, send_, recv_, band_, rhs_;
