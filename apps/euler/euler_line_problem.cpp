@@ -11,20 +11,6 @@ namespace {
 PrimN alongX(const Prim& w) {
   return PrimN{w.rho, {w.u, 0.0, 0.0}, w.p};
 }
-
-BcN gridBc(Bc bc) {
-  switch (bc) {
-  case Bc::Periodic:
-    return BcN::Periodic;
-  case Bc::Outflow:
-    return BcN::Outflow;
-  case Bc::Reflecting:
-    return BcN::Reflecting;
-  case Bc::Inflow:
-    return BcN::Custom;
-  }
-  return BcN::Outflow;
-}
 } // namespace
 
 void lineProblemAsGrid(const Problem& line, ProblemND* pr) {
@@ -52,5 +38,4 @@ void lineProblemAsGrid(const Problem& line, ProblemND* pr) {
     return alongX(in[side]);
   };
 }
-
 } // namespace euler_app

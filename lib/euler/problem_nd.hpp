@@ -69,6 +69,9 @@ PetscErrorCode createExplosionProblemND(MPI_Comm comm, const std::string& name, 
 PetscErrorCode createTaylorGreenProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                           ProblemND* problem);
 // Any 1D problem name of problem.hpp placed along `axis`.
+// The boundary of a grid face for a 1D boundary condition (Inflow: a Custom face with the 1D inflow state).
+BcN gridBc(Bc bc);
+
 PetscErrorCode createPlanarProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                      ProblemND* problem);
 

@@ -16,7 +16,9 @@ PrimN alongAxis(const Prim& w, int axis) {
   q.u[axis] = w.u;
   return q;
 }
-BcN mapBc(Bc bc) {
+} // namespace
+
+BcN gridBc(Bc bc) {
   switch (bc) {
   case Bc::Periodic:
     return BcN::Periodic;
@@ -29,7 +31,6 @@ BcN mapBc(Bc bc) {
   }
   return BcN::Outflow;
 }
-} // namespace
 
 PetscErrorCode createPlanarProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                      ProblemND* pr) {
@@ -53,8 +54,8 @@ PetscErrorCode createPlanarProblemND(MPI_Comm comm, const std::string& name, int
   pr->lo[axis] = p1.xmin;
   pr->hi[axis] = p1.xmax;
   pr->default_n[axis] = p1.default_nx;
-  pr->bc[axis][0] = mapBc(p1.bc_left);
-  pr->bc[axis][1] = mapBc(p1.bc_right);
+  pr->bc[axis][0] = gridBc(p1.bc_left);
+  pr->bc[axis][1] = gridBc(p1.bc_right);
   const auto init1 = p1.initial;
   pr->initial = [init1, axis](const double* x) { return alongAxis(init1(x[axis]), axis); };
   if (p1.exact) {
