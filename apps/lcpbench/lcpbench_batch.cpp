@@ -67,13 +67,12 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
   b->delay = o.delay;
   b->count = o.count;
   if (!b->fromFiles()) PetscFunctionReturn(0);
-  b->files = o.files;
-  b->file_problems.resize(b->files.size());
-  b->file_errors.resize(b->files.size());
-  for (size_t i = 0; i < b->files.size(); ++i)
-    PetscCall(readProblemFile(comm, b->files[i], fclibModel(o.fclib_model), &b->file_problems[i],
+  b->file_problems.resize(o.files.size());
+  b->file_errors.resize(o.files.size());
+  for (size_t i = 0; i < o.files.size(); ++i)
+    PetscCall(readProblemFile(comm, o.files[i], fclibModel(o.fclib_model), &b->file_problems[i],
                               &b->file_errors[i]));
-  b->count = static_cast<long long>(b->files.size());
+  b->count = static_cast<long long>(o.files.size());
   PetscFunctionReturn(0);
 }
 
@@ -84,20 +83,16 @@ void solveOne(const Batch& b, long long k, double* rec) {
   rec[0] = static_cast<double>(k);
   rec[1] = p ? p->size() : 0;
   for (size_t s = 0; s < b.solvers.size(); ++s) {
-    double* r = rec + 2 + s * kFields;
-    if (!err.empty() || !p) { // invalid input: no solver runs
-      r[0] = static_cast<double>(Status::InvalidInput);
-      r[1] = r[2] = r[3] = r[5] = 0.0;
-      r[4] = kInf;
-      continue;
-    }
-    const Result res = solve(*b.solvers[s], *p, b.opt);
-    r[0] = static_cast<double>(res.status);
-    r[1] = res.iterations;
-    r[2] = static_cast<double>(res.pivots);
-    r[3] = res.time;
-    r[4] = res.residual;
-    r[5] = res.cpu_time;
+    Result r; // invalid input: no solver runs (zero counts and times, infinite residual)
+    r.status = Status::InvalidInput;
+    if (err.empty() && p) r = solve(*b.solvers[s], *p, b.opt);
+    const double v[kFields] = {static_cast<double>(r.status),
+                               static_cast<double>(r.iterations),
+                               static_cast<double>(r.pivots),
+                               r.time,
+                               r.residual,
+                               r.cpu_time};
+    std::copy(v, v + kFields, rec + 2 + s * kFields);
   }
   if (b.delay > 0) usleep(static_cast<useconds_t>(b.delay * 1e6));
 }
