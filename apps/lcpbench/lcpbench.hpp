@@ -64,8 +64,7 @@ struct Batch {
   int recordLength() const { return 2 + static_cast<int>(solvers.size()) * kFields; } // index, n, fields
 };
 
-// Collective: the batch of the options; files are read here (a malformed HDF5 file is an error for the job,
-// any other invalid file is recorded in file_errors).
+// Collective: the batch; files are read here (a malformed HDF5 file stops the job, others go to file_errors).
 PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b);
 // Problem k solved by every solver: rec = k, n, then kFields values per solver. Depends on k alone.
 void solveOne(const Batch& b, long long k, double* rec);
@@ -91,8 +90,7 @@ void forBlocks(const suite::H5AppendFile& f, const std::string& path, unsigned l
 class Store {
 public:
   explicit Store(const Batch& b) : count(b.count), b_(b), rec_len_(b.recordLength()) {}
-  // A new OUT.partial (run 0), built under another name and renamed once complete on disk: a kill during
-  // the creation never leaves a half-made OUT.partial.
+  // A new OUT.partial (run 0), built under another name and renamed once complete: never half-made.
   void create(const std::string& partial);
   void add(const double* rec) { buf_.insert(buf_.end(), rec, rec + rec_len_); } // buffers one record
   long long buffered() const { return static_cast<long long>(buf_.size()) / rec_len_; }
@@ -140,8 +138,7 @@ PetscErrorCode startBatchFile(const suite::RunContext& ctx, const Options& o, co
 // Collective: solves every problem not done, results in store (rank 0).
 PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
                             RunState* st);
-// Collective: closes OUT.partial of an interrupted run, or completes OUT, prints the summary and checks the
-// outcome.
+// Collective: closes OUT.partial of an interrupted run, or completes OUT, prints the summary, checks the outcome.
 PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, const RunState& st,
                          Store* store);
 

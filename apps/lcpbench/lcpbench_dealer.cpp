@@ -91,8 +91,7 @@ private:
     PetscFunctionReturn(0);
   }
 
-  // One request: [stop flag, records of the previous chunk]; the answer is the next chunk [k0, k1), empty
-  // when the dealing is over.
+  // One request: [stop flag, records of the previous chunk]; answer: the next chunk [k0, k1), empty at the end.
   PetscErrorCode answer(const MPI_Status& st) {
     MPI_Comm comm = ctx_.comm();
     int len = 0;
