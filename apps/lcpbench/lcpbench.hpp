@@ -1,7 +1,5 @@
-// What lcpbench's parts share, one .cpp each: lcpbench_options (options, -help from the registries),
-// lcpbench_batch (problem source and solvers), lcpbench_store (the results file OUT.partial and the summary
-// pass), lcpbench_resume (batch header; OUT.partial resumed or created), lcpbench_dealer (load balancing,
-// flushes), lcpbench_finalize (end of a run). main.cpp runs them and describes the streaming protocol.
+// What lcpbench's parts share, one .cpp each (options, batch, store, resume, dealer, finalize); main.cpp runs
+// them and describes the streaming protocol.
 #pragma once
 
 #include "core/run_context.hpp"
@@ -10,6 +8,7 @@
 #include "lcp/readers.hpp"
 #include "lcp/solver.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -54,7 +53,6 @@ struct Batch {
   std::string family;
   suite::lcp::GeneratorParams gp;
   long long count = 0;
-  std::vector<std::string> files;
   std::vector<suite::lcp::Problem> file_problems; // family "file": every rank holds them (read up front)
   std::vector<std::string> file_errors;           // "" or the reason a file is invalid
   std::vector<std::unique_ptr<suite::lcp::Solver>> solvers;
@@ -66,8 +64,7 @@ struct Batch {
   int recordLength() const { return 2 + static_cast<int>(solvers.size()) * kFields; } // index, n, fields
 };
 
-// Collective: the batch of the options; files are read here (a malformed HDF5 file is an error for the job,
-// any other invalid file is recorded in file_errors).
+// Collective: the batch; files are read here (a malformed HDF5 file stops the job, others go to file_errors).
 PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b);
 // Problem k solved by every solver: rec = k, n, then kFields values per solver. Depends on k alone.
 void solveOne(const Batch& b, long long k, double* rec);
@@ -77,40 +74,43 @@ constexpr unsigned long long kMaxRuns = 4096; // runs (start + resumes) whose wa
 // The batch header (name, value): /batch attributes that a resumed batch must match exactly.
 using BatchHeader = std::vector<std::pair<std::string, std::string>>;
 
+// fn(a, v) for each block v = path[a, a + kBlock) of a 1-D dataset of f with count entries.
+template <class T, class F>
+void forBlocks(const suite::H5AppendFile& f, const std::string& path, unsigned long long count, F fn) {
+  std::vector<T> v;
+  for (unsigned long long a = 0; a < count; a += kBlock) {
+    v.resize(std::min(kBlock, count - a));
+    f.read(path, a, v.data(), v.size());
+    fn(a, v);
+  }
+}
+
 // Rank 0's results file OUT.partial: every per-problem dataset preallocated at its final size, records
 // buffered and written in place. All methods throw std::runtime_error.
 class Store {
 public:
-  Store(const Batch& b, BatchHeader header) : b_(b), header_(std::move(header)), rec_len_(b.recordLength()) {}
-  // A new OUT.partial (run 0), built under another name and renamed once complete on disk: a kill during
-  // the creation never leaves a half-made OUT.partial.
+  explicit Store(const Batch& b) : count(b.count), b_(b), rec_len_(b.recordLength()) {}
+  // A new OUT.partial (run 0), built under another name and renamed once complete: never half-made.
   void create(const std::string& partial);
-  void resumeAs(int run) { run_ = run; } // continues the open file as run number `run`
-  void add(const double* rec) {          // buffers one record
-    buf_.insert(buf_.end(), rec, rec + rec_len_);
-    ++nbuf_;
-  }
-  long long buffered() const { return nbuf_; }
+  void add(const double* rec) { buf_.insert(buf_.end(), rec, rec + rec_len_); } // buffers one record
+  long long buffered() const { return static_cast<long long>(buf_.size()) / rec_len_; }
   // Writes the buffered records, flushes, then sets their done flags and flushes again.
   void flush(double run_wall);
-  suite::H5AppendFile& file() { return f_; }
-  const BatchHeader& header() const { return header_; }
-  long long count() const { return b_.count; }
-  int run() const { return run_; }
   // Wall seconds of every run and problems solved by each run.
   void runTotals(std::vector<double>* walls, std::vector<double>* solved);
+
+  suite::H5AppendFile file;
+  BatchHeader header; // set by startBatchFile
+  const long long count;
+  int run = 0; // this run's number: 0 for a new OUT.partial, one more per resume
 
 private:
   long long key(long long i) const { return static_cast<long long>(buf_[i * rec_len_]); }
   template <class T> void writeColumn(const std::vector<long long>& order, int c, const std::string& path);
   void writeBuffered();
   const Batch& b_;
-  BatchHeader header_;
-  int rec_len_;
-  suite::H5AppendFile f_;
+  const int rec_len_;
   std::vector<double> buf_;
-  long long nbuf_ = 0;
-  int run_ = 0;
 };
 
 // Statistics of one solver (trivially copyable: broadcast as bytes).
@@ -124,27 +124,22 @@ struct SolverSummary {
 // One streamed pass over /results/<solver>/: histograms and summary attributes written to f.
 SolverSummary summarise(suite::H5AppendFile& f, const std::string& solver, long long count);
 
-struct ResumePoint {
+// Where the batch stands: startBatchFile sets done and ndone0, dealProblems the rest.
+struct RunState {
   std::vector<unsigned char> done; // rank 0: done flags (1 byte per problem)
-  long long ndone = 0;             // every rank: problems done before this run
+  long long ndone0 = 0;            // every rank: problems done before this run
+  long long ndone = 0;             // every rank: problems done, this run and before
+  int stopped = 0;                 // 0: no stop, 1: signal, 2: -max_walltime
+  double wall = 0;                 // seconds spent dealing
 };
-BatchHeader batchHeader(const Options& o, const Batch& b);
-// Collective: rank 0 resumes OUT.partial (if resume and it exists) or creates it.
-PetscErrorCode startBatchFile(const suite::RunContext& ctx, const std::string& partial, bool resume,
-                              Store* store, ResumePoint* rp);
-
-struct DealOutcome {
-  long long ndone = 0; // every rank: problems done, this run and before
-  int stopped = 0;     // 0: no stop, 1: signal, 2: -max_walltime
-  double wall = 0;     // seconds spent dealing
-};
-// Collective: solves every problem not done in rp, results in store (rank 0).
-PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b,
-                            const ResumePoint& rp, Store* store, DealOutcome* out);
-
-// Collective: closes OUT.partial of an interrupted run, or completes OUT, prints the summary and checks the
-// outcome. ndone0: problems done before this run.
-PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, long long ndone0,
-                         const DealOutcome& deal, Store* store);
+// Collective: rank 0 resumes OUT.partial (under -resume, if it exists) or creates it.
+PetscErrorCode startBatchFile(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
+                              RunState* st);
+// Collective: solves every problem not done, results in store (rank 0).
+PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
+                            RunState* st);
+// Collective: closes OUT.partial of an interrupted run, or completes OUT, prints the summary, checks the outcome.
+PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, const RunState& st,
+                         Store* store);
 
 } // namespace lcpbench_app

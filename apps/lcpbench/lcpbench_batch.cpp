@@ -1,7 +1,8 @@
-// lcpbench's batch (see lcpbench.hpp): where problem k comes from (a generator family of lib/lcp, seeded per
-// index, or the k-th -file read up front by every rank) and the solvers it is given to. A record depends on
-// k alone, so results do not depend on the rank that solves it.
+// lcpbench's batch: problem k is generated (a family of lib/lcp, seeded per index) or the k-th -file (read up
+// front by every rank), and given to every solver. A record depends on k alone, not on the rank solving it.
 #include "lcpbench.hpp"
+
+#include "core/rank0_work.hpp"
 
 #include <unistd.h>
 
@@ -35,22 +36,6 @@ PetscErrorCode readProblemFile(MPI_Comm comm, const std::string& f, FclibModel m
   PetscFunctionReturn(0);
 }
 
-// Problem k: generated, or the k-th file; nullptr when invalid (*err says why).
-const Problem* problem(const Batch& b, long long k, Problem* gen, std::string* err) {
-  if (b.fromFiles()) {
-    *err = b.file_errors[k];
-    return err->empty() ? &b.file_problems[k] : nullptr;
-  }
-  try {
-    *gen = generate(b.family, b.gp, static_cast<std::uint64_t>(k));
-    *err = validate(*gen);
-    return gen;
-  } catch (const std::exception& e) {
-    *err = e.what();
-  }
-  return nullptr;
-}
-
 } // namespace
 
 PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
@@ -59,45 +44,45 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
   b->solver_names = o.solvers;
   for (const auto& s : b->solver_names) b->solvers.push_back(makeSolver(s));
   b->gp = {static_cast<int>(o.n), o.cond, o.qrange, o.lower, o.upper, static_cast<std::uint64_t>(o.seed)};
-  b->opt.max_iterations = static_cast<int>(o.max_it);
-  b->opt.omega = o.omega;
-  b->opt.block_size = static_cast<int>(o.block_size);
-  b->opt.rel_tol = o.rel_tol;
-  b->opt.refine = o.refine;
+  b->opt = {static_cast<int>(o.max_it), o.rel_tol, nullptr, o.omega, static_cast<int>(o.block_size),
+            o.refine == PETSC_TRUE};
   b->delay = o.delay;
   b->count = o.count;
   if (!b->fromFiles()) PetscFunctionReturn(0);
-  b->files = o.files;
-  b->file_problems.resize(b->files.size());
-  b->file_errors.resize(b->files.size());
-  for (size_t i = 0; i < b->files.size(); ++i)
-    PetscCall(readProblemFile(comm, b->files[i], fclibModel(o.fclib_model), &b->file_problems[i],
+  b->file_problems.resize(o.files.size());
+  b->file_errors.resize(o.files.size());
+  for (size_t i = 0; i < o.files.size(); ++i)
+    PetscCall(readProblemFile(comm, o.files[i], fclibModel(o.fclib_model), &b->file_problems[i],
                               &b->file_errors[i]));
-  b->count = static_cast<long long>(b->files.size());
+  b->count = static_cast<long long>(o.files.size());
   PetscFunctionReturn(0);
 }
 
 void solveOne(const Batch& b, long long k, double* rec) {
-  Problem gen;
+  Problem gen; // problem k: the k-th file, or generated (p: nullptr when invalid, err says why)
   std::string err;
-  const Problem* p = problem(b, k, &gen, &err);
+  const Problem* p = nullptr;
+  if (b.fromFiles()) {
+    err = b.file_errors[k];
+    p = err.empty() ? &b.file_problems[k] : nullptr;
+  } else {
+    err = suite::messageOf([&] { gen = generate(b.family, b.gp, static_cast<std::uint64_t>(k)); });
+    if (err.empty()) p = &gen;
+    if (p) err = validate(gen);
+  }
   rec[0] = static_cast<double>(k);
   rec[1] = p ? p->size() : 0;
   for (size_t s = 0; s < b.solvers.size(); ++s) {
-    double* r = rec + 2 + s * kFields;
-    if (!err.empty() || !p) { // invalid input: no solver runs
-      r[0] = static_cast<double>(Status::InvalidInput);
-      r[1] = r[2] = r[3] = r[5] = 0.0;
-      r[4] = kInf;
-      continue;
-    }
-    const Result res = solve(*b.solvers[s], *p, b.opt);
-    r[0] = static_cast<double>(res.status);
-    r[1] = res.iterations;
-    r[2] = static_cast<double>(res.pivots);
-    r[3] = res.time;
-    r[4] = res.residual;
-    r[5] = res.cpu_time;
+    Result r; // invalid input: no solver runs (zero counts and times, infinite residual)
+    r.status = Status::InvalidInput;
+    if (err.empty() && p) r = solve(*b.solvers[s], *p, b.opt);
+    const double v[kFields] = {static_cast<double>(r.status),
+                               static_cast<double>(r.iterations),
+                               static_cast<double>(r.pivots),
+                               r.time,
+                               r.residual,
+                               r.cpu_time};
+    std::copy(v, v + kFields, rec + 2 + s * kFields);
   }
   if (b.delay > 0) usleep(static_cast<useconds_t>(b.delay * 1e6));
 }

@@ -1,8 +1,6 @@
-// lcpbench's dealer (see lcpbench.hpp): dynamic load balancing of problem indices. Rank 0 deals chunks of
-// not-yet-done indices on request (MPI point-to-point) and solves problems itself between requests; workers
-// send the results of their previous chunk with the next request. Rank 0 buffers results in the Store and
-// flushes them every -flush_every problems or -flush_seconds. A stop (signal on any rank, -max_walltime)
-// ends the dealing: outstanding chunks are collected and flushed.
+// lcpbench's dealer: dynamic load balancing. Rank 0 deals chunks of not-yet-done problem indices on request
+// (MPI point-to-point), solves problems itself between requests and streams every result into the Store;
+// workers send the results of a chunk with their next request. A stop ends the dealing (main.cpp).
 #include "lcpbench.hpp"
 
 #include "core/progress.hpp"
@@ -18,17 +16,16 @@ constexpr int kTagRequest = 4101, kTagWork = 4102;
 // Rank 0: deals, solves between requests, streams the results into the Store.
 class Dealer {
 public:
-  Dealer(const suite::RunContext& ctx, const Options& o, const Batch& b, const ResumePoint& rp, Store* store)
-      : ctx_(ctx), o_(o), b_(b), done_(rp.done), ndone0_(rp.ndone), store_(store), rec_len_(b.recordLength()),
-        rec_(rec_len_), active_(ctx.size() - 1), ndone_(rp.ndone) {
+  Dealer(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store, RunState* st)
+      : ctx_(ctx), o_(o), b_(b), store_(store), st_(st), rec_len_(b.recordLength()), rec_(rec_len_),
+        active_(ctx.size() - 1) {
+    st->ndone = st->ndone0;
     // -chunk, or automatic (0): up to 64 problems, about 8 requests per rank
     chunk_ =
         o.chunk > 0 ? o.chunk : std::max<long long>(1, std::min<long long>(64, b.count / (8LL * ctx.size())));
     skipDone();
   }
-  long long ndone() const { return ndone_; }
-  int stopped() const { return stopped_; }
-
+  // Deals every problem not done, or until a stop (st->ndone, st->stopped).
   PetscErrorCode run() {
     suite::Progress progress(PETSC_COMM_SELF, ctx_.quiet(), ctx_.progressInterval(), 0.0);
     long long reported = -1;
@@ -44,22 +41,22 @@ public:
       } else if (active_ > 0) {
         PetscCall(serve(true));
       }
-      if (ndone_ != reported)
-        PetscCall(progress.updateCount(ndone_ - ndone0_, b_.count - ndone0_, "problems"));
-      reported = ndone_;
+      if (st_->ndone != reported)
+        PetscCall(progress.updateCount(st_->ndone - st_->ndone0, b_.count - st_->ndone0, "problems"));
+      reported = st_->ndone;
     }
     PetscCall(flushNow());
     PetscFunctionReturn(0);
   }
 
 private:
-  bool dealing() const { return !stopped_ && next_ < b_.count; }
+  bool dealing() const { return !st_->stopped && next_ < b_.count; }
   void skipDone() {
-    while (next_ < b_.count && done_[next_]) ++next_;
+    while (next_ < b_.count && st_->done[next_]) ++next_;
   }
   void checkStop() {
-    if (suite::g_stop_signal && !stopped_) stopped_ = 1;
-    if (o_.max_walltime > 0 && ctx_.wallSeconds() >= o_.max_walltime && !stopped_) stopped_ = 2;
+    if (suite::g_stop_signal && !st_->stopped) st_->stopped = 1;
+    if (o_.max_walltime > 0 && ctx_.wallSeconds() >= o_.max_walltime && !st_->stopped) st_->stopped = 2;
   }
 
   PetscErrorCode flushNow() {
@@ -75,7 +72,7 @@ private:
   PetscErrorCode add(const double* r) {
     PetscFunctionBeginUser;
     store_->add(r);
-    ++ndone_;
+    ++st_->ndone;
     if (store_->buffered() >= o_.flush_every || MPI_Wtime() - last_flush_ >= o_.flush_seconds)
       PetscCall(flushNow());
     PetscFunctionReturn(0);
@@ -83,21 +80,18 @@ private:
 
   // Answers the requests waiting (block: exactly one, waiting for it).
   PetscErrorCode serve(bool block) {
+    MPI_Status st;
+    int flag = 1;
     PetscFunctionBeginUser;
-    for (int flag = 1; flag;) {
-      MPI_Status st;
-      if (block)
-        PetscCallMPI(MPI_Probe(MPI_ANY_SOURCE, kTagRequest, ctx_.comm(), &st));
-      else
-        PetscCallMPI(MPI_Iprobe(MPI_ANY_SOURCE, kTagRequest, ctx_.comm(), &flag, &st));
+    do {
+      PetscCallMPI(block ? MPI_Probe(MPI_ANY_SOURCE, kTagRequest, ctx_.comm(), &st)
+                         : MPI_Iprobe(MPI_ANY_SOURCE, kTagRequest, ctx_.comm(), &flag, &st));
       if (flag) PetscCall(answer(st));
-      if (block) break;
-    }
+    } while (flag && !block);
     PetscFunctionReturn(0);
   }
 
-  // One request: [stop flag, records of the previous chunk]; the answer is the next chunk [k0, k1), empty
-  // when the dealing is over.
+  // One request: [stop flag, records of the previous chunk]; answer: the next chunk [k0, k1), empty at the end.
   PetscErrorCode answer(const MPI_Status& st) {
     MPI_Comm comm = ctx_.comm();
     int len = 0;
@@ -105,12 +99,12 @@ private:
     PetscCallMPI(MPI_Get_count(&st, MPI_DOUBLE, &len));
     msg_.resize(std::max(len, 1));
     PetscCallMPI(MPI_Recv(msg_.data(), len, MPI_DOUBLE, st.MPI_SOURCE, kTagRequest, comm, MPI_STATUS_IGNORE));
-    if (len > 0 && msg_[0] != 0.0 && !stopped_) stopped_ = 1; // the worker saw a stop signal
+    if (len > 0 && msg_[0] != 0.0 && !st_->stopped) st_->stopped = 1; // the worker saw a stop signal
     for (int off = 1; off + rec_len_ <= len; off += rec_len_) PetscCall(add(msg_.data() + off));
     checkStop();
     long long work[2] = {next_, next_};
-    if (!stopped_) {
-      while (work[1] < b_.count && work[1] - work[0] < chunk_ && !done_[work[1]]) ++work[1];
+    if (!st_->stopped) {
+      while (work[1] < b_.count && work[1] - work[0] < chunk_ && !st_->done[work[1]]) ++work[1];
       next_ = work[1];
       skipDone();
     }
@@ -122,17 +116,14 @@ private:
   const suite::RunContext& ctx_;
   const Options& o_;
   const Batch& b_;
-  const std::vector<unsigned char>& done_;
-  const long long ndone0_;
   Store* store_;
+  RunState* st_;
   const double t_start_ = MPI_Wtime();
   const int rec_len_;
   std::vector<double> rec_, msg_;
   long long chunk_, next_ = 0;
   int active_; // workers not yet told that the dealing is over
   double last_flush_ = MPI_Wtime();
-  long long ndone_;
-  int stopped_ = 0;
 };
 
 // Ranks > 0: request, solve the chunk, send its records with the next request, until an empty chunk.
@@ -154,23 +145,19 @@ PetscErrorCode work(MPI_Comm comm, const Batch& b) {
 
 } // namespace
 
-PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b,
-                            const ResumePoint& rp, Store* store, DealOutcome* out) {
+PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
+                            RunState* st) {
   const double t_start = MPI_Wtime();
-  long long counts[2] = {rp.ndone, 0}; // ndone, stopped
   PetscFunctionBeginUser;
-  if (ctx.rank() == 0) {
-    Dealer dealer(ctx, o, b, rp, store);
-    PetscCall(dealer.run());
-    counts[0] = dealer.ndone();
-    counts[1] = dealer.stopped();
-  } else {
+  if (ctx.rank() == 0)
+    PetscCall(Dealer(ctx, o, b, store, st).run());
+  else
     PetscCall(work(ctx.comm(), b));
-  }
-  out->wall = MPI_Wtime() - t_start;
+  st->wall = MPI_Wtime() - t_start;
+  long long counts[2] = {st->ndone, st->stopped}; // rank 0's
   PetscCallMPI(MPI_Bcast(counts, 2, MPI_LONG_LONG, 0, ctx.comm()));
-  out->ndone = counts[0];
-  out->stopped = static_cast<int>(counts[1]);
+  st->ndone = counts[0];
+  st->stopped = static_cast<int>(counts[1]);
   PetscFunctionReturn(0);
 }
 

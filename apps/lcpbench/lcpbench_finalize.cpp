@@ -1,7 +1,5 @@
-// lcpbench's end of a run (see lcpbench.hpp). Interrupted (stop signal, -max_walltime): OUT.partial is closed
-// and stays, with a message saying how to resume. Complete: OUT.partial is copied to OUT.tmp, the per-solver
-// statistics and the run's attributes are written to the copy, /batch complete = 1, and OUT.tmp is renamed to
-// OUT (atomic) before OUT.partial is removed; then the summary table and the checks of the outcome.
+// lcpbench's end of a run: an interrupted one leaves OUT.partial; a complete one gets its statistics and
+// attributes in a copy renamed to OUT (main.cpp), then the summary table and the checks of the outcome.
 #include "lcpbench.hpp"
 
 #include "core/comma_list.hpp"
@@ -41,37 +39,27 @@ void writeRunAttributes(suite::H5AppendFile& f, const suite::RunContext& ctx, co
   f.setAttribute("/batch", "run_wall_seconds", walls);
   f.setAttribute("/batch", "solved_per_run", solved);
   f.setAttribute("/", "batch_wall_seconds", std::accumulate(walls.begin(), walls.end(), 0.0));
-}
-
-void writeProblemAttributes(suite::H5AppendFile& f, const Options& o, const Batch& b) {
-  if (b.fromFiles()) {
-    f.setAttribute("/", "files", suite::joinCommaList(b.files));
-    return;
-  }
+  if (b.fromFiles()) return f.setAttribute("/", "files", suite::joinCommaList(o.files));
   f.setAttribute("/", "n", (long long)o.n);
   f.setAttribute("/", "cond", (double)o.cond);
   f.setAttribute("/", "qrange", (double)o.qrange);
   f.setAttribute("/", "seed", (long long)o.seed);
-  if (b.family == "random_box") {
-    f.setAttribute("/", "lower", (double)o.lower);
-    f.setAttribute("/", "upper", (double)o.upper);
-  }
+  if (b.family != "random_box") return;
+  f.setAttribute("/", "lower", (double)o.lower);
+  f.setAttribute("/", "upper", (double)o.upper);
 }
 
-// Rank 0 (throws): the statistics and final attributes are added to a copy (OUT.tmp), renamed to OUT when
-// complete; OUT.partial is removed last. A kill during this phase (new datasets and attributes: metadata)
-// leaves OUT.partial intact, and running the command again redoes only this phase.
+// Rank 0 (throws): OUT.partial copied to OUT.tmp, completed, renamed to OUT; OUT.partial removed last.
 void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
                   std::vector<SolverSummary>* S) {
   const std::string partial = o.output + ".partial";
-  suite::H5AppendFile& f = store->file();
+  suite::H5AppendFile& f = store->file;
   f.close();
   const std::string tmp = o.output + ".tmp";
   std::filesystem::copy_file(partial, tmp, std::filesystem::copy_options::overwrite_existing);
   f.open(tmp, true);
   for (size_t s = 0; s < b.solver_names.size(); ++s) (*S)[s] = summarise(f, b.solver_names[s], b.count);
   writeRunAttributes(f, ctx, o, b, store);
-  writeProblemAttributes(f, o, b);
   f.setAttribute("/", "wall_seconds", ctx.wallSeconds());
   f.setAttribute("/batch", "complete", 1LL);
   f.close();
@@ -80,10 +68,10 @@ void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b
   std::remove(partial.c_str());
 }
 
-PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, const Batch& b, long long ndone0,
-                            const DealOutcome& deal, const std::vector<SolverSummary>& S) {
+PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, const Batch& b,
+                            const RunState& st, const std::vector<SolverSummary>& S) {
   MPI_Comm comm = ctx.comm();
-  const long long solved_now = b.count - ndone0;
+  const long long solved_now = b.count - st.ndone0;
   PetscFunctionBeginUser;
   PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-16s %8s %8s %10s %10s %12s %12s %12s", "solver", "solved",
                            "failed", "med.iter", "med.piv/n", "time [s]", "problems/s", "prob/cpu-s"));
@@ -95,7 +83,7 @@ PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, cons
   PetscCall(suite::logInfo(comm, ctx.quiet(),
                            "lcpbench: %lld problems (%lld in this run) in %.3f s wall (%.1f problems/s), "
                            "results in %s",
-                           b.count, solved_now, deal.wall, solved_now / std::max(deal.wall, 1e-12),
+                           b.count, solved_now, st.wall, solved_now / std::max(st.wall, 1e-12),
                            o.output.c_str()));
   PetscFunctionReturn(0);
 }
@@ -127,29 +115,22 @@ PetscErrorCode checkOutcome(MPI_Comm comm, const Options& o, const Batch& b,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode finishInterrupted(const suite::RunContext& ctx, const Options& o, const Batch& b,
-                                 long long ndone0, const DealOutcome& deal, Store* store) {
-  PetscFunctionBeginUser;
-  if (ctx.rank() == 0) {
-    const std::string err = suite::messageOf([&] { store->file().close(); });
-    PetscCheck(err.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "lcpbench: %s", err.c_str());
-  }
-  PetscCall(suite::logInfo(ctx.comm(), false,
-                           "lcpbench: stop requested (%s): %lld of %lld problems done (%lld in this run, "
-                           "%.3f s), flushed to %s; run the same command again to resume",
-                           deal.stopped == 2 ? "max_walltime" : "signal", deal.ndone, b.count,
-                           deal.ndone - ndone0, deal.wall, (o.output + ".partial").c_str()));
-  PetscFunctionReturn(0);
-}
-
 } // namespace
 
-PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, long long ndone0,
-                         const DealOutcome& deal, Store* store) {
+PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, const RunState& st,
+                         Store* store) {
   std::vector<SolverSummary> S(b.solver_names.size()); // rank 0 computes them, every rank prints and checks
   PetscFunctionBeginUser;
-  if (deal.stopped != 0 || deal.ndone < b.count) {
-    PetscCall(finishInterrupted(ctx, o, b, ndone0, deal, store));
+  if (st.stopped != 0 || st.ndone < b.count) { // interrupted: OUT.partial stays
+    if (ctx.rank() == 0) {
+      const std::string err = suite::messageOf([&] { store->file.close(); });
+      PetscCheck(err.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "lcpbench: %s", err.c_str());
+    }
+    PetscCall(suite::logInfo(ctx.comm(), false,
+                             "lcpbench: stop requested (%s): %lld of %lld problems done (%lld in this run, "
+                             "%.3f s), flushed to %s; run the same command again to resume",
+                             st.stopped == 2 ? "max_walltime" : "signal", st.ndone, b.count,
+                             st.ndone - st.ndone0, st.wall, (o.output + ".partial").c_str()));
     PetscFunctionReturn(0);
   }
   PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_WRITE, "lcpbench: writing the results failed: ", [&] {
@@ -157,7 +138,7 @@ PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const B
   }));
   PetscCallMPI(
       MPI_Bcast(S.data(), static_cast<int>(S.size() * sizeof(SolverSummary)), MPI_BYTE, 0, ctx.comm()));
-  PetscCall(printSummary(ctx, o, b, ndone0, deal, S));
+  PetscCall(printSummary(ctx, o, b, st, S));
   PetscCall(checkOutcome(ctx.comm(), o, b, S));
   PetscFunctionReturn(0);
 }

@@ -34,85 +34,69 @@ void checkResumable(suite::H5AppendFile& f, const std::string& partial, const Ba
     throw std::runtime_error(partial + ": /batch/done has the wrong size" + kHint);
 }
 
-// Reads the done flags into rp; returns the run number: one more than the largest run recorded among the
-// done problems.
-int readDone(suite::H5AppendFile& f, unsigned long long C, ResumePoint* rp) {
-  for (unsigned long long a = 0; a < C; a += kBlock)
-    f.read("/batch/done", a, rp->done.data() + a, std::min(kBlock, C - a));
-  int last = -1;
-  std::vector<int> runs;
-  for (unsigned long long a = 0; a < C; a += kBlock) {
-    const unsigned long long m = std::min(kBlock, C - a);
-    runs.resize(m);
-    f.read("/batch/run", a, runs.data(), m);
-    for (unsigned long long i = 0; i < m; ++i)
-      if (rp->done[a + i]) {
-        ++rp->ndone;
-        last = std::max(last, runs[i]);
-      }
-  }
-  return last + 1;
-}
-
-// Continues OUT.partial; returns the note logged by rank 0.
-std::string resumeStore(const std::string& partial, Store* store, ResumePoint* rp) {
-  const unsigned long long C = static_cast<unsigned long long>(store->count());
+// Continues OUT.partial (the done flags read into rp, the run number one more than the largest run recorded
+// among the done problems); returns the note logged by rank 0.
+std::string resumeStore(const std::string& partial, Store* store, RunState* st) {
+  const unsigned long long C = static_cast<unsigned long long>(store->count);
   if (!suite::H5AppendFile::isHdf5(partial))
     throw std::runtime_error(partial +
                              " exists but is not an HDF5 file (not an interrupted lcpbench batch?)" + kHint);
-  suite::H5AppendFile& f = store->file();
+  suite::H5AppendFile& f = store->file;
   f.open(partial, false); // read-only until the header matches: a refused resume leaves the file as is
-  checkResumable(f, partial, store->header(), C);
+  checkResumable(f, partial, store->header, C);
   f.open(partial, true);
-  store->resumeAs(readDone(f, C, rp));
-  return "resuming " + partial + ": " + std::to_string(rp->ndone) + " of " + std::to_string(C) +
-         " problems done in " + std::to_string(store->run()) + " earlier run(s)";
+  int last = -1;
+  forBlocks<int>(f, "/batch/run", C, [&](unsigned long long a, const std::vector<int>& runs) {
+    f.read("/batch/done", a, st->done.data() + a, runs.size());
+    for (size_t i = 0; i < runs.size(); ++i)
+      if (st->done[a + i]) {
+        ++st->ndone0;
+        last = std::max(last, runs[i]);
+      }
+  });
+  store->run = last + 1;
+  return "resuming " + partial + ": " + std::to_string(st->ndone0) + " of " + std::to_string(C) +
+         " problems done in " + std::to_string(store->run) + " earlier run(s)";
 }
 
-// Rank 0: resumes or creates OUT.partial; returns the note to log ("" if none).
-std::string startStore(const std::string& partial, bool resume, Store* store, ResumePoint* rp) {
-  std::string note;
-  rp->done.assign(static_cast<size_t>(store->count()), 0);
-  rp->ndone = 0;
-  if (resume && access(partial.c_str(), F_OK) == 0)
-    note = resumeStore(partial, store, rp);
-  else
-    store->create(partial);
-  store->file().flush(); // from here on only raw data is written in place (no metadata) until completion
-  return note;
+// A resumed batch must match the header exactly (results must not depend on the run).
+BatchHeader batchHeader(const Options& o, const Batch& b) {
+  using std::to_string;
+  using suite::exactText;
+  BatchHeader h = {{"family", b.family},
+                   {"count", to_string(b.count)},
+                   {"solvers", suite::joinCommaList(b.solver_names)},
+                   {"max_it", to_string(o.max_it)},
+                   {"omega", exactText(o.omega)},
+                   {"block_size", to_string(o.block_size)},
+                   {"rel_tol", exactText(o.rel_tol)},
+                   {"refine", o.refine ? "1" : "0"}};
+  const BatchHeader files = {{"files", suite::joinCommaList(o.files)}, {"fclib_model", o.fclib_model}};
+  const BatchHeader generated = {{"n", to_string(o.n)},         {"seed", to_string(o.seed)},
+                                 {"cond", exactText(o.cond)},   {"qrange", exactText(o.qrange)},
+                                 {"lower", exactText(o.lower)}, {"upper", exactText(o.upper)}};
+  const BatchHeader& more = b.fromFiles() ? files : generated;
+  h.insert(h.end(), more.begin(), more.end());
+  return h;
 }
 
 } // namespace
 
-// A resumed batch must match the header exactly (results must not depend on the run).
-BatchHeader batchHeader(const Options& o, const Batch& b) {
-  BatchHeader header = {{"family", b.family},
-                        {"count", std::to_string(b.count)},
-                        {"solvers", suite::joinCommaList(b.solver_names)},
-                        {"max_it", std::to_string(o.max_it)},
-                        {"omega", suite::exactText(o.omega)},
-                        {"block_size", std::to_string(o.block_size)},
-                        {"rel_tol", suite::exactText(o.rel_tol)},
-                        {"refine", o.refine ? "1" : "0"}};
-  if (b.fromFiles()) {
-    header.push_back({"files", suite::joinCommaList(b.files)});
-    header.push_back({"fclib_model", o.fclib_model});
-    return header;
-  }
-  const BatchHeader generated = {{"n", std::to_string(o.n)},           {"seed", std::to_string(o.seed)},
-                                 {"cond", suite::exactText(o.cond)},   {"qrange", suite::exactText(o.qrange)},
-                                 {"lower", suite::exactText(o.lower)}, {"upper", suite::exactText(o.upper)}};
-  header.insert(header.end(), generated.begin(), generated.end());
-  return header;
-}
-
-PetscErrorCode startBatchFile(const suite::RunContext& ctx, const std::string& partial, bool resume,
-                              Store* store, ResumePoint* rp) {
-  std::string note;
+PetscErrorCode startBatchFile(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
+                              RunState* st) {
+  const std::string partial = o.output + ".partial";
+  std::string note; // rank 0's
   PetscFunctionBeginUser;
-  PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_UNEXPECTED, "",
-                           [&] { note = startStore(partial, resume, store, rp); }));
-  PetscCallMPI(MPI_Bcast(&rp->ndone, 1, MPI_LONG_LONG, 0, ctx.comm()));
+  store->header = batchHeader(o, b);
+  PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_UNEXPECTED, "", [&] {
+    st->done.assign(static_cast<size_t>(store->count), 0);
+    if (o.resume && access(partial.c_str(), F_OK) == 0)
+      note = resumeStore(partial, store, st);
+    else
+      store->create(partial);
+    store->file.flush(); // from here on only raw data is written in place (no metadata) until completion
+  }));
+  PetscCallMPI(MPI_Bcast(&st->ndone0, 1, MPI_LONG_LONG, 0, ctx.comm()));
   if (ctx.rank() == 0 && !note.empty())
     PetscCall(suite::logInfo(PETSC_COMM_SELF, ctx.quiet(), "lcpbench: %s", note.c_str()));
   PetscFunctionReturn(0);

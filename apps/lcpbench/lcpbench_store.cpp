@@ -14,47 +14,46 @@ namespace lcpbench_app {
 using suite::lcp::Status;
 
 void Store::create(const std::string& partial) {
-  const unsigned long long C = static_cast<unsigned long long>(b_.count);
+  const unsigned long long C = static_cast<unsigned long long>(count);
   const std::string init = partial + ".init";
-  f_.create(init);
-  for (const auto& kv : header_) f_.setAttribute("/batch", kv.first, kv.second);
-  f_.createFixed<unsigned char>("/batch/done", C, 0);
-  f_.createFixed<int>("/batch/run", C, -1);
-  f_.createFixed<double>("/batch/run_wall_time", kMaxRuns, 0.0, "s");
-  f_.createFixed<int>("/problems/n", C, 0);
+  file.create(init);
+  for (const auto& kv : header) file.setAttribute("/batch", kv.first, kv.second);
+  file.createFixed<unsigned char>("/batch/done", C, 0);
+  file.createFixed<int>("/batch/run", C, -1);
+  file.createFixed<double>("/batch/run_wall_time", kMaxRuns, 0.0, "s");
+  file.createFixed<int>("/problems/n", C, 0);
   for (const auto& s : b_.solver_names) {
     const std::string g = "/results/" + s + "/";
-    f_.createFixed<int>(g + "status", C, -1);
-    f_.createFixed<long long>(g + "iterations", C, 0);
-    f_.createFixed<long long>(g + "pivots", C, 0);
-    f_.createFixed<double>(g + "time", C, 0.0, "s");
-    f_.createFixed<double>(g + "residual", C, kInf);
-    f_.createFixed<double>(g + "cpu_time", C, 0.0, "s");
+    file.createFixed<int>(g + "status", C, -1);
+    file.createFixed<long long>(g + "iterations", C, 0);
+    file.createFixed<long long>(g + "pivots", C, 0);
+    file.createFixed<double>(g + "time", C, 0.0, "s");
+    file.createFixed<double>(g + "residual", C, kInf);
+    file.createFixed<double>(g + "cpu_time", C, 0.0, "s");
   }
-  run_ = 0;
-  f_.flush();
+  run = 0;
+  file.flush();
   if (std::rename(init.c_str(), partial.c_str()) != 0)
     throw std::runtime_error("cannot rename " + init + " to " + partial);
 }
 
 template <class T>
 void Store::writeColumn(const std::vector<long long>& order, int c, const std::string& path) {
-  std::vector<T> v(nbuf_);
-  for (long long i = 0; i < nbuf_; ++i) v[i] = static_cast<T>(buf_[order[i] * rec_len_ + c]);
-  f_.writeSelected(path, v.data());
+  std::vector<T> v(order.size());
+  for (size_t i = 0; i < order.size(); ++i) v[i] = static_cast<T>(buf_[order[i] * rec_len_ + c]);
+  file.writeSelected(path, v.data());
 }
 
 // The buffered records in index order, then their done flags.
 void Store::writeBuffered() {
-  std::vector<long long> order(nbuf_);
+  std::vector<long long> order(buffered());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](long long a, long long c) { return key(a) < key(c); });
-  std::vector<unsigned long long> idx(nbuf_);
-  for (long long i = 0; i < nbuf_; ++i) idx[i] = static_cast<unsigned long long>(key(order[i]));
-  f_.select(idx);
+  std::vector<unsigned long long> idx;
+  for (long long i : order) idx.push_back(static_cast<unsigned long long>(key(i)));
+  file.select(idx);
   writeColumn<int>(order, 1, "/problems/n");
-  const std::vector<int> run(nbuf_, run_);
-  f_.writeSelected("/batch/run", run.data());
+  file.writeSelected("/batch/run", std::vector<int>(order.size(), run).data());
   for (size_t s = 0; s < b_.solver_names.size(); ++s) {
     const std::string g = "/results/" + b_.solver_names[s] + "/";
     const int base = 2 + static_cast<int>(s) * kFields;
@@ -62,33 +61,26 @@ void Store::writeBuffered() {
     for (int c : {1, 2}) writeColumn<long long>(order, base + c, g + kFieldNames[c]);
     for (int c : {3, 4, 5}) writeColumn<double>(order, base + c, g + kFieldNames[c]);
   }
-  f_.flush(); // the data is in the file before the flags that vouch for it
-  const std::vector<unsigned char> ones(nbuf_, 1);
-  f_.writeSelected("/batch/done", ones.data());
+  file.flush(); // the data is in the file before the flags that vouch for it
+  file.writeSelected("/batch/done", std::vector<unsigned char>(order.size(), 1).data());
 }
 
 void Store::flush(double run_wall) {
-  if (nbuf_ > 0) writeBuffered();
-  if (run_ < static_cast<int>(kMaxRuns)) f_.writeAt("/batch/run_wall_time", run_, &run_wall, 1);
-  f_.flush();
+  if (!buf_.empty()) writeBuffered();
+  if (run < static_cast<int>(kMaxRuns)) file.writeAt("/batch/run_wall_time", run, &run_wall, 1);
+  file.flush();
   buf_.clear();
-  nbuf_ = 0;
 }
 
 void Store::runTotals(std::vector<double>* walls, std::vector<double>* solved) {
-  const unsigned long long C = static_cast<unsigned long long>(b_.count);
-  const size_t nr = static_cast<size_t>(run_) + 1;
+  const size_t nr = static_cast<size_t>(run) + 1;
   walls->assign(nr, 0.0);
   solved->assign(nr, 0.0);
-  f_.read("/batch/run_wall_time", 0, walls->data(), std::min<unsigned long long>(nr, kMaxRuns));
-  std::vector<int> runs;
-  for (unsigned long long a = 0; a < C; a += kBlock) {
-    const unsigned long long m = std::min(kBlock, C - a);
-    runs.resize(m);
-    f_.read("/batch/run", a, runs.data(), m);
+  file.read("/batch/run_wall_time", 0, walls->data(), std::min<unsigned long long>(nr, kMaxRuns));
+  forBlocks<int>(file, "/batch/run", count, [&](unsigned long long, const std::vector<int>& runs) {
     for (int r : runs)
       if (r >= 0 && static_cast<size_t>(r) < nr) (*solved)[r] += 1;
-  }
+  });
 }
 
 namespace {
@@ -147,47 +139,31 @@ void tallyBlock(suite::H5AppendFile& f, const std::string& g, unsigned long long
   }
 }
 
-template <class T>
-void writeDataset(suite::H5AppendFile& f, const std::string& path, const std::vector<T>& v) {
-  f.createFixed<T>(path, v.size(), T(0));
-  f.writeAt(path, 0, v.data(), v.size());
+// A histogram of m: nb bins of width w from 0 (the last one takes larger values), <path>_counts and _edges.
+void writeHistogram(suite::H5AppendFile& f, const std::string& path, const std::map<double, long long>& m,
+                    double w, long long nb) {
+  std::vector<long long> counts(nb, 0);
+  std::vector<double> edges(nb + 1);
+  for (long long i = 0; i <= nb; ++i) edges[i] = w * i;
+  for (const auto& kv : m)
+    counts[std::min(nb - 1, static_cast<long long>(std::floor(kv.first / w)))] += kv.second;
+  f.createFixed<long long>(path + "_counts", nb, 0);
+  f.writeAt(path + "_counts", 0, counts.data(), nb);
+  f.createFixed<double>(path + "_edges", nb + 1, 0.0);
+  f.writeAt(path + "_edges", 0, edges.data(), nb + 1);
 }
 
-// Histograms of the solved problems: iterations (integer bins, at most ~100) and pivots in units of n
-// (0.1 n bins), written to <g>histogram/.
+// Histograms of the solved problems, written to <g>histogram/: iterations (integer bins, at most ~100) and
+// pivots in units of n (0.1 n bins).
 void writeHistograms(suite::H5AppendFile& f, const std::string& g, const Tallies& T) {
   const double itmax = T.its.empty() ? 0.0 : T.its.rbegin()->first;
   const long long iw = std::max(1LL, static_cast<long long>(std::ceil((itmax + 1) / 100.0)));
-  const long long nib = static_cast<long long>(itmax) / iw + 1;
-  std::vector<long long> ih(nib, 0);
-  std::vector<double> ie(nib + 1);
-  for (long long i = 0; i <= nib; ++i) ie[i] = static_cast<double>(i * iw);
-  for (const auto& kv : T.its) ih[static_cast<long long>(kv.first) / iw] += kv.second;
   const double pmax = T.pvns.empty() ? 0.0 : T.pvns.rbegin()->first;
-  const long long npb = static_cast<long long>(std::floor(pmax / 0.1)) + 1;
-  std::vector<long long> ph(npb, 0);
-  std::vector<double> pe(npb + 1);
-  for (long long i = 0; i <= npb; ++i) pe[i] = 0.1 * i;
-  for (const auto& kv : T.pvns)
-    ph[std::min(npb - 1, static_cast<long long>(std::floor(kv.first / 0.1)))] += kv.second;
-  const std::string h = g + "histogram";
-  f.remove(h); // a completion killed half-way left some
-  writeDataset(f, h + "/iterations_counts", ih);
-  writeDataset(f, h + "/iterations_edges", ie);
-  writeDataset(f, h + "/pivots_per_n_counts", ph);
-  writeDataset(f, h + "/pivots_per_n_edges", pe);
-}
-
-void writeSummaryAttributes(suite::H5AppendFile& f, const std::string& gg, const SolverSummary& S,
-                            long long count) {
-  f.setAttribute(gg, "failures", static_cast<long long>(S.failed));
-  f.setAttribute(gg, "median_iterations", S.med_it);
-  f.setAttribute(gg, "median_pivots", S.med_piv);
-  f.setAttribute(gg, "median_pivots_per_n", S.med_pvn);
-  f.setAttribute(gg, "total_time", S.tsum);
-  f.setAttribute(gg, "problems_per_second_per_core", S.rate(count));
-  f.setAttribute(gg, "total_cpu_time", S.csum);
-  f.setAttribute(gg, "problems_per_cpu_second", S.cpuRate(count));
+  f.remove(g + "histogram"); // a completion killed half-way left some
+  writeHistogram(f, g + "histogram/iterations", T.its, static_cast<double>(iw),
+                 static_cast<long long>(itmax) / iw + 1);
+  writeHistogram(f, g + "histogram/pivots_per_n", T.pvns, 0.1,
+                 static_cast<long long>(std::floor(pmax / 0.1)) + 1);
 }
 
 } // namespace
@@ -202,7 +178,15 @@ SolverSummary summarise(suite::H5AppendFile& f, const std::string& solver, long 
   S.med_piv = median(T.pivs);
   S.med_pvn = median(T.pvns);
   writeHistograms(f, g, T);
-  writeSummaryAttributes(f, "/results/" + solver, S, count);
+  const std::string gg = "/results/" + solver;
+  f.setAttribute(gg, "failures", static_cast<long long>(S.failed));
+  f.setAttribute(gg, "median_iterations", S.med_it);
+  f.setAttribute(gg, "median_pivots", S.med_piv);
+  f.setAttribute(gg, "median_pivots_per_n", S.med_pvn);
+  f.setAttribute(gg, "total_time", S.tsum);
+  f.setAttribute(gg, "problems_per_second_per_core", S.rate(count));
+  f.setAttribute(gg, "total_cpu_time", S.csum);
+  f.setAttribute(gg, "problems_per_cpu_second", S.cpuRate(count));
   return S;
 }
 

@@ -2,26 +2,18 @@
 // dealt to ranks by dynamic load balancing, results (status, iterations, pivots, time, residual per solver
 // and problem, plus histograms) in one HDF5 file (Lacoursiere 2003, SIGRAD: iteration-count histograms).
 //
-// Streaming and resume (issue #8, batch resilience). Rank 0 deals chunks of problem indices and owns the
-// results file; it never holds the whole table:
-//   - At start it creates OUT.partial (single-process HDF5, lib/io/h5_append.hpp) with every per-problem
-//     dataset preallocated at its final size (count) and the batch header (/batch attributes: family, n,
-//     count, seed, cond, q range, bounds, solvers, files, solver options).
-//   - Results arrive in chunks; at most -flush_every records (or -flush_seconds of wall time) are buffered,
-//     then written in place, the file is flushed, and only then the /batch/done flags of those problems are
-//     set and flushed again. Writes never change HDF5 metadata, so a process killed at any moment (SIGKILL
-//     included) leaves a readable OUT.partial whose done-flagged entries are complete.
-//   - SIGTERM / SIGUSR1 / SIGINT / -max_walltime: dealing stops, outstanding chunks are collected and flushed,
-//     exit 0 with a message; OUT.partial stays.
-//   - Rerunning the same command (-resume, default on) continues OUT.partial: the header must match (else a
-//     clear error: -resume 0 discards it), done problems are skipped, never recomputed; /batch/run records for
-//     every problem the run (0, 1, ...) that solved it; at completion /batch attributes solved_per_run and
-//     run_wall_seconds sum it up. Attributes are written only at creation and completion (never while
-//     problems are flushed), so the header cannot be torn by a kill.
-//   - When every problem is done: OUT.partial is copied to OUT.tmp, histograms and summary attributes are
-//     computed by one streamed pass over the datasets (blocks of 65536 problems) and written to the copy,
-//     /batch complete = 1, OUT.tmp is renamed to OUT and OUT.partial removed. A kill in this phase leaves
-//     OUT.partial complete: the next run of the command only redoes this phase.
+// Streaming and resume (issue #8). Rank 0 owns the results file and never holds the whole table:
+//   - OUT.partial (single-process HDF5, lib/io/h5_append.hpp) is created with every per-problem dataset
+//     preallocated at its final size and the batch header (/batch attributes: the options that fix results).
+//   - Every -flush_every records (or -flush_seconds) the buffered results are written in place and flushed,
+//     then their /batch/done flags are set and flushed: no HDF5 metadata changes, so a kill at any moment
+//     (SIGKILL included) leaves a readable OUT.partial whose done-flagged entries are complete.
+//   - SIGTERM / SIGUSR1 / SIGINT / -max_walltime: dealing stops, outstanding chunks are flushed, exit 0.
+//   - Rerunning the command (-resume, default on) continues OUT.partial if the header matches (else an
+//     error; -resume 0 discards it): done problems are skipped; /batch/run records the run that solved each.
+//   - When all are done: OUT.partial is copied to OUT.tmp, histograms and summaries are computed by one
+//     streamed pass and written to the copy, which is renamed to OUT; OUT.partial is removed last (a kill in
+//     this phase leaves it complete: the next run only redoes this phase).
 //
 // Sample runs (tests/sample_runs.py executes each line):
 //   mpiexec -n 4 lcpbench -family random_box -n 100 -count 500 -cond 1e4 -qrange 1e2
@@ -49,21 +41,20 @@ PetscErrorCode runLcpBench(const suite::RunContext& ctx) {
   Options o;
   bool help_only = false;
   Batch b;
-  ResumePoint rp;
-  DealOutcome deal;
+  RunState st;
   PetscFunctionBeginUser;
   PetscCall(readOptions(ctx, &o, &help_only));
   if (help_only) PetscFunctionReturn(0);
   PetscCall(makeBatch(ctx.comm(), o, &b));
   PetscCall(suite::checkOutputWritable(ctx.comm(), o.output.c_str(), "output"));
-  Store store(b, batchHeader(o, b));
-  PetscCall(startBatchFile(ctx, o.output + ".partial", o.resume, &store, &rp));
+  Store store(b);
+  PetscCall(startBatchFile(ctx, o, b, &store, &st));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
                            "lcpbench: family %s, %lld problems%s, solvers %s, %d rank(s)", b.family.c_str(),
                            b.count, b.fromFiles() ? "" : (", n = " + std::to_string(o.n)).c_str(),
                            suite::joinCommaList(b.solver_names).c_str(), ctx.size()));
-  PetscCall(dealProblems(ctx, o, b, rp, &store, &deal));
-  PetscCall(finishRun(ctx, o, b, rp.ndone, deal, &store));
+  PetscCall(dealProblems(ctx, o, b, &store, &st));
+  PetscCall(finishRun(ctx, o, b, st, &store));
   PetscFunctionReturn(0);
 }
 

@@ -1,18 +1,19 @@
 // lcpcompare: the suite's LCP solvers against Siconos numerics (lexicographic Lemke, PGS, FB-Newton; Acary &
 // Brogliato 2008) and Bullet's Dantzig box solver (btSolveDantzigLCP, from ODE: Baraff 1994 / Cottle-Dantzig
-// principal pivoting with bounds), timed on the same generated problems in the same run, one core.
-// Every answer, whoever computed it, is judged by the suite's acceptance rule (natural residual
-// <= rel_tol (1 + |q|_inf), problem.hpp); time = CPU seconds of the calling thread around the solver call
-// (Bullet's input copy excluded: it overwrites A and b). Box problems go to Siconos as relay problems
-// (relay_lexicolemke, relay_pgs; Siconos has no box FB-Newton: recorded as unsupported), standard LCPs as LCPs.
-// Bullet's Dantzig needs l <= 0 <= u (else unsupported); it runs with OpenBLAS-free code, Siconos with BLAS
-// (run with OPENBLAS_NUM_THREADS=1 for a one-core comparison; set here when the symbol is available).
+// principal pivoting with bounds), timed on the same generated problems in the same run, one core. Every
+// answer is judged by the suite's acceptance rule (natural residual <= rel_tol (1 + |q|_inf), problem.hpp);
+// time = CPU seconds of the calling thread around the solver call (Bullet's input copy excluded: it overwrites
+// A and b). Box problems go to Siconos as relay problems (relay_lexicolemke, relay_pgs; no box FB-Newton:
+// unsupported); Bullet's Dantzig needs l <= 0 <= u (else unsupported). Siconos uses BLAS: run with
+// OPENBLAS_NUM_THREADS=1 for a one-core comparison (set here when the symbol is available).
 //
 // Example runs (only built when Siconos numerics / Bullet are installed, so not in tests/sample_runs.py):
 //   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_box -n 100 -count 200 -output compare.h5
 //   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_spd -n 50 -count 100 -ours bpp,lemke,pgs -output compare_spd.h5
 #include "core/log.hpp"
 #include "core/named_choice.hpp"
+#include "core/option_string.hpp"
+#include "core/option_value.hpp"
 #include "core/run_context.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/generators.hpp"
@@ -57,15 +58,9 @@ double threadCpu() {
 }
 
 // -family and -ours documented by -help from the registries of lib/lcp.
-std::vector<suite::Choice> familyChoices() {
+template <class Registry> std::vector<suite::Choice> choices(const Registry& r) {
   std::vector<suite::Choice> c;
-  for (const auto& f : familyRegistry()) c.push_back({f.name, f.description});
-  return c;
-}
-
-std::vector<suite::Choice> solverChoices() {
-  std::vector<suite::Choice> c;
-  for (const auto& s : solverRegistry()) c.push_back({s.name, s.description});
+  for (const auto& x : r) c.push_back({x.name, x.description});
   return c;
 }
 
@@ -76,12 +71,9 @@ struct Outcome {
 
 // Judges z by the suite's rule; solver_ok: the external solver's own success flag.
 Outcome judge(const Problem& p, const Vec& z, bool solver_ok, double cpu, double rel_tol) {
-  Outcome o;
-  o.cpu = cpu;
+  Outcome o{0, cpu, kInf};
   if (z.size() == p.size() && z.allFinite()) o.residual = naturalResidual(p, z, slack(p, z));
-  if (o.residual <= acceptanceTolerance(p, rel_tol))
-    o.status = 0;
-  else
+  if (!(o.residual <= acceptanceTolerance(p, rel_tol)))
     o.status = static_cast<int>(solver_ok ? Status::NotAccepted : Status::Breakdown);
   return o;
 }
@@ -89,6 +81,8 @@ Outcome judge(const Problem& p, const Vec& z, bool solver_ok, double cpu, double
 struct Entry {
   std::string name;
   std::function<Outcome(const Problem&)> run;
+  std::vector<int> status = {}; // per problem, filled by runAll
+  std::vector<double> cpu = {}, resid = {};
 };
 
 struct Options {
@@ -101,44 +95,38 @@ struct Options {
 // Reads and validates the options; *help_only: -help was given.
 PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_only) {
   MPI_Comm comm = ctx.comm();
-  char output[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "lcpcompare options", "");
+  PetscOptionItems* const po = PetscOptionsObject;
+  PetscCall(suite::optionsChoice(po, "-family", "Problem family", choices(familyRegistry()), &o->family));
+  PetscCall(suite::optionsValue(po, "-n", "Problem size", &o->n));
+  PetscCall(suite::optionsValue(po, "-count", "Number of problems", &o->count));
+  PetscCall(suite::optionsValue(po, "-seed", "Generator seed (same problems as lcpbench -seed)", &o->seed));
+  PetscCall(suite::optionsValue(po, "-cond", "Condition number of M", &o->cond));
   PetscCall(
-      suite::optionsChoice(PetscOptionsObject, "-family", "Problem family", familyChoices(), &o->family));
-  PetscCall(PetscOptionsInt("-n", "Problem size", "", o->n, &o->n, nullptr));
-  PetscCall(PetscOptionsInt("-count", "Number of problems", "", o->count, &o->count, nullptr));
-  PetscCall(PetscOptionsInt("-seed", "Generator seed (same problems as lcpbench -seed)", "", o->seed,
-                            &o->seed, nullptr));
-  PetscCall(PetscOptionsReal("-cond", "Condition number of M", "", o->cond, &o->cond, nullptr));
-  PetscCall(PetscOptionsReal("-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", "", o->qrange,
-                             &o->qrange, nullptr));
-  PetscCall(suite::optionsChoiceList(PetscOptionsObject, "-ours", "The suite's solvers to time",
-                                     solverChoices(), &o->ours));
-  PetscCall(PetscOptionsInt("-max_it", "Iteration cap of the iterative solvers (0: defaults)", "", o->max_it,
-                            &o->max_it, nullptr));
-  PetscCall(PetscOptionsReal("-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", "", o->rel_tol,
-                             &o->rel_tol, nullptr));
-  PetscCall(PetscOptionsString("-output", "HDF5 results file", "", output, output, sizeof output, nullptr));
+      suite::optionsValue(po, "-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", &o->qrange));
+  PetscCall(suite::optionsChoiceList(po, "-ours", "The suite's solvers to time", choices(solverRegistry()),
+                                     &o->ours));
+  PetscCall(
+      suite::optionsValue(po, "-max_it", "Iteration cap of the iterative solvers (0: defaults)", &o->max_it));
+  PetscCall(
+      suite::optionsValue(po, "-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", &o->rel_tol));
+  PetscCall(suite::optionsString(po, "-output", "HDF5 results file", &o->output));
   PetscOptionsEnd();
-  o->output = output;
   PetscCall(ctx.checkUnusedOptions());
   *help_only = ctx.helpRequested();
   if (*help_only) PetscFunctionReturn(0);
   PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
   PetscCheck(o->n >= 1 && o->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
-  PetscCheck(output[0], comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
-  PetscCall(suite::checkOutputWritable(comm, output, "output"));
+  PetscCheck(!o->output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
+  PetscCall(suite::checkOutputWritable(comm, o->output.c_str(), "output"));
   PetscFunctionReturn(0);
 }
 
-// The suite's solver s (known: -ours is validated against the registry); keep owns it.
-Entry oursEntry(const std::string& s, const suite::lcp::SolverOptions& so,
-                std::vector<std::unique_ptr<Solver>>* keep) {
-  keep->push_back(makeSolver(s));
-  const Solver* raw = keep->back().get();
-  return {s, [raw, so](const Problem& p) {
-            const Result r = solve(*raw, p, so);
+// The suite's solver s (known: -ours is validated against the registry).
+Entry oursEntry(const std::string& s, const suite::lcp::SolverOptions& so) {
+  return {s, [solver = std::shared_ptr<const Solver>(makeSolver(s)), so](const Problem& p) {
+            const Result r = solve(*solver, p, so);
             return Outcome{static_cast<int>(r.status), r.cpu_time, r.residual};
           }};
 }
@@ -146,9 +134,7 @@ Entry oursEntry(const std::string& s, const suite::lcp::SolverOptions& so,
 #ifdef LCPCOMPARE_SICONOS
 // Siconos: standard LCP -> lcp_* solvers; box -> relay_* (relay_id < 0: no box version).
 Entry siconosEntry(const std::string& name, int lcp_id, int relay_id, const Options& o) {
-  const PetscInt max_it = o.max_it;
-  const double rel_tol = o.rel_tol;
-  return {name, [=](const Problem& p) -> Outcome {
+  return {name, [=, max_it = o.max_it, rel_tol = o.rel_tol](const Problem& p) -> Outcome {
             const int m = p.size();
             const bool box = !p.isStandard();
             if (box && relay_id < 0) return Outcome{static_cast<int>(Status::Unsupported), 0.0, kInf};
@@ -195,55 +181,42 @@ Outcome bulletDantzig(const Problem& p, double rel_tol) {
   const bool ok = btSolveDantzigLCP(m, A.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(),
                                     findex.data(), scratch);
   const double cpu = threadCpu() - t0;
-  Vec z(m);
-  for (int i = 0; i < m; ++i) z[i] = x[i];
-  return judge(p, z, ok, cpu, rel_tol);
+  return judge(p, Eigen::Map<Vec>(x.data(), m), ok, cpu, rel_tol);
 }
 #endif
 
 // Every solver timed: the suite's (-ours), then Siconos' and Bullet's where built.
-std::vector<Entry> makeEntries(const Options& o, std::vector<std::unique_ptr<Solver>>* keep) {
+std::vector<Entry> makeEntries(const Options& o) {
   suite::lcp::SolverOptions so;
   so.rel_tol = o.rel_tol;
   so.max_iterations = static_cast<int>(o.max_it);
   std::vector<Entry> entries;
-  for (const auto& s : o.ours) entries.push_back(oursEntry(s, so, keep));
+  for (const auto& s : o.ours) entries.push_back(oursEntry(s, so));
 #ifdef LCPCOMPARE_SICONOS
   entries.push_back(siconosEntry("siconos_lemke", SICONOS_LCP_LEMKE, SICONOS_RELAY_LEMKE, o));
   entries.push_back(siconosEntry("siconos_pgs", SICONOS_LCP_PGS, SICONOS_RELAY_PGS, o));
   entries.push_back(siconosEntry("siconos_fb_newton", SICONOS_LCP_NEWTON_FB_FBLSA, -1, o));
 #endif
 #ifdef LCPCOMPARE_BULLET
-  const double rel_tol = o.rel_tol;
-  entries.push_back({"bullet_dantzig", [rel_tol](const Problem& p) { return bulletDantzig(p, rel_tol); }});
+  entries.push_back(
+      {"bullet_dantzig", [rel_tol = o.rel_tol](const Problem& p) { return bulletDantzig(p, rel_tol); }});
 #endif
   return entries;
 }
 
-// Per entry and problem: status, CPU time, residual.
-struct Table {
-  std::vector<std::vector<int>> status;
-  std::vector<std::vector<double>> cpu, resid;
-};
-
-Table runAll(const Options& o, const std::vector<Entry>& entries) {
+// Every problem, solved by every entry in turn.
+void runAll(const Options& o, std::vector<Entry>* entries) {
   const GeneratorParams gp{
       static_cast<int>(o.n), o.cond, o.qrange, -o.qrange, o.qrange, static_cast<std::uint64_t>(o.seed)};
-  const size_t ne = entries.size();
-  Table t;
-  t.status.assign(ne, std::vector<int>(o.count));
-  t.cpu.assign(ne, std::vector<double>(o.count));
-  t.resid = t.cpu;
   for (PetscInt k = 0; k < o.count; ++k) {
     const Problem p = generate(o.family, gp, static_cast<std::uint64_t>(k));
-    for (size_t e = 0; e < ne; ++e) { // same problem, every solver, in turn
-      const Outcome r = entries[e].run(p);
-      t.status[e][k] = r.status;
-      t.cpu[e][k] = r.cpu;
-      t.resid[e][k] = r.residual;
+    for (Entry& e : *entries) {
+      const Outcome r = e.run(p);
+      e.status.push_back(r.status);
+      e.cpu.push_back(r.cpu);
+      e.resid.push_back(r.residual);
     }
   }
-  return t;
 }
 
 PetscErrorCode writeHeader(const suite::RunContext& ctx, const Options& o, suite::H5Output* out) {
@@ -260,41 +233,34 @@ PetscErrorCode writeHeader(const suite::RunContext& ctx, const Options& o, suite
   PetscFunctionReturn(0);
 }
 
-double total(const std::vector<double>& v) {
-  return std::accumulate(v.begin(), v.end(), 0.0);
-}
-
-// Entry e's datasets and summary attributes, and its line of the table; ref: Bullet's Dantzig or -1.
-PetscErrorCode writeEntry(const suite::RunContext& ctx, const Options& o, const std::string& name,
-                          const Table& t, int e, int ref, suite::H5Output* out) {
+// Entry e's datasets and summary attributes, and its line of the table; ref: Bullet's Dantzig or nullptr.
+PetscErrorCode writeEntry(const suite::RunContext& ctx, const Options& o, const Entry& e, const Entry* ref,
+                          suite::H5Output* out) {
   const unsigned long long C = static_cast<unsigned long long>(o.count);
-  const std::string g = "/results/" + name;
-  long long solved = 0, unsupported = 0;
+  const std::string g = "/results/" + e.name;
+  auto total = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); };
   std::vector<double> c;
   PetscFunctionBeginUser;
-  PetscCall(out->writeReplicated(g + "/status", t.status[e].data(), {C}, ""));
-  PetscCall(out->writeReplicated(g + "/cpu_time", t.cpu[e].data(), {C}, "s"));
-  PetscCall(out->writeReplicated(g + "/residual", t.resid[e].data(), {C}, ""));
-  for (PetscInt k = 0; k < o.count; ++k) {
-    if (t.status[e][k] == 0) {
-      ++solved;
-      c.push_back(t.cpu[e][k]);
-    }
-    if (t.status[e][k] == static_cast<int>(Status::Unsupported)) ++unsupported;
-  }
+  PetscCall(out->writeReplicated(g + "/status", e.status.data(), {C}, ""));
+  PetscCall(out->writeReplicated(g + "/cpu_time", e.cpu.data(), {C}, "s"));
+  PetscCall(out->writeReplicated(g + "/residual", e.resid.data(), {C}, ""));
+  for (PetscInt k = 0; k < o.count; ++k)
+    if (e.status[k] == 0) c.push_back(e.cpu[k]); // solved
+  const long long solved = static_cast<long long>(c.size()),
+                  unsupported =
+                      std::count(e.status.begin(), e.status.end(), static_cast<int>(Status::Unsupported));
   std::sort(c.begin(), c.end());
   const double med = c.empty() ? std::nan("") : c[c.size() / 2];
-  const double tot = total(t.cpu[e]);
+  const double tot = total(e.cpu);
   const double rate = tot > 0 ? (o.count - unsupported) / tot : 0.0;
-  const double ratio =
-      ref >= 0 && total(t.cpu[ref]) > 0 && unsupported == 0 ? tot / total(t.cpu[ref]) : std::nan("");
+  const double ratio = ref && total(ref->cpu) > 0 && unsupported == 0 ? tot / total(ref->cpu) : std::nan("");
   PetscCall(out->writeAttribute(g, "solved", solved));
   PetscCall(out->writeAttribute(g, "unsupported", unsupported));
   PetscCall(out->writeAttribute(g, "total_cpu_time", tot));
   PetscCall(out->writeAttribute(g, "problems_per_cpu_second", rate));
   PetscCall(out->writeAttribute(g, "cpu_time_over_bullet_dantzig", ratio));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7lld %7lld %7lld %14.4g %14.1f %12.2f",
-                           name.c_str(), solved, o.count - solved - unsupported, unsupported, med, rate,
+                           e.name.c_str(), solved, o.count - solved - unsupported, unsupported, med, rate,
                            ratio));
   PetscFunctionReturn(0);
 }
@@ -304,24 +270,22 @@ PetscErrorCode writeEntry(const suite::RunContext& ctx, const Options& o, const 
 static PetscErrorCode runCompare(const suite::RunContext& ctx) {
   Options o;
   bool help_only = false;
-  std::vector<std::unique_ptr<Solver>> keep;
   suite::H5Output out;
   PetscFunctionBeginUser;
   PetscCall(readOptions(ctx, &o, &help_only));
   if (help_only) PetscFunctionReturn(0);
   if (openblas_set_num_threads) openblas_set_num_threads(1);
-  const std::vector<Entry> entries = makeEntries(o, &keep);
-  const Table t = runAll(o, entries);
+  std::vector<Entry> entries = makeEntries(o);
+  runAll(o, &entries);
   PetscCall(writeHeader(ctx, o, &out));
-  int ref = -1; // reference for the ratio column: Bullet's Dantzig when present
-  for (size_t e = 0; e < entries.size(); ++e)
-    if (entries[e].name == "bullet_dantzig") ref = static_cast<int>(e);
+  const Entry* ref = nullptr; // reference for the ratio column: Bullet's Dantzig when present
+  for (const Entry& e : entries)
+    if (e.name == "bullet_dantzig") ref = &e;
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core",
                            o.family.c_str(), (int)o.n, (int)o.count));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s", "solver", "solved",
                            "failed", "unsupp", "median cpu [s]", "prob/cpu-s", "time/bullet"));
-  for (size_t e = 0; e < entries.size(); ++e)
-    PetscCall(writeEntry(ctx, o, entries[e].name, t, static_cast<int>(e), ref, &out));
+  for (const Entry& e : entries) PetscCall(writeEntry(ctx, o, e, ref, &out));
   PetscCall(out.commit(&ctx));
   PetscFunctionReturn(0);
 }
