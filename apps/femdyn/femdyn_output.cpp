@@ -70,17 +70,6 @@ PetscErrorCode FemdynRun::writeMesh(suite::H5Output& out) const {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FemdynRun::writeStatic(suite::H5Output& out) const {
-  PetscFunctionBeginUser;
-  PetscCall(out.writeAttribute("/", "tip_deflection", res_.tip_deflection));
-  PetscCall(out.writeAttribute("/", "tip_ux", res_.tip_ux));
-  PetscCall(out.writeAttribute("/", "load_steps", (long long)res_.stat.load_steps));
-  PetscCall(out.writeAttribute("/", "newton_iterations", (long long)res_.stat.newton_iterations));
-  PetscCall(out.writeAttribute("/", "residual", res_.stat.residual));
-  PetscCall(out.writeAttribute("/", "strain_energy", res_.stat.energy));
-  PetscFunctionReturn(0);
-}
-
 // Per-step records (step 0 first) as /steps columns, and the run's rates.
 PetscErrorCode FemdynRun::writeSteps(suite::H5Output& out) const {
   const size_t n = res_.steps.size();
@@ -150,10 +139,16 @@ PetscErrorCode FemdynRun::writeOutput() const {
   PetscCall(writeRunAttributes(out));
   PetscCall(writeOrdering(out));
   PetscCall(writeMesh(out));
-  if (opt_.is_static)
-    PetscCall(writeStatic(out));
-  else if (!res_.steps.empty())
+  if (opt_.is_static) { // the static result
+    PetscCall(out.writeAttribute("/", "tip_deflection", res_.tip_deflection));
+    PetscCall(out.writeAttribute("/", "tip_ux", res_.tip_ux));
+    PetscCall(out.writeAttribute("/", "load_steps", (long long)res_.stat.load_steps));
+    PetscCall(out.writeAttribute("/", "newton_iterations", (long long)res_.stat.newton_iterations));
+    PetscCall(out.writeAttribute("/", "residual", res_.stat.residual));
+    PetscCall(out.writeAttribute("/", "strain_energy", res_.stat.energy));
+  } else if (!res_.steps.empty()) {
     PetscCall(writeSteps(out));
+  }
   if (!res_.probe.sync_time.empty()) PetscCall(writeProbe(out));
   PetscCall(writeSnapshots(out, &xsteps));
   PetscCall(out.commit(&ctx_));

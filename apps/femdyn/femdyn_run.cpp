@@ -9,18 +9,9 @@
 #include "fem/cpu_timer.hpp"
 #include "femdyn_dynamics.hpp"
 
-#include <algorithm>
-
 namespace femdyn_app {
 
 using namespace suite::fem;
-
-// The mean of component c (times sign) over the tip-face nodes (0 without any).
-double FemdynRun::tipMean(const std::vector<double>& u, int c, double sign) const {
-  double s = 0;
-  for (int v : tip_nodes_) s += sign * u[3 * v + c];
-  return s / std::max<size_t>(1, tip_nodes_.size());
-}
 
 PetscErrorCode FemdynRun::solveStaticCase() {
   std::vector<double> u;
@@ -30,8 +21,8 @@ PetscErrorCode FemdynRun::solveStaticCase() {
                         (int)opt_.newmark.newton_max_it, opt_.newmark.newton_rtol, &u, &res_.stat, partial_));
   res_.loop_time = wallSeconds() - t0;
   res_.u_full = model_.fullVector(u);
-  res_.tip_deflection = tipMean(res_.u_full, 1, -1);
-  res_.tip_ux = tipMean(res_.u_full, 0);
+  res_.tip_deflection = nodalMean(res_.u_full, tip_nodes_, 1, -1);
+  res_.tip_ux = nodalMean(res_.u_full, tip_nodes_, 0);
   PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
                            "femdyn static: tip_deflection %.6f (mean -u_y on %zu tip nodes), tip u_x %.6f, "
                            "%d load steps, %d Newton iterations, residual %.3e, strain energy %.6e, %.3f s",

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/run_context.hpp"
-#include "fem/assembly.hpp"
+#include "fem/beam_loads.hpp"
 #include "fem/haptic_probe.hpp"
 #include "fem/linear_solver.hpp"
 #include "fem/newmark.hpp"
@@ -26,9 +26,10 @@ struct Options {
   std::string mesh = "beam", mesh_file, material = "linear", ordering = "rcm", solver = "cholmod",
               mass = "consistent", dirichlet = "x=0", jacobian = "tangent", output, time_scheme = "newmark",
               predictor = "constant";
-  double rho_inf = 1, beam_length = 10, young = 1000, poisson = 0.3, density = 1, dt = 0.01, tip_load = 0;
-  double beam_size[2] = {1, 1}, gravity[3] = {0, 0, 0};
-  PetscInt beam_cells[3] = {10, 1, 1}, order = 1, steps = 100, load_steps = 1, snapshot_every = 0;
+  double rho_inf = 1, young = 1000, poisson = 0.3, density = 1, dt = 0.01, tip_load = 0,
+         gravity[3] = {0, 0, 0};
+  suite::fem::BeamSpec beam; // -beam_length, -beam_size, -beam_cells
+  PetscInt order = 1, steps = 100, load_steps = 1, snapshot_every = 0;
   suite::fem::NewmarkParams newmark;
   PetscBool is_static = PETSC_FALSE, probe = PETSC_FALSE;
   suite::fem::HapticProbeSettings probe_set; // -probe: a rigid point pressing (along -y) on a surface node
@@ -80,28 +81,22 @@ public:
 
 private:
   friend class FemdynDynamics; // the time-stepped side of the run (femdyn_dynamics.hpp)
-  // Options (femdyn_options.cpp); the first four run inside the options block.
+  // Options (femdyn_options.cpp); the first two run inside the options block.
   PetscErrorCode readModelOptions(PetscOptionItems* PetscOptionsObject);
-  PetscErrorCode readTimeOptions(PetscOptionItems* PetscOptionsObject);
-  PetscErrorCode readNewtonOptions(PetscOptionItems* PetscOptionsObject);
-  PetscErrorCode readProbeOptions(PetscOptionItems* PetscOptionsObject);
-  PetscErrorCode checkProbeOptions() const;
+  PetscErrorCode readIntegratorOptions(PetscOptionItems* PetscOptionsObject);
   PetscErrorCode checkOptions() const;
   // Setup (femdyn_setup.cpp).
   PetscErrorCode buildMesh();
   PetscErrorCode clampAndSetupModel();
-  PetscErrorCode buildLoads();
   PetscErrorCode orderAndAnalyze();
   // Solves (femdyn_run.cpp).
   PetscErrorCode solveStaticCase();
   PetscErrorCode solveDynamic();
-  double tipMean(const std::vector<double>& u_full, int c, double sign = 1) const;
   // Output (femdyn_output.cpp), in the output log stage.
   PetscErrorCode writeOutput() const;
   PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
   PetscErrorCode writeOrdering(suite::H5Output& out) const;
   PetscErrorCode writeMesh(suite::H5Output& out) const;
-  PetscErrorCode writeStatic(suite::H5Output& out) const;
   PetscErrorCode writeSteps(suite::H5Output& out) const;
   PetscErrorCode writeProbe(suite::H5Output& out) const;
   PetscErrorCode writeSnapshots(suite::H5Output& out, std::vector<suite::XdmfTetStep>* xsteps) const;

@@ -1,5 +1,5 @@
-// femdyn setup: material, mesh (structured beam or Gmsh/TetGen file, P2 promotion), the clamped Dirichlet
-// plane and the elastic model, the loads (tip traction, gravity), the fill-reducing ordering and the solver's
+// femdyn setup: material, mesh (beam or Gmsh/TetGen file, P2 promotion: fem::makeMesh), the clamped Dirichlet
+// plane and the elastic model, the loads (fem/beam_loads.hpp), the fill-reducing ordering and the solver's
 // symbolic analysis (with -solver petsc at several ranks: each rank assembles the elements it owns).
 #include "core/log.hpp"
 #include "fem/cpu_timer.hpp"
@@ -8,8 +8,6 @@
 #include "femdyn_run.hpp"
 #include "io/h5_output.hpp"
 
-#include <algorithm>
-
 namespace femdyn_app {
 
 using namespace suite::fem;
@@ -17,17 +15,7 @@ using namespace suite::fem;
 PetscErrorCode FemdynRun::buildMesh() {
   MPI_Comm comm = ctx_.comm();
   PetscFunctionBeginUser;
-  if (opt_.mesh == "beam") {
-    BeamSpec s;
-    s.length = opt_.beam_length;
-    s.size = {opt_.beam_size[0], opt_.beam_size[1]};
-    s.cells = {(int)opt_.beam_cells[0], (int)opt_.beam_cells[1], (int)opt_.beam_cells[2]};
-    mesh_ = makeBeam(s);
-  } else {
-    PetscCheck(!opt_.mesh_file.empty(), comm, PETSC_ERR_ARG_WRONG, "-mesh file needs -mesh_file");
-    PetscCall(readMeshFile(comm, opt_.mesh_file, &mesh_));
-  }
-  if (opt_.order == 2 && mesh_.order() == 1) mesh_ = promoteToP2(mesh_);
+  PetscCall(makeMesh(comm, opt_.mesh, opt_.beam, opt_.mesh_file, (int)opt_.order, &mesh_));
   if (opt_.poisson > 0.45 && mesh_.order() == 1)
     PetscCall(suite::logInfo(
         comm, false,
@@ -50,28 +38,6 @@ PetscErrorCode FemdynRun::clampAndSetupModel() {
       "Dirichlet set -dirichlet %s is empty (no mesh node on that plane): the static problem is singular",
       opt_.dirichlet.c_str());
   PetscCall(model_.setup(comm, mesh_, *material_, fixed));
-  PetscFunctionReturn(0);
-}
-
-// Tip traction (total -tip_load along -y on the end face x = max) and gravity.
-PetscErrorCode FemdynRun::buildLoads() {
-  PetscFunctionBeginUser;
-  double xmax = -1e300;
-  for (const auto& x : mesh_.nodes) xmax = std::max(xmax, x[0]);
-  tip_nodes_ = nodesOnPlane(mesh_, 0, xmax);
-  f_ext_.assign(model_.numFree(), 0.0);
-  if (opt_.tip_load != 0) {
-    const auto faces = facesOnPlane(mesh_, 0, xmax);
-    const double area = facesArea(mesh_, faces);
-    PetscCheck(area > 0, ctx_.comm(), PETSC_ERR_ARG_WRONG,
-               "-tip_load: no boundary face on the end plane x = %g", xmax);
-    f_ext_ = model_.tractionLoad(faces, {0.0, -opt_.tip_load / area, 0.0});
-  }
-  if (opt_.gravity[0] != 0 || opt_.gravity[1] != 0 || opt_.gravity[2] != 0) {
-    const auto g = model_.bodyForce(
-        {opt_.density * opt_.gravity[0], opt_.density * opt_.gravity[1], opt_.density * opt_.gravity[2]});
-    for (size_t i = 0; i < g.size(); ++i) f_ext_[i] += g[i];
-  }
   PetscFunctionReturn(0);
 }
 
@@ -105,7 +71,9 @@ PetscErrorCode FemdynRun::setup() {
   PetscCall(createMaterial(comm, opt_.material, lame, &material_));
   PetscCall(buildMesh());
   PetscCall(clampAndSetupModel());
-  PetscCall(buildLoads());
+  tip_nodes_ = tipNodes(mesh_); // the loads: total -tip_load along -y on the end face x = max, and gravity
+  PetscCall(tipTractionLoad(comm, model_, opt_.tip_load, &f_ext_));
+  addGravityLoad(model_, opt_.density, opt_.gravity, &f_ext_);
   PetscCall(orderAndAnalyze());
   res_.setup_time = wallSeconds() - t0;
   PetscCall(suite::logInfo(comm, ctx_.quiet(),

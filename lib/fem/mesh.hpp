@@ -3,6 +3,8 @@
 // boundary sets.
 #pragma once
 
+#include "core/named_choice.hpp"
+
 #include <petscsys.h>
 
 #include <array>
@@ -64,5 +66,12 @@ PetscErrorCode readTetGen(MPI_Comm comm, const std::string& basename,
 PetscErrorCode readGmsh(MPI_Comm comm, const std::string& path, TetMesh* mesh); // .msh 2.2 ASCII / 4.1 ASCII
 // By name: *.msh is Gmsh, otherwise a TetGen basename (a trailing .node or .ele is dropped).
 PetscErrorCode readMeshFile(MPI_Comm comm, const std::string& path, TetMesh* mesh);
+
+// The named choices of an app's -mesh (for suite::optionsChoice): "beam" or "file".
+std::vector<suite::Choice> meshChoices();
+// The mesh of that choice: the structured beam, or the mesh file (an empty name is an error naming
+// -mesh_file), promoted to P2 for order 2.
+PetscErrorCode makeMesh(MPI_Comm comm, const std::string& kind, const BeamSpec& beam, const std::string& file,
+                        int order, TetMesh* mesh);
 
 } // namespace suite::fem

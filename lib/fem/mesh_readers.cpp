@@ -1,6 +1,7 @@
 // Mesh file readers for the apps: read the files (one clear collective error if missing) and parse their
 // content with the MPI-free parsers of mesh_parse.hpp (a ParseError becomes one collective error naming the
-// file and line), then check the mesh (inverted or degenerate elements are errors, not silently fixed).
+// file and line), then check the mesh (inverted or degenerate elements are errors, not silently fixed). An
+// app's -mesh: the structured beam or a file (makeMesh).
 #include "fem/mesh.hpp"
 #include "fem/mesh_parse.hpp"
 
@@ -65,6 +66,24 @@ PetscErrorCode readMeshFile(MPI_Comm comm, const std::string& f, TetMesh* mesh) 
         base.resize(base.size() - std::strlen(ext));
     PetscCall(readTetGen(comm, base, mesh));
   }
+  PetscFunctionReturn(0);
+}
+
+std::vector<suite::Choice> meshChoices() {
+  return {{"beam", "structured beam of hexahedra, 6 tets each"},
+          {"file", "Gmsh or TetGen mesh given by -mesh_file"}};
+}
+
+PetscErrorCode makeMesh(MPI_Comm comm, const std::string& kind, const BeamSpec& beam, const std::string& file,
+                        int order, TetMesh* mesh) {
+  PetscFunctionBeginUser;
+  if (kind == "beam") {
+    *mesh = makeBeam(beam);
+  } else {
+    PetscCheck(!file.empty(), comm, PETSC_ERR_ARG_WRONG, "-mesh file needs -mesh_file");
+    PetscCall(readMeshFile(comm, file, mesh));
+  }
+  if (order == 2 && mesh->order() == 1) *mesh = promoteToP2(*mesh);
   PetscFunctionReturn(0);
 }
 

@@ -130,151 +130,235 @@ PetscErrorCode Newmark::factorEffective(double dt, const std::vector<double>& Kt
   PetscFunctionReturn(0);
 }
 
+// One attempt of a step: the predictor u~, v~ (up, vp), the iterate u_{n+1} (un) with its a, v (an, vn).
+struct Newmark::Attempt {
+  NewmarkState* s = nullptr;
+  StepTimings* tm = nullptr;
+  double dt = 0, c0 = 0;
+  bool alpha = false;           // generalized-alpha: evaluate at the intermediate point (ua_, va_, aa_)
+  bool reuse = false;           // K_eff factorised once per dt (linear system or modified Newton)
+  bool exact_after_one = false; // linear system: one Newton solve is exact
+  std::vector<double> up, vp, un, an, vn;
+  const double* ueval = nullptr; // where the force is evaluated: un, or ua_
+  bool chord = false;            // the tangent predictor's correction applies
+  bool factored = false; // this attempt refactorised (the state's u_tangent no longer matches the solver)
+  double ref = 0;        // the residual the relative Newton test refers to
+};
+
 PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, bool* ok) {
   PetscFunctionBeginUser;
-  const int n = Keff_.n;
-  const double b = p_.beta, g = p_.gamma;
-  const double c0 = 1.0 / (b * dt * dt);
-  const double am = p_.alpha_m, af = p_.alpha_f;
-  const bool alpha = am != 0 || af != 0; // generalized-alpha: evaluate at the intermediate point
-  std::vector<double> up(n), vp(n), un(n), an(n), vn(n);
-  if (alpha) ua_.resize(n), va_.resize(n), aa_.resize(n);
-  for (int i = 0; i < n; ++i) {
-    up[i] = s->u[i] + dt * s->v[i] + dt * dt * (0.5 - b) * s->a[i];
-    vp[i] = s->v[i] + dt * (1 - g) * s->a[i];
-    un[i] = up[i] + b * dt * dt * s->a[i];
-  }
-  fext_(alpha ? s->t + (1 - af) * dt : s->t + dt, fe_.data());
-  if (p_.partial_sums && rank_ > 0) std::fill(fe_.begin(), fe_.end(), 0.0);
-  const bool reuse = sys_->isLinear() || p_.initial_jacobian;
-  const bool exact_after_one = sys_->isLinear();
-  const double* ueval = alpha ? ua_.data() : un.data();
-  // Residual r_ at the iterate un, with the tangent Kt_ when asked (same point, same force); admissibility.
-  auto residual = [&](bool want_tangent, bool* admissible) -> PetscErrorCode {
-    const double t0 = now();
-    for (int i = 0; i < n; ++i) an[i] = c0 * (un[i] - up[i]), vn[i] = vp[i] + g * dt * an[i];
-    if (alpha)
-      for (int i = 0; i < n; ++i) {
-        ua_[i] = (1 - af) * un[i] + af * s->u[i];
-        va_[i] = (1 - af) * vn[i] + af * s->v[i];
-        aa_[i] = (1 - am) * an[i] + am * s->a[i];
-      }
-    double e;
-    *admissible = sys_->internalForce(ueval, f_.data(), want_tangent ? &Kt_ : nullptr, &e);
-    PetscCall(allAdmissible(admissible));
-    if (*admissible) {
-      symMultiply(Keff_, M_, alpha ? aa_.data() : an.data(), tmp_.data());
-      if (damped_) {
-        symMultiply(Keff_, C_, alpha ? va_.data() : vn.data(), tmp2_.data());
-        for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + tmp2_[i] + f_[i] - fe_[i];
-      } else {
-        for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + f_[i] - fe_[i];
-      }
-      PetscCall(sumResidual());
-    }
-    tm->assemble += now() - t0;
-    return 0;
-  };
-  // Tangent predictor: one correction of the predictor with the factorisation the last step left behind.
-  bool chord = p_.tangent_predictor && !reuse && p_.newton_max_it > 1 && keff_current_ &&
-               s->dt_tangent == dt && static_cast<int>(s->u_tangent.size()) == n;
-  double ref = 0;
-  bool factored = false; // this attempt refactorised (the state's u_tangent no longer matches the solver)
+  Attempt a;
+  a.s = s, a.tm = tm, a.dt = dt, a.c0 = 1.0 / (p_.beta * dt * dt);
+  a.alpha = p_.alpha_m != 0 || p_.alpha_f != 0;
+  a.reuse = sys_->isLinear() || p_.initial_jacobian;
+  a.exact_after_one = sys_->isLinear();
+  predict(a);
   *ok = true;
   tm->converged = false;
-  if (chord) {
-    bool adm;
-    PetscCall(residual(false, &adm));
-    const double r_pred = adm ? norm2(r_) : 0;
-    if (!adm || r_pred <= p_.newton_atol) {
-      chord = false; // plain Newton from the predictor (its own rejection and convergence logic below)
-      for (int i = 0; i < n; ++i) un[i] = up[i] + b * dt * dt * s->a[i];
-    } else {
-      const double t0 = now();
-      PetscCall(solver_->solve(r_.data(), du_.data()));
-      for (int i = 0; i < n; ++i) un[i] -= du_[i];
-      tm->solve += now() - t0;
-      ref = r_pred;
-    }
-  }
+  if (a.chord) PetscCall(correctPredictor(a));
   for (int it = 0;; ++it) {
     // The tangent is assembled with the force (one element loop) at the iterates where another iteration is
     // expected (the first, and as many as the last accepted step needed); at the others the force comes alone
     // first and the tangent only if another iteration follows. Either way the force and tangent are the same.
-    const bool fused = !reuse && (it == 0 || it < last_newton_);
-    bool admissible;
-    PetscCall(residual(fused, &admissible));
-    if (!admissible && it == 0 && chord) { // the correction overshot: start Newton from the predictor
-      chord = false;
-      for (int i = 0; i < n; ++i) un[i] = up[i] + b * dt * dt * s->a[i];
-      PetscCall(residual(fused, &admissible));
-    }
-    if (!admissible) {
+    const bool fused = !a.reuse && (it == 0 || it < last_newton_);
+    Verdict v;
+    PetscCall(testIterate(a, it, fused, &v));
+    if (v == Verdict::iterate) PetscCall(refactorize(a, it, fused, &v));
+    if (v == Verdict::converged) break;
+    if (v == Verdict::rejected) {
       *ok = false;
-      reject_reason_ = "an element inverts (det F <= 0) at Newton iteration " + std::to_string(it);
-      if (factored) keff_current_ = false;
       PetscFunctionReturn(0);
     }
-    const double rn = norm2(r_);
-    tm->residual = rn;
-    if (it == 0 && !chord) ref = rn; // with the correction: the predictor's residual, as without it
-    if (rn <= p_.newton_atol || (it > 0 && rn <= p_.newton_rtol * ref)) {
-      tm->converged = true;
-      break;
-    }
-    if (!std::isfinite(rn) || it >= p_.newton_max_it) {
-      // Not converged within newton_max_it solves: reject the step (the caller halves dt), never accept.
-      *ok = false;
-      char why[256];
-      std::snprintf(
-          why, sizeof why,
-          "Newton did not converge in %d iterations (residual %.3e, tolerance max(%.1e, %.1e * %.3e))", it,
-          rn, p_.newton_atol, p_.newton_rtol, ref);
-      reject_reason_ = why;
-      if (factored) keff_current_ = false;
-      PetscFunctionReturn(0);
-    }
-    bool fok = true;
-    if (!reuse && !fused) {
-      const double t0 = now();
-      double e;
-      sys_->internalForce(ueval, tmp2_.data(), &Kt_, &e); // same point: admissible, same force
-      tm->assemble += now() - t0;
-    }
-    if (!reuse || factored_dt_ != dt) {
-      PetscCall(factorEffective(dt, reuse ? K0_ : Kt_, tm, &fok));
-      factored_dt_ = (reuse && fok) ? dt : -1;
-      if (!reuse) {
-        factored = true, keff_current_ = false;
-        if (p_.tangent_predictor) u_factored_.assign(ueval, ueval + n);
-      }
-    }
-    if (!fok) {
-      *ok = false;
-      reject_reason_ =
-          "the effective tangent is not positive definite at Newton iteration " + std::to_string(it);
-      PetscFunctionReturn(0);
-    }
-    const double t0 = now();
-    PetscCall(solver_->solve(r_.data(), du_.data()));
-    for (int i = 0; i < n; ++i) un[i] -= du_[i];
-    tm->solve += now() - t0;
+    PetscCall(applyCorrection(a));
     ++tm->newton_iterations;
-    if ((exact_after_one && it == 0) || p_.newton_max_it == 1) {
-      tm->converged = exact_after_one;
+    if ((a.exact_after_one && it == 0) || p_.newton_max_it == 1) {
+      tm->converged = a.exact_after_one;
       break;
     }
   }
-  for (int i = 0; i < n; ++i) an[i] = c0 * (un[i] - up[i]), vn[i] = vp[i] + g * dt * an[i];
-  s->u.swap(un), s->v.swap(vn), s->a.swap(an);
-  s->t += dt;
-  last_newton_ = tm->newton_iterations;
-  if (factored && p_.tangent_predictor) { // the factorisation left behind is K_eff at u_factored_, dt
-    s->u_tangent = u_factored_;
-    s->dt_tangent = dt;
-    keff_current_ = true;
+  accept(a);
+  PetscFunctionReturn(0);
+}
+
+// The Newmark predictor (constant acceleration) as the first iterate, the external force at the evaluation
+// time, and whether the tangent predictor's correction applies (the solver holds K_eff of the last step, dt).
+void Newmark::predict(Attempt& a) {
+  const int n = Keff_.n;
+  const double b = p_.beta, g = p_.gamma, dt = a.dt, af = p_.alpha_f;
+  const NewmarkState* s = a.s;
+  a.up.resize(n), a.vp.resize(n), a.un.resize(n), a.an.resize(n), a.vn.resize(n);
+  if (a.alpha) ua_.resize(n), va_.resize(n), aa_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    a.up[i] = s->u[i] + dt * s->v[i] + dt * dt * (0.5 - b) * s->a[i];
+    a.vp[i] = s->v[i] + dt * (1 - g) * s->a[i];
+    a.un[i] = a.up[i] + b * dt * dt * s->a[i];
+  }
+  fext_(a.alpha ? s->t + (1 - af) * dt : s->t + dt, fe_.data());
+  if (p_.partial_sums && rank_ > 0) std::fill(fe_.begin(), fe_.end(), 0.0);
+  a.ueval = a.alpha ? ua_.data() : a.un.data();
+  a.chord = p_.tangent_predictor && !a.reuse && p_.newton_max_it > 1 && keff_current_ &&
+            s->dt_tangent == dt && static_cast<int>(s->u_tangent.size()) == n;
+}
+
+// Back to the predictor as the iterate (plain Newton without the tangent predictor's correction).
+void Newmark::restartFromPredictor(Attempt& a) {
+  const int n = Keff_.n;
+  const double b = p_.beta, dt = a.dt;
+  for (int i = 0; i < n; ++i) a.un[i] = a.up[i] + b * dt * dt * a.s->a[i];
+}
+
+// a_{n+1} and v_{n+1} of the iterate.
+void Newmark::ratesAt(Attempt& a) {
+  const int n = Keff_.n;
+  const double g = p_.gamma, dt = a.dt;
+  for (int i = 0; i < n; ++i) a.an[i] = a.c0 * (a.un[i] - a.up[i]), a.vn[i] = a.vp[i] + g * dt * a.an[i];
+}
+
+// Residual r_ at the iterate un, with the tangent Kt_ when asked (same point, same force); admissibility.
+PetscErrorCode Newmark::residualAt(Attempt& a, bool want_tangent, bool* admissible) {
+  PetscFunctionBeginUser;
+  const int n = Keff_.n;
+  const double am = p_.alpha_m, af = p_.alpha_f;
+  const NewmarkState* s = a.s;
+  const double t0 = now();
+  ratesAt(a);
+  if (a.alpha)
+    for (int i = 0; i < n; ++i) {
+      ua_[i] = (1 - af) * a.un[i] + af * s->u[i];
+      va_[i] = (1 - af) * a.vn[i] + af * s->v[i];
+      aa_[i] = (1 - am) * a.an[i] + am * s->a[i];
+    }
+  double e;
+  *admissible = sys_->internalForce(a.ueval, f_.data(), want_tangent ? &Kt_ : nullptr, &e);
+  PetscCall(allAdmissible(admissible));
+  if (*admissible) {
+    symMultiply(Keff_, M_, a.alpha ? aa_.data() : a.an.data(), tmp_.data());
+    if (damped_) {
+      symMultiply(Keff_, C_, a.alpha ? va_.data() : a.vn.data(), tmp2_.data());
+      for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + tmp2_[i] + f_[i] - fe_[i];
+    } else {
+      for (int i = 0; i < n; ++i) r_[i] = tmp_[i] + f_[i] - fe_[i];
+    }
+    PetscCall(sumResidual());
+  }
+  a.tm->assemble += now() - t0;
+  PetscFunctionReturn(0);
+}
+
+// Tangent predictor: one correction of the predictor with the factorisation the last step left behind.
+PetscErrorCode Newmark::correctPredictor(Attempt& a) {
+  PetscFunctionBeginUser;
+  bool adm;
+  PetscCall(residualAt(a, false, &adm));
+  const double r_pred = adm ? norm2(r_) : 0;
+  if (!adm || r_pred <= p_.newton_atol) {
+    a.chord = false; // plain Newton from the predictor (its own rejection and convergence logic below)
+    restartFromPredictor(a);
+  } else {
+    PetscCall(applyCorrection(a));
+    a.ref = r_pred;
   }
   PetscFunctionReturn(0);
+}
+
+// The residual at the iterate it (with the tangent when fused); rejected when an element inverts.
+PetscErrorCode Newmark::testIterate(Attempt& a, int it, bool fused, Verdict* v) {
+  PetscFunctionBeginUser;
+  bool admissible;
+  PetscCall(residualAt(a, fused, &admissible));
+  if (!admissible && it == 0 && a.chord) { // the correction overshot: start Newton from the predictor
+    a.chord = false;
+    restartFromPredictor(a);
+    PetscCall(residualAt(a, fused, &admissible));
+  }
+  if (!admissible) {
+    reject(a, "an element inverts (det F <= 0) at Newton iteration " + std::to_string(it));
+    *v = Verdict::rejected;
+    PetscFunctionReturn(0);
+  }
+  *v = convergence(a, it);
+  PetscFunctionReturn(0);
+}
+
+// The Newton test on the residual r_ of the iterate it: converged, another iteration, or rejected.
+Newmark::Verdict Newmark::convergence(Attempt& a, int it) {
+  const double rn = norm2(r_);
+  a.tm->residual = rn;
+  if (it == 0 && !a.chord) a.ref = rn; // with the correction: the predictor's residual, as without it
+  if (rn <= p_.newton_atol || (it > 0 && rn <= p_.newton_rtol * a.ref)) {
+    a.tm->converged = true;
+    return Verdict::converged;
+  }
+  if (!std::isfinite(rn) || it >= p_.newton_max_it) {
+    // Not converged within newton_max_it solves: reject the step (the caller halves dt), never accept.
+    char why[256];
+    std::snprintf(
+        why, sizeof why,
+        "Newton did not converge in %d iterations (residual %.3e, tolerance max(%.1e, %.1e * %.3e))", it, rn,
+        p_.newton_atol, p_.newton_rtol, a.ref);
+    reject(a, why);
+    return Verdict::rejected;
+  }
+  return Verdict::iterate;
+}
+
+// K_eff factorised for the correction of iterate it: at every iteration with the tangent at the iterate
+// (assembled here when it did not come with the force), once per dt with K0; rejected if not positive
+// definite.
+PetscErrorCode Newmark::refactorize(Attempt& a, int it, bool fused, Verdict* v) {
+  PetscFunctionBeginUser;
+  bool ok = true;
+  if (!a.reuse && !fused) {
+    const double t0 = now();
+    double e;
+    sys_->internalForce(a.ueval, tmp2_.data(), &Kt_, &e); // same point: admissible, same force
+    a.tm->assemble += now() - t0;
+  }
+  if (!a.reuse || factored_dt_ != a.dt) {
+    PetscCall(factorEffective(a.dt, a.reuse ? K0_ : Kt_, a.tm, &ok));
+    factored_dt_ = (a.reuse && ok) ? a.dt : -1;
+    if (!a.reuse) {
+      a.factored = true, keff_current_ = false;
+      if (p_.tangent_predictor) u_factored_.assign(a.ueval, a.ueval + Keff_.n);
+    }
+  }
+  if (!ok) {
+    reject(a, "the effective tangent is not positive definite at Newton iteration " + std::to_string(it));
+    *v = Verdict::rejected;
+  }
+  PetscFunctionReturn(0);
+}
+
+// The Newton correction un -= K_eff^{-1} r_ with the factorisation the solver holds.
+PetscErrorCode Newmark::applyCorrection(Attempt& a) {
+  PetscFunctionBeginUser;
+  const int n = Keff_.n;
+  const double t0 = now();
+  PetscCall(solver_->solve(r_.data(), du_.data()));
+  for (int i = 0; i < n; ++i) a.un[i] -= du_[i];
+  a.tm->solve += now() - t0;
+  PetscFunctionReturn(0);
+}
+
+// A rejected attempt: why, and the solver no longer holds the last step's K_eff if this attempt refactorised.
+void Newmark::reject(const Attempt& a, const std::string& why) {
+  reject_reason_ = why;
+  if (a.factored) keff_current_ = false;
+}
+
+// The accepted iterate becomes the state (its a, v from the Newmark relations); the factorisation left behind
+// is K_eff at u_factored_, dt for the next step's tangent predictor.
+void Newmark::accept(Attempt& a) {
+  NewmarkState* s = a.s;
+  ratesAt(a);
+  s->u.swap(a.un), s->v.swap(a.vn), s->a.swap(a.an);
+  s->t += a.dt;
+  last_newton_ = a.tm->newton_iterations;
+  if (a.factored && p_.tangent_predictor) {
+    s->u_tangent = u_factored_;
+    s->dt_tangent = a.dt;
+    keff_current_ = true;
+  }
 }
 
 PetscErrorCode Newmark::restoreTangent(const NewmarkState& s) {

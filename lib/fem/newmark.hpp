@@ -80,7 +80,22 @@ public:
   double strainEnergy(const NewmarkState& s);
 
 private:
+  struct Attempt; // one attempt's predictor, iterate and Newton bookkeeping (newmark.cpp)
+  enum class Verdict { iterate, converged, rejected };
   PetscErrorCode attempt(NewmarkState* s, double dt, StepTimings* tm, bool* ok);
+  // The steps of an attempt: predictor, residual at the iterate, the tangent predictor's correction, the test
+  // of an iterate, the refactorisation, the Newton correction, the acceptance.
+  void predict(Attempt& a);
+  void restartFromPredictor(Attempt& a);
+  void ratesAt(Attempt& a);
+  PetscErrorCode residualAt(Attempt& a, bool want_tangent, bool* admissible);
+  PetscErrorCode correctPredictor(Attempt& a);
+  PetscErrorCode testIterate(Attempt& a, int it, bool fused, Verdict* v);
+  Verdict convergence(Attempt& a, int it);
+  PetscErrorCode refactorize(Attempt& a, int it, bool fused, Verdict* v);
+  PetscErrorCode applyCorrection(Attempt& a);
+  void reject(const Attempt& a, const std::string& why);
+  void accept(Attempt& a);
   PetscErrorCode factorEffective(double dt, const std::vector<double>& Kt, StepTimings* tm, bool* ok);
   // Partial sums: sum r over the ranks, AND the admissibility, zero the external force on ranks > 0.
   PetscErrorCode sumResidual();

@@ -69,128 +69,16 @@ public:
     PetscCallMPI(MPI_Comm_size(comm, &size));
     PetscCallMPI(MPI_Comm_rank(comm, &rank));
     // Part of each free DOF: METIS on the node graph (rank 0, broadcast), or on the DOF graph without one.
-    std::vector<int> dof_part(n_, 0);
     const bool by_nodes = nodes_.n > 0 && static_cast<int>(eq_.size()) == 3 * nodes_.n;
-    const Graph g = by_nodes ? nodes_ : graphOfMatrix(A);
-    std::vector<idx_t> part(g.n, 0);
-    if (size > 1 && g.n > 0) {
-      int status = METIS_OK;
-      if (rank == 0) {
-        idx_t nv = g.n, ncon = 1, nparts = size, cut = 0;
-        std::vector<idx_t> xadj(g.xadj.begin(), g.xadj.end()), adj(g.adj.begin(), g.adj.end());
-        idx_t options[METIS_NOPTIONS];
-        METIS_SetDefaultOptions(options);
-        if (g.adj.empty() || g.n < size) {
-          for (int v = 0; v < g.n; ++v) part[v] = static_cast<idx_t>((long long)v * size / g.n);
-        } else {
-          status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr,
-                                       &nparts, nullptr, nullptr, options, &cut, part.data());
-        }
-      }
-      PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
-      PetscCheck(status == METIS_OK, comm, PETSC_ERR_LIB, "METIS_PartGraphKway failed (status %d)", status);
-      static_assert(sizeof(idx_t) == 4 || sizeof(idx_t) == 8, "idx_t");
-      PetscCallMPI(MPI_Bcast(part.data(), g.n, sizeof(idx_t) == 8 ? MPI_INT64_T : MPI_INT32_T, 0, comm));
-    }
+    std::vector<idx_t> part;
+    PetscCall(partition(comm, by_nodes ? nodes_ : graphOfMatrix(A), size, rank, &part));
     distributed_ = size > 1 && by_nodes;
-    node_part_.assign(part.begin(), part.end());
-    if (!by_nodes) node_part_.clear();
-    if (by_nodes) {
-      for (int v = 0; v < nodes_.n; ++v)
-        for (int c = 0; c < 3; ++c)
-          if (eq_[3 * v + c] >= 0) dof_part[eq_[3 * v + c]] = static_cast<int>(part[v]);
-    } else {
-      for (int i = 0; i < n_; ++i) dof_part[i] = static_cast<int>(part[i]);
-    }
-    // Global numbering: part by part, in the order of perm within a part.
-    std::vector<PetscInt> count(size + 1, 0);
-    for (int i = 0; i < n_; ++i) ++count[dof_part[i] + 1];
-    std::partial_sum(count.begin(), count.end(), count.begin());
-    range_.assign(count.begin(), count.end());
-    std::vector<PetscInt> next(count.begin(), count.end() - 1);
-    map_.assign(n_, 0);
-    inv_.assign(n_, 0);
-    for (int k = 0; k < n_; ++k) {
-      const int old = perm[k];
-      const PetscInt idx = next[dof_part[old]]++;
-      map_[old] = idx;
-      inv_[idx] = old;
-    }
-    rstart_ = range_[rank];
-    nlocal_ = range_[rank + 1] - range_[rank];
-    // Local rows of the symmetric matrix (both triangles) with the index of each value in A.val.
-    struct Entry {
-      PetscInt row, col;
-      int k;
-    };
-    std::vector<Entry> ent;
-    for (int c = 0; c < n_; ++c)
-      for (int k = A.colptr[c]; k < A.colptr[c + 1]; ++k) {
-        const int r = A.rowind[k];
-        const PetscInt pr = map_[r], pc = map_[c];
-        if (pr >= rstart_ && pr < rstart_ + nlocal_) ent.push_back({pr, pc, k});
-        if (r != c && pc >= rstart_ && pc < rstart_ + nlocal_) ent.push_back({pc, pr, k});
-      }
-    std::sort(ent.begin(), ent.end(),
-              [](const Entry& a, const Entry& b) { return a.row != b.row ? a.row < b.row : a.col < b.col; });
-    rowptr_.assign(nlocal_ + 1, 0);
-    cols_.resize(ent.size());
-    vidx_.resize(ent.size());
-    vals_.resize(ent.size());
-    std::vector<PetscInt> dnz(nlocal_, 0), onz(nlocal_, 0);
-    for (size_t j = 0; j < ent.size(); ++j) {
-      const PetscInt lr = ent[j].row - rstart_;
-      ++rowptr_[lr + 1];
-      cols_[j] = ent[j].col;
-      vidx_[j] = ent[j].k;
-      const bool diag = ent[j].col >= rstart_ && ent[j].col < rstart_ + nlocal_;
-      ++(diag ? dnz : onz)[lr];
-    }
-    std::partial_sum(rowptr_.begin(), rowptr_.end(), rowptr_.begin());
-    MatDestroy(&A_);
-    PetscCall(MatCreateAIJ(comm, nlocal_, nlocal_, n_, n_, 0, dnz.data(), 0, onz.data(), &A_));
-    PetscCall(MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-    PetscCall(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE));
-    PetscCall(MatSetOption(A_, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
-    VecDestroy(&b_);
-    VecDestroy(&x_);
-    VecDestroy(&xall_);
-    VecScatterDestroy(&toall_);
-    PetscCall(MatCreateVecs(A_, &x_, &b_));
-    PetscCall(VecScatterCreateToAll(x_, &toall_, &xall_));
-    long long nnz = static_cast<long long>(ent.size()), total = 0;
-    PetscCallMPI(MPI_Allreduce(&nnz, &total, 1, MPI_LONG_LONG, MPI_SUM, comm));
-    stats_.nnz_L = (total + n_) / 2; // stored upper triangle of the matrix (the factor is PETSc's business)
-    stats_.flops = 0;
-    operators_set_ = false;
-    // Fix the nonzero structure once (zeros on the whole pattern of the owned rows): partial sums skip exact
-    // zeros, and the first matrix (e.g. the mass) may have structural zeros.
-    std::fill(vals_.begin(), vals_.end(), 0.0);
-    for (PetscInt r = 0; r < nlocal_; ++r) {
-      const PetscInt row = rstart_ + r, nc = rowptr_[r + 1] - rowptr_[r];
-      PetscCall(
-          MatSetValues(A_, 1, &row, nc, cols_.data() + rowptr_[r], vals_.data() + rowptr_[r], INSERT_VALUES));
-    }
-    PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
-    PetscCall(KSPSetOperators(ksp_, A_, A_));
-    operators_set_ = true;
-    KSPType kt;
-    PCType pt;
-    PC pc;
-    PetscCall(KSPGetType(ksp_, &kt));
-    PetscCall(KSPGetPC(ksp_, &pc));
-    PetscCall(PCGetType(pc, &pt));
-    PetscInt lmin = n_, lmax = 0;
-    for (int p = 0; p < size; ++p)
-      lmin = std::min(lmin, range_[p + 1] - range_[p]), lmax = std::max(lmax, range_[p + 1] - range_[p]);
-    char d[256];
-    snprintf(
-        d, sizeof d,
-        "petsc: %d rows on %d ranks (METIS %s partition, %d..%d rows per rank), KSP %s, PC %s, %s assembly",
-        n_, size, by_nodes ? "node" : "DOF", (int)lmin, (int)lmax, kt ? kt : "?", pt ? pt : "?",
-        distributed_ ? "distributed" : "replicated");
-    desc_ = d;
+    numberByParts(dofParts(part, by_nodes), perm, size, rank);
+    std::vector<PetscInt> dnz, onz;
+    const long long nnz = localRows(A, &dnz, &onz);
+    PetscCall(createOperator(comm, dnz, onz, nnz));
+    PetscCall(fixPattern());
+    PetscCall(describeLayout(size, by_nodes));
     PetscFunctionReturn(0);
   }
 
@@ -210,11 +98,7 @@ public:
         }
     } else {
       for (size_t j = 0; j < vidx_.size(); ++j) vals_[j] = A.val[vidx_[j]];
-      for (PetscInt r = 0; r < nlocal_; ++r) {
-        const PetscInt row = rstart_ + r, nc = rowptr_[r + 1] - rowptr_[r];
-        PetscCall(MatSetValues(A_, 1, &row, nc, cols_.data() + rowptr_[r], vals_.data() + rowptr_[r],
-                               INSERT_VALUES));
-      }
+      PetscCall(insertLocalRows());
     }
     PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
@@ -261,6 +145,169 @@ public:
   const std::vector<int>& nodePartition() const override { return node_part_; }
 
 private:
+  // One part per rank of the graph g: METIS_PartGraphKway on rank 0 (contiguous blocks for a graph without
+  // edges or with fewer vertices than ranks), broadcast; all zeros at one rank.
+  static PetscErrorCode partition(MPI_Comm comm, const Graph& g, int size, int rank,
+                                  std::vector<idx_t>* part) {
+    PetscFunctionBeginUser;
+    part->assign(g.n, 0);
+    if (size <= 1 || g.n <= 0) PetscFunctionReturn(0);
+    int status = METIS_OK;
+    if (rank == 0) {
+      idx_t nv = g.n, ncon = 1, nparts = size, cut = 0;
+      std::vector<idx_t> xadj(g.xadj.begin(), g.xadj.end()), adj(g.adj.begin(), g.adj.end());
+      idx_t options[METIS_NOPTIONS];
+      METIS_SetDefaultOptions(options);
+      if (g.adj.empty() || g.n < size) {
+        for (int v = 0; v < g.n; ++v) (*part)[v] = static_cast<idx_t>((long long)v * size / g.n);
+      } else {
+        status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &nparts,
+                                     nullptr, nullptr, options, &cut, part->data());
+      }
+    }
+    PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
+    PetscCheck(status == METIS_OK, comm, PETSC_ERR_LIB, "METIS_PartGraphKway failed (status %d)", status);
+    static_assert(sizeof(idx_t) == 4 || sizeof(idx_t) == 8, "idx_t");
+    PetscCallMPI(MPI_Bcast(part->data(), g.n, sizeof(idx_t) == 8 ? MPI_INT64_T : MPI_INT32_T, 0, comm));
+    PetscFunctionReturn(0);
+  }
+
+  // The part of each free DOF: that of its node (by_nodes; kept as node_part_) or of the DOF itself.
+  std::vector<int> dofParts(const std::vector<idx_t>& part, bool by_nodes) {
+    std::vector<int> dof_part(n_, 0);
+    node_part_.assign(part.begin(), part.end());
+    if (!by_nodes) node_part_.clear();
+    if (by_nodes) {
+      for (int v = 0; v < nodes_.n; ++v)
+        for (int c = 0; c < 3; ++c)
+          if (eq_[3 * v + c] >= 0) dof_part[eq_[3 * v + c]] = static_cast<int>(part[v]);
+    } else {
+      for (int i = 0; i < n_; ++i) dof_part[i] = static_cast<int>(part[i]);
+    }
+    return dof_part;
+  }
+
+  // Global numbering: part by part, in the order of perm within a part; this rank's block of rows.
+  void numberByParts(const std::vector<int>& dof_part, const std::vector<int>& perm, int size, int rank) {
+    std::vector<PetscInt> count(size + 1, 0);
+    for (int i = 0; i < n_; ++i) ++count[dof_part[i] + 1];
+    std::partial_sum(count.begin(), count.end(), count.begin());
+    range_.assign(count.begin(), count.end());
+    std::vector<PetscInt> next(count.begin(), count.end() - 1);
+    map_.assign(n_, 0);
+    inv_.assign(n_, 0);
+    for (int k = 0; k < n_; ++k) {
+      const int old = perm[k];
+      const PetscInt idx = next[dof_part[old]]++;
+      map_[old] = idx;
+      inv_[idx] = old;
+    }
+    rstart_ = range_[rank];
+    nlocal_ = range_[rank + 1] - range_[rank];
+  }
+
+  // Local rows of the symmetric matrix (both triangles) with the index of each value in A.val, and the
+  // nonzeros per row in and outside the diagonal block; returns this rank's number of entries.
+  long long localRows(const SymCsc& A, std::vector<PetscInt>* dnz, std::vector<PetscInt>* onz) {
+    struct Entry {
+      PetscInt row, col;
+      int k;
+    };
+    std::vector<Entry> ent;
+    for (int c = 0; c < n_; ++c)
+      for (int k = A.colptr[c]; k < A.colptr[c + 1]; ++k) {
+        const int r = A.rowind[k];
+        const PetscInt pr = map_[r], pc = map_[c];
+        if (pr >= rstart_ && pr < rstart_ + nlocal_) ent.push_back({pr, pc, k});
+        if (r != c && pc >= rstart_ && pc < rstart_ + nlocal_) ent.push_back({pc, pr, k});
+      }
+    std::sort(ent.begin(), ent.end(),
+              [](const Entry& a, const Entry& b) { return a.row != b.row ? a.row < b.row : a.col < b.col; });
+    rowptr_.assign(nlocal_ + 1, 0);
+    cols_.resize(ent.size());
+    vidx_.resize(ent.size());
+    vals_.resize(ent.size());
+    dnz->assign(nlocal_, 0), onz->assign(nlocal_, 0);
+    for (size_t j = 0; j < ent.size(); ++j) {
+      const PetscInt lr = ent[j].row - rstart_;
+      ++rowptr_[lr + 1];
+      cols_[j] = ent[j].col;
+      vidx_[j] = ent[j].k;
+      const bool diag = ent[j].col >= rstart_ && ent[j].col < rstart_ + nlocal_;
+      ++(diag ? *dnz : *onz)[lr];
+    }
+    std::partial_sum(rowptr_.begin(), rowptr_.end(), rowptr_.begin());
+    return static_cast<long long>(ent.size());
+  }
+
+  // The MPIAIJ matrix preallocated with dnz, onz, its vectors and the scatter of the solution to all ranks.
+  PetscErrorCode createOperator(MPI_Comm comm, const std::vector<PetscInt>& dnz,
+                                const std::vector<PetscInt>& onz, long long nnz) {
+    PetscFunctionBeginUser;
+    MatDestroy(&A_);
+    PetscCall(MatCreateAIJ(comm, nlocal_, nlocal_, n_, n_, 0, dnz.data(), 0, onz.data(), &A_));
+    PetscCall(MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+    PetscCall(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE));
+    PetscCall(MatSetOption(A_, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+    VecDestroy(&b_);
+    VecDestroy(&x_);
+    VecDestroy(&xall_);
+    VecScatterDestroy(&toall_);
+    PetscCall(MatCreateVecs(A_, &x_, &b_));
+    PetscCall(VecScatterCreateToAll(x_, &toall_, &xall_));
+    long long total = 0;
+    PetscCallMPI(MPI_Allreduce(&nnz, &total, 1, MPI_LONG_LONG, MPI_SUM, comm));
+    stats_.nnz_L = (total + n_) / 2; // stored upper triangle of the matrix (the factor is PETSc's business)
+    stats_.flops = 0;
+    operators_set_ = false;
+    PetscFunctionReturn(0);
+  }
+
+  // vals_ into the owned rows of A_ (INSERT_VALUES).
+  PetscErrorCode insertLocalRows() {
+    PetscFunctionBeginUser;
+    for (PetscInt r = 0; r < nlocal_; ++r) {
+      const PetscInt row = rstart_ + r, nc = rowptr_[r + 1] - rowptr_[r];
+      PetscCall(
+          MatSetValues(A_, 1, &row, nc, cols_.data() + rowptr_[r], vals_.data() + rowptr_[r], INSERT_VALUES));
+    }
+    PetscFunctionReturn(0);
+  }
+
+  // Fix the nonzero structure once (zeros on the whole pattern of the owned rows): partial sums skip exact
+  // zeros, and the first matrix (e.g. the mass) may have structural zeros.
+  PetscErrorCode fixPattern() {
+    PetscFunctionBeginUser;
+    std::fill(vals_.begin(), vals_.end(), 0.0);
+    PetscCall(insertLocalRows());
+    PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+    PetscCall(KSPSetOperators(ksp_, A_, A_));
+    operators_set_ = true;
+    PetscFunctionReturn(0);
+  }
+
+  // The one-line description: rows, ranks, partition, KSP and PC types, assembly.
+  PetscErrorCode describeLayout(int size, bool by_nodes) {
+    PetscFunctionBeginUser;
+    KSPType kt;
+    PCType pt;
+    PC pc;
+    PetscCall(KSPGetType(ksp_, &kt));
+    PetscCall(KSPGetPC(ksp_, &pc));
+    PetscCall(PCGetType(pc, &pt));
+    PetscInt lmin = n_, lmax = 0;
+    for (int p = 0; p < size; ++p)
+      lmin = std::min(lmin, range_[p + 1] - range_[p]), lmax = std::max(lmax, range_[p + 1] - range_[p]);
+    char d[256];
+    snprintf(
+        d, sizeof d,
+        "petsc: %d rows on %d ranks (METIS %s partition, %d..%d rows per rank), KSP %s, PC %s, %s assembly",
+        n_, size, by_nodes ? "node" : "DOF", (int)lmin, (int)lmax, kt ? kt : "?", pt ? pt : "?",
+        distributed_ ? "distributed" : "replicated");
+    desc_ = d;
+    PetscFunctionReturn(0);
+  }
   std::string desc_ = "petsc";
   MPI_Comm comm_ = MPI_COMM_SELF;
   KSP ksp_ = nullptr;
