@@ -28,8 +28,8 @@ struct Dataset {
   const char* name;
   ull cols, len;
   std::vector<double>* data;
-  const std::vector<double>* owner;
-  const char* malformed;
+  const std::vector<double>* owner = nullptr;
+  const char* malformed = nullptr;
   bool present = false;
 };
 

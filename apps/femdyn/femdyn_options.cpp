@@ -3,7 +3,7 @@
 // their registries in lib/fem (-mesh, -material, -ordering, -solver, the integrator's -time_scheme,
 // -jacobian, -newton_predictor, -mass), then the cross-option checks (collective PetscCheck).
 #include "core/named_choice.hpp"
-#include "core/option_string.hpp"
+#include "core/option_value.hpp"
 #include "fem/material.hpp"
 #include "femdyn_run.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "core/comma_list.hpp"
 #include "core/named_choice.hpp"
-#include "core/option_string.hpp"
+#include "core/option_value.hpp"
 #include "core/option_value.hpp"
 
 #include <algorithm>

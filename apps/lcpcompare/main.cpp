@@ -12,7 +12,7 @@
 //   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_spd -n 50 -count 100 -ours bpp,lemke,pgs -output compare_spd.h5
 #include "core/log.hpp"
 #include "core/named_choice.hpp"
-#include "core/option_string.hpp"
+#include "core/option_value.hpp"
 #include "core/option_value.hpp"
 #include "core/run_context.hpp"
 #include "io/h5_output.hpp"

@@ -1,6 +1,6 @@
 // reorder: see main.cpp. Ordering time: minimum over -repeat runs of the thread CPU time (fem/cpu_timer.hpp).
 #include "core/log.hpp"
-#include "core/option_string.hpp"
+#include "core/option_value.hpp"
 #include "fem/matrix_market.hpp"
 #include "fem/ordering.hpp"
 #include "io/h5_output.hpp"

@@ -1,8 +1,10 @@
-// Numeric and boolean PETSc options in one call between PetscOptionsBegin and PetscOptionsEnd: the current
-// value is the default shown by -help. Strings: core/option_string.hpp; named choices: core/named_choice.hpp.
+// Numeric, boolean and free-text PETSc options in one call between PetscOptionsBegin and PetscOptionsEnd: the
+// current value is the default shown by -help. Options with a fixed set of values: core/named_choice.hpp.
 #pragma once
 
 #include <petscsys.h>
+
+#include <string>
 
 namespace suite {
 
@@ -24,6 +26,17 @@ inline PetscErrorCode optionsValue(PetscOptionItems* PetscOptionsObject, const c
                                    PetscBool* value, PetscBool* set = nullptr) {
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsBool(name, text, "", *value, value, set));
+  PetscFunctionReturn(0);
+}
+
+// A string without a fixed set of values (a path, a plane), read into a std::string.
+inline PetscErrorCode optionsString(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                                    std::string* value) {
+  char buf[PETSC_MAX_PATH_LEN];
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(buf, value->c_str(), sizeof buf));
+  PetscCall(PetscOptionsString(name, text, "", buf, buf, sizeof buf, nullptr));
+  *value = buf;
   PetscFunctionReturn(0);
 }
 

@@ -284,7 +284,7 @@ TetMesh parseGmsh(const std::string& content, const std::string& name) {
     fail(name + ": Gmsh format " + std::to_string(version) + " (file type " + std::to_string(ftype) +
          ") not supported; use ASCII 2.2 or 4.1");
   t.expect("$EndMeshFormat");
-  GmshReader r{t};
+  GmshReader r{t, {}, {}, {}};
   bool have_nodes = false;
   std::string tok;
   while (t.next(&tok)) {
