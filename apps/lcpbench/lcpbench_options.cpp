@@ -5,7 +5,6 @@
 #include "core/comma_list.hpp"
 #include "core/named_choice.hpp"
 #include "core/option_value.hpp"
-#include "core/option_value.hpp"
 
 #include <algorithm>
 #include <cmath>

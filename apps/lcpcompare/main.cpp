@@ -13,7 +13,6 @@
 #include "core/log.hpp"
 #include "core/named_choice.hpp"
 #include "core/option_value.hpp"
-#include "core/option_value.hpp"
 #include "core/run_context.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/generators.hpp"
