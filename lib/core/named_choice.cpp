@@ -23,6 +23,25 @@ PetscErrorCode checkChoice(MPI_Comm comm, const char* option, const std::string&
 }
 
 namespace {
+bool isChoice(const std::string& value, const std::vector<Choice>& choices) {
+  for (const Choice& c : choices)
+    if (c.name == value) return true;
+  return false;
+}
+
+// An error raised inside PetscOptionsBegin/End returns past PetscOptionsEnd and leaks the block's strings (LSan
+// reports them): the block is closed first, then the collective error is raised.
+PetscErrorCode failInBlock(PetscOptionItems* PetscOptionsObject, const char* name, const std::string& value,
+                           const std::vector<Choice>& choices, const char* list_text) {
+  const MPI_Comm comm = PetscOptionsObject->comm;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsEnd_Private(PetscOptionsObject));
+  PetscCheck(list_text == nullptr, comm, PETSC_ERR_ARG_WRONG, "%s '%s': empty entry in the list", name,
+             list_text);
+  PetscCall(checkChoice(comm, name, value, choices));
+  PetscFunctionReturn(0);
+}
+
 // Under -help: one line per registered value, below the option's own line.
 PetscErrorCode printChoices(PetscOptionItems* PetscOptionsObject, const std::vector<Choice>& choices) {
   PetscFunctionBeginUser;
@@ -48,7 +67,7 @@ PetscErrorCode optionsChoice(PetscOptionItems* PetscOptionsObject, const char* n
   PetscCall(printChoices(PetscOptionsObject, choices));
   *value = buf;
   if (set) *set = given;
-  PetscCall(checkChoice(PetscOptionsObject->comm, name, *value, choices));
+  if (!isChoice(*value, choices)) PetscCall(failInBlock(PetscOptionsObject, name, *value, choices, nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -70,9 +89,8 @@ PetscErrorCode optionsChoiceList(PetscOptionItems* PetscOptionsObject, const cha
   values->clear();
   std::stringstream ss(buf);
   for (std::string item; std::getline(ss, item, ',');) {
-    PetscCheck(!item.empty(), PetscOptionsObject->comm, PETSC_ERR_ARG_WRONG,
-               "%s '%s': empty entry in the list", name, buf);
-    PetscCall(checkChoice(PetscOptionsObject->comm, name, item, choices));
+    if (item.empty()) PetscCall(failInBlock(PetscOptionsObject, name, item, choices, buf));
+    if (!isChoice(item, choices)) PetscCall(failInBlock(PetscOptionsObject, name, item, choices, nullptr));
     values->push_back(item);
   }
   PetscFunctionReturn(0);
