@@ -63,7 +63,14 @@ PetscErrorCode EulerRun::saveState(const std::string& path, PetscInt step, doubl
 }
 
 PetscErrorCode EulerRun::loadState(const std::string& path, PetscInt* step, double* t) {
+  suite::CheckpointHeader h;
   PetscFunctionBeginUser;
+  PetscCall(suite::readCheckpointHeader(ctx_.comm(), path, &h));
+  PetscCheck(h.app != "euler" || h.scheme.find(":dim=") != std::string::npos, ctx_.comm(),
+             PETSC_ERR_FILE_UNEXPECTED,
+             "restart %s: a checkpoint of the former 1D Euler driver (its tag '%s' names no dimension); this "
+             "version restarts only from checkpoints of the one driver for -dim 1|2|3: run the case again",
+             path.c_str(), h.scheme.c_str());
   PetscCall(checkpointIo(false, path, step, t));
   PetscCall(TSSetStepNumber(ts_, *step));
   PetscCall(TSSetTime(ts_, *t));

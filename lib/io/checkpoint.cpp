@@ -109,6 +109,14 @@ PetscErrorCode readHeader(MPI_Comm comm, const H5Input& in, CheckpointHeader* h)
 
 } // namespace
 
+PetscErrorCode readCheckpointHeader(MPI_Comm comm, const std::string& path, CheckpointHeader* header) {
+  PetscFunctionBeginUser;
+  H5Input in;
+  PetscCall(in.open(comm, path));
+  PetscCall(readHeader(comm, in, header));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode readCheckpoint(MPI_Comm comm, const std::string& path, const CheckpointHeader& expected,
                               CheckpointHeader* found, const std::vector<CheckpointField>& fields) {
   PetscFunctionBeginUser;

@@ -31,6 +31,9 @@ PetscErrorCode writeCheckpoint(MPI_Comm comm, const std::string& path, const Che
                                const std::vector<CheckpointField>& fields);
 // Reads the header into *found and checks it against expected (app, scheme, grid); then reads the fields
 // (their dims must match) and verifies their checksums. Any problem: one clear error on all ranks.
+// Collective: the header of the checkpoint at path (app, scheme tag, grid, step, time) without its fields.
+PetscErrorCode readCheckpointHeader(MPI_Comm comm, const std::string& path, CheckpointHeader* header);
+
 PetscErrorCode readCheckpoint(MPI_Comm comm, const std::string& path, const CheckpointHeader& expected,
                               CheckpointHeader* found, const std::vector<CheckpointField>& fields);
 

@@ -188,6 +188,21 @@ def restart():
             lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
             check(p.returncode != 0 and len(lines) == 1 and pattern in lines[0],
                   f"restart with {' '.join(map(str, extra))} refused once: {lines}")
+        # A checkpoint of the former 1D driver (its tag had no dim=/axis=): refused with a message that says so.
+        import h5py
+        old = os.path.join(d, "old_1d.h5")
+        with open(path, "rb") as src, open(old, "wb") as dst:
+            dst.write(src.read())
+        with h5py.File(old, "r+") as f:
+            tag = f["/checkpoint"].attrs["scheme"]
+            tag = tag.decode() if isinstance(tag, bytes) else str(tag)
+            f["/checkpoint"].attrs["scheme"] = tag.replace("dim=1:axis=x:", "")
+        p = subprocess.run([MPIEXEC, "--oversubscribe", "-n", "2", os.path.join(BIN, "euler")] +
+                           [str(a) for a in base + ["-restart", old]],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+        lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
+        check(p.returncode != 0 and len(lines) == 1 and "former 1D Euler driver" in lines[0],
+              f"checkpoint of the former 1D driver refused once, saying so: {lines}")
         data = bytearray(open(path, "rb").read())
         data[len(data) // 2] ^= 0xFF
         bad = os.path.join(d, "bad.h5")
