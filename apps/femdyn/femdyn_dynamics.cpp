@@ -3,7 +3,7 @@
 #include "femdyn_dynamics.hpp"
 
 #include "core/log.hpp"
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 
 namespace femdyn_app {
 
@@ -49,9 +49,9 @@ PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double, double* dt) {
 PetscErrorCode FemdynDynamics::advance(PetscInt, double, double dt, suite::StepOutcome* out) {
   StepTimings tm;
   PetscFunctionBeginUser;
-  const double ts = wallSeconds(), tc = threadCpuSeconds();
+  const double ts = suite::wallSeconds(), tc = suite::threadCpuSeconds();
   PetscCall(nm_.step(&s_, dt, &tm));
-  const double dt_wall = wallSeconds() - ts, dt_cpu = threadCpuSeconds() - tc;
+  const double dt_wall = suite::wallSeconds() - ts, dt_cpu = suite::threadCpuSeconds() - tc;
   stepping_ += dt_wall;
   stepping_cpu_ += dt_cpu;
   if (!tm.converged && run_.opt_.newmark.newton_max_it > 1) ++unconverged_;

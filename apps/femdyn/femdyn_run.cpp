@@ -6,7 +6,7 @@
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
 #include "core/time_loop.hpp"
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 #include "femdyn_dynamics.hpp"
 
 namespace femdyn_app {
@@ -16,10 +16,10 @@ using namespace suite::fem;
 PetscErrorCode FemdynRun::solveStaticCase() {
   std::vector<double> u;
   PetscFunctionBeginUser;
-  const double t0 = wallSeconds();
+  const double t0 = suite::wallSeconds();
   PetscCall(solveStatic(ctx_.comm(), &model_, solver_.get(), f_ext_, (int)opt_.load_steps,
                         (int)opt_.newmark.newton_max_it, opt_.newmark.newton_rtol, &u, &res_.stat, partial_));
-  res_.loop_time = wallSeconds() - t0;
+  res_.loop_time = suite::wallSeconds() - t0;
   res_.u_full = model_.fullVector(u);
   res_.tip_deflection = nodalMean(res_.u_full, tip_nodes_, 1, -1);
   res_.tip_ux = nodalMean(res_.u_full, tip_nodes_, 0);

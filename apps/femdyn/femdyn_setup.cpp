@@ -2,7 +2,7 @@
 // plane and the elastic model, the loads (fem/beam_loads.hpp), the fill-reducing ordering and the solver's
 // symbolic analysis (with -solver petsc at several ranks: each rank assembles the elements it owns).
 #include "core/log.hpp"
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 #include "fem/material.hpp"
 #include "fem/mesh.hpp"
 #include "femdyn_run.hpp"
@@ -47,9 +47,9 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
   OrderingFn order_fn;
   PetscFunctionBeginUser;
   PetscCall(findOrdering(comm, opt_.ordering, &order_fn));
-  const double to = threadCpuSeconds();
+  const double to = suite::threadCpuSeconds();
   perm_ = expandToDofs(order_fn(model_.nodeGraphOf()), model_.eq(), model_.numFree());
-  res_.ordering_time = threadCpuSeconds() - to;
+  res_.ordering_time = suite::threadCpuSeconds() - to;
   res_.metrics = computeMetrics(graphOfMatrix(model_.pattern()), perm_);
   solver_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
   PetscCall(solver_->analyze(comm, model_.pattern(), perm_));
@@ -66,7 +66,7 @@ PetscErrorCode FemdynRun::setup() {
   Lame lame;
   PetscFunctionBeginUser;
   PetscCall(suite::checkOutputWritable(comm, opt_.output, "output"));
-  const double t0 = wallSeconds();
+  const double t0 = suite::wallSeconds();
   PetscCall(lameFromYoung(comm, opt_.young, opt_.poisson, &lame));
   PetscCall(createMaterial(comm, opt_.material, lame, &material_));
   PetscCall(buildMesh());
@@ -75,7 +75,7 @@ PetscErrorCode FemdynRun::setup() {
   PetscCall(tipTractionLoad(comm, model_, opt_.tip_load, &f_ext_));
   addGravityLoad(model_, opt_.density, opt_.gravity, &f_ext_);
   PetscCall(orderAndAnalyze());
-  res_.setup_time = wallSeconds() - t0;
+  res_.setup_time = suite::wallSeconds() - t0;
   PetscCall(suite::logInfo(comm, ctx_.quiet(),
                            "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
                            "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",

@@ -12,6 +12,7 @@
 //   OPENBLAS_NUM_THREADS=1 lcpcompare -family random_spd -n 50 -count 100 -ours bpp,lemke,pgs -output compare_spd.h5
 #include "core/log.hpp"
 #include "core/named_choice.hpp"
+#include "core/clocks.hpp"
 #include "core/option_value.hpp"
 #include "core/run_context.hpp"
 #include "io/h5_output.hpp"
@@ -49,12 +50,6 @@ extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 using namespace suite::lcp;
 
 namespace {
-
-double threadCpu() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 // -family and -ours documented by -help from the registries of lib/lcp.
 template <class Registry> std::vector<suite::Choice> choices(const Registry& r) {
@@ -145,7 +140,7 @@ Entry siconosEntry(const std::string& name, int lcp_id, int relay_id, const Opti
             if (max_it > 0) opt->iparam[SICONOS_IPARAM_MAX_ITER] = static_cast<int>(max_it);
             opt->dparam[SICONOS_DPARAM_TOL] = 1e-12;
             int info = 0;
-            const double t0 = threadCpu();
+            const double t0 = suite::threadCpuSeconds();
             if (box) {
               RelayProblem rp{m, M, q.data(), lb.data(), ub.data()};
               info = relay_driver(&rp, z.data(), w.data(), opt);
@@ -153,7 +148,7 @@ Entry siconosEntry(const std::string& name, int lcp_id, int relay_id, const Opti
               LinearComplementarityProblem lp{m, M, q.data()};
               info = linearComplementarity_driver(&lp, z.data(), w.data(), opt);
             }
-            const double cpu = threadCpu() - t0;
+            const double cpu = suite::threadCpuSeconds() - t0;
             solver_options_delete(opt);
             NM_free(M);
             return judge(p, Eigen::Map<Vec>(z.data(), m), info == 0, cpu, rel_tol);
@@ -176,10 +171,10 @@ Outcome bulletDantzig(const Problem& p, double rel_tol) {
     hi[i] = std::isfinite(p.u[i]) ? p.u[i] : BT_INFINITY;
   }
   btDantzigScratchMemory scratch;
-  const double t0 = threadCpu();
+  const double t0 = suite::threadCpuSeconds();
   const bool ok = btSolveDantzigLCP(m, A.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(),
                                     findex.data(), scratch);
-  const double cpu = threadCpu() - t0;
+  const double cpu = suite::threadCpuSeconds() - t0;
   return judge(p, Eigen::Map<Vec>(x.data(), m), ok, cpu, rel_tol);
 }
 #endif

@@ -1,4 +1,4 @@
-// reorder: see main.cpp. Ordering time: minimum over -repeat runs of the thread CPU time (fem/cpu_timer.hpp).
+// reorder: see main.cpp. Ordering time: minimum over -repeat runs of the thread CPU time (core/clocks.hpp).
 #include "core/log.hpp"
 #include "core/option_value.hpp"
 #include "fem/matrix_market.hpp"

@@ -1,19 +1,13 @@
 // The one time loop (see time_loop.hpp).
 #include "core/time_loop.hpp"
 
+#include "core/clocks.hpp"
 #include "core/log.hpp"
 #include "core/progress.hpp"
 
-#include <ctime>
 #include <memory>
 
 namespace suite {
-
-double processCpuSeconds() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 PetscErrorCode TimeLoop::restartOrStart(TimeStepped& app) {
   PetscFunctionBeginUser;

@@ -120,6 +120,4 @@ private:
   std::unique_ptr<Progress> progress_;
 };
 
-double processCpuSeconds(); // this process's CPU time: the clock to trust on a loaded machine
-
 } // namespace suite

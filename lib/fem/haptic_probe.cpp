@@ -3,7 +3,7 @@
 #include "fem/haptic_probe.hpp"
 
 #include "core/log.hpp"
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // v_{n+1} = v~ + gamma dt a_{n+1}, u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, v~ = v_n + dt (1 - gamma) a_n.
 #include "fem/newmark.hpp"
 
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 
 #include <algorithm>
 #include <cmath>

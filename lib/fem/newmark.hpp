@@ -47,7 +47,7 @@ std::vector<suite::Choice> jacobianChoices();
 std::vector<suite::Choice> predictorChoices();
 std::vector<suite::Choice> massChoices();
 
-struct StepTimings { // CPU seconds of the calling thread (fem/cpu_timer.hpp)
+struct StepTimings { // CPU seconds of the calling thread (core/clocks.hpp)
   double assemble = 0, factor = 0, solve = 0;
   int newton_iterations = 0, factorizations = 0, rejected = 0;
   double residual = 0;

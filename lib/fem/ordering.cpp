@@ -2,7 +2,7 @@
 // that -help prints under -ordering).
 #include "fem/ordering.hpp"
 
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 // Run with OPENBLAS_NUM_THREADS=1 for one-core numbers.
 // Usage: bench_fem [beam5k|block|beam1k|rcm|all]
 #include "fem/assembly.hpp"
-#include "fem/cpu_timer.hpp"
+#include "core/clocks.hpp"
 #include "fem/linear_solver.hpp"
 #include "fem/material.hpp"
 #include "fem/mesh.hpp"
@@ -28,12 +28,12 @@ namespace {
 double timeit(const std::function<void()>& f) {
   f(); // warm up
   double best = 1e300;
-  const double t0 = threadCpuSeconds();
+  const double t0 = suite::threadCpuSeconds();
   do {
-    const double t = threadCpuSeconds();
+    const double t = suite::threadCpuSeconds();
     f();
-    best = std::min(best, threadCpuSeconds() - t);
-  } while (threadCpuSeconds() - t0 < 0.5);
+    best = std::min(best, suite::threadCpuSeconds() - t);
+  } while (suite::threadCpuSeconds() - t0 < 0.5);
   return 1e3 * best;
 }
 
