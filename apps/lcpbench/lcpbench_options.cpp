@@ -27,15 +27,9 @@ const FclibModelInfo kFclibModels[] = {
     {"normal", "the frictionless normal LCP", FclibModel::Normal},
 };
 
-template <class Registry> std::vector<Choice> choices(const Registry& r) {
-  std::vector<Choice> c;
-  for (const auto& x : r) c.push_back({x.name, x.description});
-  return c;
-}
-
 PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options* o, PetscBool* family_set) {
   PetscOptionItems* const po = PetscOptionsObject; // the raw PETSc macros below name PetscOptionsObject
-  std::vector<Choice> families = choices(suite::lcp::familyRegistry());
+  std::vector<Choice> families = suite::choicesOf(suite::lcp::familyRegistry());
   char files[8192] = "";
   PetscFunctionBeginUser;
   families.push_back({"file", "problems read from -file (Siconos .dat, suite .h5, FCLib HDF5)"});
@@ -54,14 +48,14 @@ PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options*
       files, files, sizeof files, nullptr));
   o->files = suite::splitCommaList(files);
   PetscCall(suite::optionsChoice(po, "-fclib_model", "FCLib frictional-contact files read as",
-                                 choices(kFclibModels), &o->fclib_model));
+                                 suite::choicesOf(kFclibModels), &o->fclib_model));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode readSolverOptions(PetscOptionItems* po, Options* o) {
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoiceList(po, "-solvers", "LCP solvers to run",
-                                     choices(suite::lcp::solverRegistry()), &o->solvers));
+                                     suite::choicesOf(suite::lcp::solverRegistry()), &o->solvers));
   PetscCall(optionsValue(po, "-max_it", "Iteration / pivot cap of every solver (0: each solver's default)",
                          &o->max_it));
   PetscCall(optionsValue(po, "-omega", "PGS relaxation factor", &o->omega));

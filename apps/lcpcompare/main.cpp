@@ -51,13 +51,6 @@ using namespace suite::lcp;
 
 namespace {
 
-// -family and -ours documented by -help from the registries of lib/lcp.
-template <class Registry> std::vector<suite::Choice> choices(const Registry& r) {
-  std::vector<suite::Choice> c;
-  for (const auto& x : r) c.push_back({x.name, x.description});
-  return c;
-}
-
 struct Outcome {
   int status = 0; // Status codes of solver.hpp (4 = unsupported)
   double cpu = 0.0, residual = kInf;
@@ -92,15 +85,16 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "lcpcompare options", "");
   PetscOptionItems* const po = PetscOptionsObject;
-  PetscCall(suite::optionsChoice(po, "-family", "Problem family", choices(familyRegistry()), &o->family));
+  PetscCall(
+      suite::optionsChoice(po, "-family", "Problem family", suite::choicesOf(familyRegistry()), &o->family));
   PetscCall(suite::optionsValue(po, "-n", "Problem size", &o->n));
   PetscCall(suite::optionsValue(po, "-count", "Number of problems", &o->count));
   PetscCall(suite::optionsValue(po, "-seed", "Generator seed (same problems as lcpbench -seed)", &o->seed));
   PetscCall(suite::optionsValue(po, "-cond", "Condition number of M", &o->cond));
   PetscCall(
       suite::optionsValue(po, "-qrange", "q uniform in [-qrange, qrange]; box bounds +-qrange", &o->qrange));
-  PetscCall(suite::optionsChoiceList(po, "-ours", "The suite's solvers to time", choices(solverRegistry()),
-                                     &o->ours));
+  PetscCall(suite::optionsChoiceList(po, "-ours", "The suite's solvers to time",
+                                     suite::choicesOf(solverRegistry()), &o->ours));
   PetscCall(
       suite::optionsValue(po, "-max_it", "Iteration cap of the iterative solvers (0: defaults)", &o->max_it));
   PetscCall(

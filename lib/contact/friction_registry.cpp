@@ -10,7 +10,7 @@ namespace {
 struct FrictionEntry {
   FrictionModel model;
   const char* name;
-  const char* help;
+  const char* description;
   std::function<std::unique_ptr<FrictionFormulation>(const StepperOptions&)> make;
 };
 
@@ -52,9 +52,7 @@ bool frictionFromName(const std::string& name, FrictionModel* m) {
 }
 
 std::vector<Choice> frictionChoices() {
-  std::vector<Choice> v;
-  for (const FrictionEntry& e : registry()) v.push_back({e.name, e.help});
-  return v;
+  return choicesOf(registry());
 }
 
 std::unique_ptr<FrictionFormulation> makeFrictionFormulation(const StepperOptions& o) {

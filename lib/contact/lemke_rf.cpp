@@ -187,8 +187,7 @@ std::unique_ptr<lcp::Solver> makeContactSolver(const std::string& name) {
 }
 
 std::vector<Choice> contactSolverChoices() {
-  std::vector<Choice> v;
-  for (const lcp::SolverInfo& s : lcp::solverRegistry()) v.push_back({s.name, s.description});
+  std::vector<Choice> v = choicesOf(lcp::solverRegistry());
   v.push_back(
       {"lemke_rf", "Lemke, revised form with LU refactorisation (contact library; standard LCPs only)"});
   return v;

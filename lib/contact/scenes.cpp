@@ -154,7 +154,7 @@ std::vector<Body> fileScene(const SceneParams& p) {
 // The scene registry: one line per scene (name, one-line description for -help, builder).
 struct SceneEntry {
   const char* name;
-  const char* help;
+  const char* description;
   std::vector<Body> (*build)(const SceneParams&);
 };
 
@@ -179,9 +179,7 @@ std::vector<std::string> sceneNames() {
 }
 
 std::vector<Choice> sceneChoices() {
-  std::vector<Choice> v;
-  for (const SceneEntry& e : registry()) v.push_back({e.name, e.help});
-  return v;
+  return choicesOf(registry());
 }
 
 std::vector<Body> buildScene(const SceneParams& p) {

@@ -34,6 +34,14 @@ PetscErrorCode optionsChoiceList(PetscOptionItems* PetscOptionsObject, const cha
                                  const std::vector<Choice>& choices, std::vector<std::string>* values,
                                  PetscBool* set = nullptr);
 
+// The choices of a registry: any range of entries with `name` and `description` members (lib/lcp's
+// solverRegistry(), familyRegistry(), ...).
+template <class Registry> std::vector<Choice> choicesOf(const Registry& registry) {
+  std::vector<Choice> c;
+  for (const auto& e : registry) c.push_back({e.name, e.description});
+  return c;
+}
+
 // "a, b or c" of the choices' names (for messages).
 std::string choiceNames(const std::vector<Choice>& choices);
 

@@ -6,7 +6,7 @@ namespace {
 struct Entry {
   const char* name;
   std::unique_ptr<LinearSolver> (*make)();
-  const char* help;
+  const char* description;
 };
 const Entry kSolvers[] = {
     {"skyline", makeSkylineSolver, "envelope (skyline) Cholesky"},
@@ -22,9 +22,7 @@ std::vector<std::string> solverNames() {
 }
 
 std::vector<suite::Choice> solverChoices() {
-  std::vector<suite::Choice> c;
-  for (const auto& e : kSolvers) c.push_back({e.name, e.help});
-  return c;
+  return suite::choicesOf(kSolvers);
 }
 
 PetscErrorCode createLinearSolver(MPI_Comm comm, const std::string& name,

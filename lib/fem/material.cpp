@@ -74,7 +74,7 @@ namespace {
 struct Entry {
   const char* name;
   std::unique_ptr<Material> (*make)(Lame);
-  const char* help; // one line, printed by -help under -material
+  const char* description; // one line, printed by -help under -material
 };
 const Entry kMaterials[] = {
     {"linear", makeLinearMaterial, "small-strain linear elasticity (constant tangent)"},
@@ -90,9 +90,7 @@ std::vector<std::string> materialNames() {
 }
 
 std::vector<suite::Choice> materialChoices() {
-  std::vector<suite::Choice> c;
-  for (const auto& e : kMaterials) c.push_back({e.name, e.help});
-  return c;
+  return suite::choicesOf(kMaterials);
 }
 
 PetscErrorCode createMaterial(MPI_Comm comm, const std::string& name, Lame l,

@@ -20,7 +20,7 @@ namespace {
 struct Entry {
   const char* name;
   OrderingFn fn;
-  const char* help;
+  const char* description;
 };
 const Entry kOrderings[] = {
     {"natural", orderNatural, "the given node order (no permutation)"},
@@ -40,9 +40,7 @@ std::vector<std::string> orderingNames() {
 }
 
 std::vector<suite::Choice> orderingChoices() {
-  std::vector<suite::Choice> c;
-  for (const auto& e : kOrderings) c.push_back({e.name, e.help});
-  return c;
+  return suite::choicesOf(kOrderings);
 }
 
 PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* fn) {

@@ -64,3 +64,21 @@ TEST(NamedChoice, ListKeepsOrderAndChecksEachEntry) {
 }
 
 } // namespace
+
+namespace {
+struct Entry {
+  const char* name;
+  const char* description;
+  int payload;
+};
+
+TEST(NamedChoice, ChoicesOfARegistryKeepNamesDescriptionsAndOrder) {
+  const Entry registry[] = {{"b", "second letter", 2}, {"a", "first letter", 1}};
+  const std::vector<suite::Choice> c = suite::choicesOf(registry);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].name, "b");
+  EXPECT_EQ(c[0].help, "second letter");
+  EXPECT_EQ(c[1].name, "a");
+  EXPECT_EQ(c[1].help, "first letter");
+}
+} // namespace
