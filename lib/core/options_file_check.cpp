@@ -237,14 +237,23 @@ bool isOptionsFileKey(const char* a, bool* yaml) {
   return *yaml || !strcasecmp(a, "-options_file");
 }
 
-// Rank 0: every -options_file F / -options_file_yaml F of the command line (a missing name is PETSc's to
-// report).
+// The words PETSc reads as options: the environment variable PETSC_OPTIONS (read first), then the command line.
+std::vector<std::string> optionWords(int argc, char** argv) {
+  std::vector<std::string> words;
+  if (const char* env = std::getenv("PETSC_OPTIONS")) words = petscTokens(env);
+  for (int i = 1; i < argc; ++i) words.emplace_back(argv[i]);
+  return words;
+}
+
+// Rank 0: every -options_file F / -options_file_yaml F of PETSC_OPTIONS and the command line (a missing name
+// is PETSc's to report).
 std::string checkCommandLine(int argc, char** argv) {
-  for (int i = 1; i + 1 < argc; ++i) {
+  const std::vector<std::string> words = optionWords(argc, argv);
+  for (size_t i = 0; i + 1 < words.size(); ++i) {
     bool yaml = false;
-    if (!isOptionsFileKey(argv[i], &yaml) || argv[i + 1][0] == '-') continue;
+    if (!isOptionsFileKey(words[i].c_str(), &yaml) || words[i + 1][0] == '-') continue;
     std::vector<std::string> chain;
-    const std::string bad = checkFileTree(argv[++i], yaml, &chain);
+    const std::string bad = checkFileTree(words[++i], yaml, &chain);
     if (!bad.empty()) return bad;
   }
   return "";

@@ -1,8 +1,8 @@
 // Options files (run decks) are checked before PETSc reads them (issue #21). PETSc 3.18 stops reading a line at
 // a NUL byte (a binary file is silently ignored), prints the raw bytes of a binary line, reports a YAML syntax
 // error without its line, and recurses until the stack overflows on a file that includes itself. The check
-// reads every file named by -options_file / -options_file_yaml on the command line (and the files that a plain
-// options file includes) and reports the first problem as one message naming the file and the line.
+// reads every file named by -options_file / -options_file_yaml on the command line or in PETSC_OPTIONS (and the
+// files that a plain options file includes) and reports the first problem as one message naming the file and the line.
 //
 // What is accepted is what PETSc 3.18 reads (src/sys/objects/options.c, PetscOptionsInsertFilePetsc and
 // PetscOptionsInsertFileYAML), nothing more:
@@ -57,8 +57,8 @@ std::string checkYamlOptionsText(const std::string& text);
 std::string optionsFilePath(const std::string& arg);
 bool optionsFileIsYaml(const std::string& arg, bool yaml_flag, const std::string& head);
 
-// Collective on comm (needs MPI, not PETSc): rank 0 checks every options file named in argv and every file
-// they include; on return every rank holds the same message, "" when all are fine.
+// Collective on comm (needs MPI, not PETSc): rank 0 checks every options file named in PETSC_OPTIONS and argv
+// and every file they include; on return every rank holds the same message, "" when all are fine.
 int checkOptionsFiles(MPI_Comm comm, int argc, char** argv, std::string* message);
 
 } // namespace suite

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -167,6 +168,16 @@ TEST(OptionsFileCheck, FilesOnTheCommandLine) {
                        "the top level",
                        0),
             0u);
+  // PETSc reads PETSC_OPTIONS before the command line, -options_file included.
+  const char* saved = std::getenv("PETSC_OPTIONS");
+  const std::string keep = saved ? saved : "";
+  setenv("PETSC_OPTIONS", "-quiet -options_file \"ofc_missing.txt\"", 1);
+  EXPECT_EQ(checkArgs({"-options_file", "ofc_good.txt"}),
+            "options file 'ofc_missing.txt' cannot be read: No such file or directory");
+  if (saved)
+    setenv("PETSC_OPTIONS", keep.c_str(), 1);
+  else
+    unsetenv("PETSC_OPTIONS");
   for (const char* f : {"ofc_good.txt", "ofc_outer.txt", "ofc_inner.txt", "ofc_self.txt"}) std::remove(f);
 }
 
