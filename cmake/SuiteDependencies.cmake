@@ -44,6 +44,12 @@ foreach(lib cholmod umfpack amd camd colamd ccolamd suitesparseconfig)
   list(APPEND SUITESPARSE_LIBRARIES ${SUITESPARSE_${lib}_LIBRARY})
 endforeach()
 
+# libyaml: the options file check (lib/core/options_file_check) parses YAML run decks itself, to report the line.
+find_path(YAML_INCLUDE_DIR yaml.h)
+find_library(YAML_LIBRARY yaml)
+suite_require(YAML_INCLUDE_DIR "libyaml headers (yaml.h)" "libyaml-dev")
+suite_require(YAML_LIBRARY "libyaml library" "libyaml-dev")
+
 find_path(METIS_INCLUDE_DIR metis.h)
 find_library(METIS_LIBRARY metis)
 suite_require(METIS_INCLUDE_DIR "METIS headers" "libmetis-dev")

@@ -2,6 +2,7 @@
 #include "core/run_context.hpp"
 
 #include "core/error_handler.hpp"
+#include "core/options_file_check.hpp"
 #include "core/sanitizer_defaults.hpp"
 
 #include <cstdarg>
@@ -74,10 +75,15 @@ RunContext::RunContext(int* argc, char*** argv, const char* help, const char* pr
   keepSanitizerDefaults();
   if (owns_petsc_) {
     pushSuiteErrorHandler();
+    init_error_ = startMpiAndCheckOptionsFiles(*argc, *argv);
+    if (init_error_) return;
     PetscHelpPrintf = bufferHelp;
     init_error_ = PetscInitialize(argc, argv, nullptr, help);
     PetscHelpPrintf = PetscHelpPrintfDefault;
-    if (init_error_) return;
+    if (init_error_) {
+      finalize_mpi_ = false; // as before the options file check: a half-started PETSc is left alone
+      return;
+    }
   }
   petsc_up_ = true;
   t0_ = MPI_Wtime();
@@ -95,6 +101,27 @@ RunContext::RunContext(int* argc, char*** argv, const char* help, const char* pr
 
 RunContext::~RunContext() {
   if (petsc_up_ && owns_petsc_) PetscFinalize();
+  if (finalize_mpi_) MPI_Finalize();
+}
+
+// MPI is started here, before PETSc (which then leaves MPI_Finalize to the destructor), so that the options
+// files are checked collectively before PetscInitialize reads them: rank 0 reads them, every rank gets the
+// verdict, rank 0 prints it.
+PetscErrorCode RunContext::startMpiAndCheckOptionsFiles(int argc, char** argv) {
+  int up = 0, provided = 0;
+  MPI_Initialized(&up);
+  if (!up) {
+    if (MPI_Init_thread(&argc, &argv, PETSC_MPI_THREAD_REQUIRED, &provided) != MPI_SUCCESS)
+      return PETSC_ERR_MPI;
+    finalize_mpi_ = true;
+  }
+  std::string bad;
+  if (checkOptionsFiles(MPI_COMM_WORLD, argc, argv, &bad) != MPI_SUCCESS) return PETSC_ERR_MPI;
+  if (bad.empty()) return 0;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) std::fprintf(stderr, "ERROR: %s\n", bad.c_str());
+  return PETSC_ERR_FILE_UNEXPECTED;
 }
 
 PetscErrorCode RunContext::readCommonOptions() {

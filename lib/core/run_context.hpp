@@ -1,5 +1,7 @@
 // Run context: PETSc/MPI initialisation and finalisation (RAII), the options every app shares,
 // the unused-option check, and the collective stop request (signals, -max_walltime).
+// The options files of the command line are checked before PETSc reads them (core/options_file_check.hpp):
+// MPI is started first, and a file that is not an options file stops the job with one ERROR line.
 //
 // Usage (thin main, see apps/*/main.cpp):
 //   int main(int argc, char** argv) {
@@ -57,11 +59,12 @@ public:
   int exitCode(PetscErrorCode ierr) const;
 
 private:
+  PetscErrorCode startMpiAndCheckOptionsFiles(int argc, char** argv);
   PetscErrorCode readCommonOptions();
   PetscErrorCode printProgramHelp() const;
 
   PetscErrorCode init_error_ = 0;
-  bool petsc_up_ = false, owns_petsc_ = true;
+  bool petsc_up_ = false, owns_petsc_ = true, finalize_mpi_ = false;
   int rank_ = 0, size_ = 1;
   std::string program_;
   bool quiet_ = false, help_ = false, allow_unused_ = false;
