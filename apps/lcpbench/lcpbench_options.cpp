@@ -123,16 +123,19 @@ PetscErrorCode finishOptions(MPI_Comm comm, PetscBool family_set, PetscBool stri
 // Sizes before anything is allocated (the integer options are within PetscInt): for the generated families the
 // dense n x n problem (entries within PetscInt) and the memory per rank: one problem at a time, M with the
 // generator's and the solver's dense workspace ~ 6 n^2 doubles (measured: 4 n^2, n = 1000 and 1500, lemke, bpp,
-// fb_newton, pgs), and rank 0's buffer of -flush_every result records.
+// fb_newton, pgs), the done flags of -count problems (1 byte each; measured 2 GB at -count 2e9) and rank 0's
+// buffer of -flush_every result records.
 PetscErrorCode checkSizes(MPI_Comm comm, const Options& o) {
   PetscFunctionBeginUser;
   if (o.fromFiles()) PetscFunctionReturn(0); // the readers bound a file's problem by the file's size
   const double n = (double)o.n, record = 8.0 * (2.0 + 6.0 * o.solvers.size());
-  char what[96];
+  char what[128];
   std::snprintf(what, sizeof what, "-n %lld", (long long)o.n);
   PetscCall(suite::checkIndexCount(comm, n * n, "entries of the dense problem matrix", what));
-  std::snprintf(what, sizeof what, "-n %lld -flush_every %lld", (long long)o.n, (long long)o.flush_every);
-  PetscCall(suite::checkMemoryEstimate(comm, 5e7 + 48.0 * n * n + 2.0 * record * o.flush_every, what));
+  std::snprintf(what, sizeof what, "-n %lld -count %lld -flush_every %lld", (long long)o.n,
+                (long long)o.count, (long long)o.flush_every);
+  PetscCall(suite::checkMemoryEstimate(
+      comm, 5e7 + 48.0 * n * n + 1.5 * (double)o.count + 2.0 * record * o.flush_every, what));
   PetscFunctionReturn(0);
 }
 
