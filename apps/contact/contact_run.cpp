@@ -159,11 +159,11 @@ PetscErrorCode run(suite::RunContext& ctx) {
     PetscFunctionReturn(0);
   }
   PetscCall(suite::checkOutputWritable(ctx.comm(), o.output, "output"));
-  const double nbodies = sceneBodyCount(o.scene); // known before the scene is built, except from a file
-  if (nbodies > 0) PetscCall(checkContactSizes(ctx.comm(), o, nbodies));
+  const SceneSize size = sceneSize(o.scene); // known before the scene is built, except from a file
+  if (size.bodies > 0) PetscCall(checkContactSizes(ctx.comm(), o, size));
   std::vector<Body> bodies;
   PetscCall(buildBodies(ctx.comm(), o, &bodies));
-  if (nbodies <= 0) PetscCall(checkContactSizes(ctx.comm(), o, (double)bodies.size()));
+  if (size.bodies <= 0) PetscCall(checkContactSizes(ctx.comm(), o, sceneSize(bodies)));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
                            "contact: scene %s, %zu bodies, friction %s (mu %g), solver %s",
                            o.scene.scene.c_str(), bodies.size(), frictionName(o.step.friction), o.step.mu,

@@ -6,13 +6,21 @@
 
 #include "contact_options.hpp"
 
+#include <vector>
+
 namespace contact_app {
 
-// Bodies of a generated scene from its size options (-1 for -scene file: known once read).
-double sceneBodyCount(const SceneParams& s);
+// Bodies (ground and walls included) and the contacts expected when they rest on each other.
+struct SceneSize {
+  double bodies = 0, contacts = 0;
+};
+// A generated scene's, from its size options (bodies -1 for -scene file: known once read).
+SceneSize sceneSize(const SceneParams& s);
+// A built scene's, from its bodies' shapes.
+SceneSize sceneSize(const std::vector<Body>& bodies);
 // Collective. The integer options (PETSc wraps values beyond PetscInt silently).
 PetscErrorCode checkIntegerOptions(MPI_Comm comm);
-// Collective. The run's sizes for `bodies` bodies (the bodies of the scene, ground and walls included).
-PetscErrorCode checkContactSizes(MPI_Comm comm, const AppOptions& o, double bodies);
+// Collective. The run's sizes for a scene of that size.
+PetscErrorCode checkContactSizes(MPI_Comm comm, const AppOptions& o, const SceneSize& size);
 
 } // namespace contact_app

@@ -132,7 +132,8 @@ PetscErrorCode RunContext::readCommonOptions() {
   PetscCall(readMemoryCheckOptions(PetscOptionsObject, &max_memory_gib));
   PetscOptionsEnd();
   PetscCheck(max_memory_gib >= 0.0 && max_memory_gib < 1e12, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
-             "-max_memory_gib %g: must be >= 0 GiB (0: from the node's memory)", (double)max_memory_gib);
+             "-max_memory_gib %g: must be a finite number of GiB >= 0 (0: from the node's memory)",
+             (double)max_memory_gib);
   PetscCheck(max_walltime_ >= 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
              "-max_walltime %g: must be >= 0 seconds (0 = no limit)", (double)max_walltime_);
   PetscCheck(progress_interval_ > 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
