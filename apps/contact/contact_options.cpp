@@ -1,5 +1,6 @@
 // Options of the contact app (see contact_options.hpp).
 #include "contact_options.hpp"
+#include "contact_size_check.hpp"
 
 #include "contact/friction_formulation.hpp"
 #include "contact/lemke_rf.hpp"
@@ -195,6 +196,7 @@ PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
 
 PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   PetscFunctionBeginUser;
+  PetscCall(checkIntegerOptions(comm));
   PetscOptionsBegin(comm, nullptr, "Contact app options", nullptr);
   const Reader r{PetscOptionsObject};
   PetscCall(sceneOptions(r, &o->scene));

@@ -5,6 +5,7 @@
 #include "contact_checkpoint.hpp"
 #include "contact_options.hpp"
 #include "contact_output.hpp"
+#include "contact_size_check.hpp"
 
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
@@ -158,8 +159,11 @@ PetscErrorCode run(suite::RunContext& ctx) {
     PetscFunctionReturn(0);
   }
   PetscCall(suite::checkOutputWritable(ctx.comm(), o.output, "output"));
+  const SceneSize size = sceneSize(o.scene); // known before the scene is built, except from a file
+  if (size.bodies > 0) PetscCall(checkContactSizes(ctx.comm(), o, size));
   std::vector<Body> bodies;
   PetscCall(buildBodies(ctx.comm(), o, &bodies));
+  if (size.bodies <= 0) PetscCall(checkContactSizes(ctx.comm(), o, sceneSize(bodies)));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
                            "contact: scene %s, %zu bodies, friction %s (mu %g), solver %s",
                            o.scene.scene.c_str(), bodies.size(), frictionName(o.step.friction), o.step.mu,

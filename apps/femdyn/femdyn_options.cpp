@@ -105,6 +105,7 @@ PetscErrorCode FemdynRun::checkOptions() const {
   MPI_Comm comm = ctx_.comm();
   const auto& b = opt_.beam;
   PetscFunctionBeginUser;
+  PetscCall(checkIntegerOptions());
   PetscCheck(opt_.order == 1 || opt_.order == 2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-order %d: must be 1 or 2",
              (int)opt_.order);
   PetscCheck(b.length > 0 && b.size[0] > 0 && b.size[1] > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,

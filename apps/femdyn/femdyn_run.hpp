@@ -1,4 +1,4 @@
-// The femdyn run: options (femdyn_options.cpp), mesh and model setup (femdyn_setup.cpp), the static solve or
+// The femdyn run: options (femdyn_options.cpp), sizes (femdyn_size_check.cpp), mesh and model setup (femdyn_setup.cpp), the static solve or
 // the Newmark dynamics on the suite's time loop (femdyn_dynamics.*, the haptic probe as an observer,
 // fem/haptic_probe.hpp), checkpoints (femdyn_checkpoint.cpp) and the HDF5/XDMF output (femdyn_output.cpp).
 #pragma once
@@ -85,6 +85,11 @@ private:
   PetscErrorCode readModelOptions(PetscOptionItems* PetscOptionsObject);
   PetscErrorCode readIntegratorOptions(PetscOptionItems* PetscOptionsObject);
   PetscErrorCode checkOptions() const;
+  // Sizes before the allocations they drive (femdyn_size_check.cpp).
+  PetscErrorCode checkIntegerOptions() const;
+  PetscErrorCode checkModelSizes(double nodes, double elems, const char* what) const;
+  PetscErrorCode checkBeamSizes() const;
+  PetscErrorCode checkFactorSizes() const;
   // Setup (femdyn_setup.cpp).
   PetscErrorCode buildMesh();
   PetscErrorCode clampAndSetupModel();

@@ -15,7 +15,12 @@ using namespace suite::fem;
 PetscErrorCode FemdynRun::buildMesh() {
   MPI_Comm comm = ctx_.comm();
   PetscFunctionBeginUser;
+  if (opt_.mesh == "beam") PetscCall(checkBeamSizes());
   PetscCall(makeMesh(comm, opt_.mesh, opt_.beam, opt_.mesh_file, (int)opt_.order, &mesh_));
+  if (opt_.mesh != "beam") {
+    const std::string what = "-mesh_file " + opt_.mesh_file + " -order " + std::to_string((int)opt_.order);
+    PetscCall(checkModelSizes(mesh_.numNodes(), mesh_.numElems(), what.c_str()));
+  }
   if (opt_.poisson > 0.45 && mesh_.order() == 1)
     PetscCall(suite::logInfo(
         comm, false,
@@ -51,6 +56,7 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
   perm_ = expandToDofs(order_fn(model_.nodeGraphOf()), model_.eq(), model_.numFree());
   res_.ordering_time = suite::threadCpuSeconds() - to;
   res_.metrics = computeMetrics(graphOfMatrix(model_.pattern()), perm_);
+  PetscCall(checkFactorSizes());
   solver_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
   PetscCall(solver_->analyze(comm, model_.pattern(), perm_));
   if (solver_->distributedAssembly()) { // each rank assembles its elements of the solver's node partition

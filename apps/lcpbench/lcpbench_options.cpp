@@ -1,13 +1,15 @@
 // lcpbench's options (see lcpbench.hpp): declared with -help text generated from the registries of lib/lcp,
-// defaults, and validation (collective: every rank takes the same error path).
+// defaults, and validation, sizes included (collective: every rank takes the same error path).
 #include "lcpbench.hpp"
 
 #include "core/comma_list.hpp"
 #include "core/named_choice.hpp"
 #include "core/option_value.hpp"
+#include "core/resource_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lcpbench_app {
 namespace {
@@ -118,6 +120,25 @@ PetscErrorCode finishOptions(MPI_Comm comm, PetscBool family_set, PetscBool stri
   PetscFunctionReturn(0);
 }
 
+// Sizes before anything is allocated (the integer options are within PetscInt): for the generated families the
+// dense n x n problem (entries within PetscInt) and the memory per rank: one problem at a time, M with the
+// generator's and the solver's dense workspace ~ 6 n^2 doubles (measured: 4 n^2, n = 1000 and 1500, lemke, bpp,
+// fb_newton, pgs), the done flags of -count problems (1 byte each; measured 2 GB at -count 2e9) and rank 0's
+// buffer of -flush_every result records.
+PetscErrorCode checkSizes(MPI_Comm comm, const Options& o) {
+  PetscFunctionBeginUser;
+  if (o.fromFiles()) PetscFunctionReturn(0); // the readers bound a file's problem by the file's size
+  const double n = (double)o.n, record = 8.0 * (2.0 + 6.0 * o.solvers.size());
+  char what[128];
+  std::snprintf(what, sizeof what, "-n %lld", (long long)o.n);
+  PetscCall(suite::checkIndexCount(comm, n * n, "entries of the dense problem matrix", what));
+  std::snprintf(what, sizeof what, "-n %lld -count %lld -flush_every %lld", (long long)o.n,
+                (long long)o.count, (long long)o.flush_every);
+  PetscCall(suite::checkMemoryEstimate(
+      comm, 5e7 + 48.0 * n * n + 1.5 * (double)o.count + 2.0 * record * o.flush_every, what));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_only) {
@@ -132,7 +153,10 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
   *help_only = ctx.helpRequested();
   if (*help_only) PetscFunctionReturn(0);
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-max_walltime", &o->max_walltime, nullptr));
+  for (const char* name : {"-n", "-count", "-seed", "-max_it", "-block_size", "-chunk", "-flush_every"})
+    PetscCall(suite::checkIntOptionRange(ctx.comm(), name, 0));
   PetscCall(finishOptions(ctx.comm(), family_set, strict_set, o));
+  PetscCall(checkSizes(ctx.comm(), *o));
   PetscFunctionReturn(0);
 }
 

@@ -14,6 +14,7 @@
 #include "core/named_choice.hpp"
 #include "core/clocks.hpp"
 #include "core/option_value.hpp"
+#include "core/resource_checks.hpp"
 #include "core/run_context.hpp"
 #include "io/h5_output.hpp"
 #include "lcp/generators.hpp"
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <functional>
 #include <memory>
@@ -79,6 +81,19 @@ struct Options {
   PetscReal cond = 1e4, qrange = 1e2, rel_tol = 1e-10;
 };
 
+// The dense n x n problem within PetscInt, and the memory: one problem at a time with its dense workspace
+// (~6 n^2 doubles, as lcpbench) and the per-problem results of every solver (status, CPU time, residual).
+PetscErrorCode checkSizes(MPI_Comm comm, const Options& o) {
+  const double n = (double)o.n, results = 24.0 * (double)o.count * (o.ours.size() + 3.0);
+  char what[96];
+  PetscFunctionBeginUser;
+  std::snprintf(what, sizeof what, "-n %lld", (long long)o.n);
+  PetscCall(suite::checkIndexCount(comm, n * n, "entries of the dense problem matrix", what));
+  std::snprintf(what, sizeof what, "-n %lld -count %lld", (long long)o.n, (long long)o.count);
+  PetscCall(suite::checkMemoryEstimate(comm, 5e7 + 48.0 * n * n + results, what));
+  PetscFunctionReturn(0);
+}
+
 // Reads and validates the options; *help_only: -help was given.
 PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_only) {
   MPI_Comm comm = ctx.comm();
@@ -105,7 +120,10 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
   *help_only = ctx.helpRequested();
   if (*help_only) PetscFunctionReturn(0);
   PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
+  for (const char* name : {"-n", "-count", "-seed", "-max_it"})
+    PetscCall(suite::checkIntOptionRange(comm, name, 0));
   PetscCheck(o->n >= 1 && o->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
+  PetscCall(checkSizes(comm, *o));
   PetscCheck(!o->output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
   PetscCall(suite::checkOutputWritable(comm, o->output.c_str(), "output"));
   PetscFunctionReturn(0);

@@ -1,10 +1,15 @@
 // reorder: see main.cpp. Ordering time: minimum over -repeat runs of the thread CPU time (core/clocks.hpp).
 #include "core/log.hpp"
 #include "core/option_value.hpp"
+#include "core/resource_checks.hpp"
 #include "fem/matrix_market.hpp"
 #include "fem/ordering.hpp"
 #include "io/h5_output.hpp"
 #include "reorder_run.hpp"
+
+#include <filesystem>
+#include <string>
+#include <system_error>
 
 namespace reorder_app {
 
@@ -29,6 +34,18 @@ PetscErrorCode readOptions(MPI_Comm comm, Options* o) {
   PetscCall(PetscOptionsInt("-repeat", "Ordering time = minimum over this many runs", "", o->repeat,
                             &o->repeat, nullptr));
   PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+// The matrix's memory before it is read: the file text, its entries, the symmetrised matrix, its graph and
+// the orderings' workspace are within 10 bytes per byte of the file (measured 6: a 3.6 MB 40^3 Laplacian,
+// rcm/amd/metis, 22 MB over the 44 MB of an empty run). A file that cannot be read is left to the reader.
+PetscErrorCode checkMatrixMemory(MPI_Comm comm, const std::string& path) {
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  const std::string what = "-matrix " + path;
+  PetscFunctionBeginUser;
+  if (!ec) PetscCall(suite::checkMemoryEstimate(comm, 5e7 + 10.0 * (double)bytes, what.c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -66,10 +83,12 @@ PetscErrorCode runReorder(const suite::RunContext& ctx) {
   if (ctx.helpRequested()) PetscFunctionReturn(0);
   PetscCheck(!o.matrix.empty(), comm, PETSC_ERR_ARG_WRONG, "-matrix FILE.mtx is required");
   PetscCheck(!o.output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
+  PetscCall(suite::checkIntOptionRange(comm, "-repeat", 1));
   PetscCheck(o.repeat >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-repeat %d: must be >= 1", (int)o.repeat);
   PetscCall(suite::checkOutputWritable(comm, o.output, "output"));
   SymCsc A;
   MatrixMarketInfo info;
+  PetscCall(checkMatrixMemory(comm, o.matrix));
   PetscCall(readMatrixMarket(comm, o.matrix, &A, &info));
   const Graph g = graphOfMatrix(A);
   suite::H5Output out;

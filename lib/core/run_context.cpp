@@ -56,6 +56,21 @@ PetscErrorCode bufferHelp(MPI_Comm comm, const char format[], ...) {
   return 0;
 }
 
+// The override of the memory estimate check (core/resource_checks.hpp reads them where it checks); the
+// PetscInt range checks have none.
+PetscErrorCode readMemoryCheckOptions(PetscOptionItems* PetscOptionsObject, PetscReal* gib) {
+  PetscBool check = PETSC_TRUE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsBool(
+      "-memory_check", "Refuse a run whose memory estimate exceeds the limit of its node (false: run anyway)",
+      nullptr, check, &check, nullptr));
+  PetscCall(PetscOptionsReal("-max_memory_gib",
+                             "Memory limit per node for that check in GiB (0: 90% of the smaller of physical "
+                             "memory and the cgroup limit)",
+                             nullptr, *gib, gib, nullptr));
+  PetscFunctionReturn(0);
+}
+
 void installStopHandlers() {
   struct sigaction sa {};
   sa.sa_handler = onStopSignal;
@@ -127,6 +142,7 @@ PetscErrorCode RunContext::startMpiAndCheckOptionsFiles(int argc, char** argv) {
 PetscErrorCode RunContext::readCommonOptions() {
   PetscFunctionBeginUser;
   PetscBool has_help = PETSC_FALSE, quiet = PETSC_FALSE, allow = PETSC_FALSE;
+  PetscReal max_memory_gib = 0.0;
   PetscCall(PetscOptionsHasHelp(nullptr, &has_help));
   help_ = has_help;
   if (help_) PetscCall(printProgramHelp());
@@ -140,7 +156,11 @@ PetscErrorCode RunContext::readCommonOptions() {
                              progress_interval_, &progress_interval_, nullptr));
   PetscCall(PetscOptionsBool("-allow_unused_options", "Do not treat unknown/unused options as an error",
                              nullptr, allow, &allow, nullptr));
+  PetscCall(readMemoryCheckOptions(PetscOptionsObject, &max_memory_gib));
   PetscOptionsEnd();
+  PetscCheck(max_memory_gib >= 0.0 && max_memory_gib < 1e12, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+             "-max_memory_gib %g: must be a finite number of GiB >= 0 (0: from the node's memory)",
+             (double)max_memory_gib);
   PetscCheck(max_walltime_ >= 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
              "-max_walltime %g: must be >= 0 seconds (0 = no limit)", (double)max_walltime_);
   PetscCheck(progress_interval_ > 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
