@@ -2,6 +2,7 @@
 #include "core/run_context.hpp"
 
 #include "core/error_handler.hpp"
+#include "core/option_value.hpp"
 #include "core/sanitizer_defaults.hpp"
 
 #include <cstdarg>
@@ -104,15 +105,18 @@ PetscErrorCode RunContext::readCommonOptions() {
   help_ = has_help;
   if (help_) PetscCall(printProgramHelp());
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Run control (all programs of the suite)", nullptr);
-  PetscCall(PetscOptionsBool("-quiet", "Print no progress or info lines (errors still go to stderr)", nullptr,
-                             quiet, &quiet, nullptr));
-  PetscCall(PetscOptionsReal("-max_walltime",
-                             "Stop cleanly (final output/checkpoint) after this many seconds; 0 = off",
-                             nullptr, max_walltime_, &max_walltime_, nullptr));
-  PetscCall(PetscOptionsReal("-progress_interval", "Seconds of wall time between progress lines", nullptr,
-                             progress_interval_, &progress_interval_, nullptr));
-  PetscCall(PetscOptionsBool("-allow_unused_options", "Do not treat unknown/unused options as an error",
-                             nullptr, allow, &allow, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-quiet",
+                               "Print no progress or info lines (errors still go to stderr)", nullptr, quiet,
+                               &quiet, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-max_walltime",
+                               "Stop cleanly (final output/checkpoint) after this many seconds; 0 = off",
+                               nullptr, max_walltime_, &max_walltime_, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-progress_interval",
+                               "Seconds of wall time between progress lines", nullptr, progress_interval_,
+                               &progress_interval_, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-allow_unused_options",
+                               "Do not treat unknown/unused options as an error", nullptr, allow, &allow,
+                               nullptr));
   PetscOptionsEnd();
   PetscCheck(max_walltime_ >= 0.0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
              "-max_walltime %g: must be >= 0 seconds (0 = no limit)", (double)max_walltime_);
