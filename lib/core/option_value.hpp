@@ -28,7 +28,7 @@ PetscErrorCode optionsInt(PetscOptionItems* PetscOptionsObject, const char* name
                           const char* man, PetscInt dflt, PetscInt* value, PetscBool* set);
 PetscErrorCode optionsBool(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
                            const char* man, PetscBool dflt, PetscBool* value, PetscBool* set);
-// Up to *n values; on return *n is the number given (unchanged if the option is not given).
+// Up to *n values; on return *n is the number given (0 if the option is not given, as in PETSc).
 PetscErrorCode optionsRealArray(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
                                 const char* man, PetscReal* values, PetscInt* n, PetscBool* set);
 PetscErrorCode optionsIntArray(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,

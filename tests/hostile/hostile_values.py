@@ -58,7 +58,7 @@ BASES = {
         ["-dim", "1", "-nx", "16", "-t_final", "0.01", "-max_steps", "4", "-max_walltime", "10", "-output", OUT],
         ["-dim", "2", "-nx", "8", "-ny", "8", "-t_final", "0.01", "-max_steps", "2", "-max_walltime", "10",
          "-output", OUT],
-        ["-dim", "3", "-nx", "4", "-ny", "4", "-nz", "4", "-t_final", "0.01", "-max_steps", "2",
+        ["-dim", "3", "-nx", "8", "-ny", "8", "-nz", "8", "-t_final", "0.01", "-max_steps", "2",
          "-max_walltime", "10", "-output", OUT],
     ],
     "femdyn": [["-beam_cells", "2,1,1", "-steps", "2", "-max_walltime", "10", "-output", OUT]],
