@@ -77,6 +77,8 @@ CRASH = re.compile(r"MPI_ABORT was invoked|Segmentation fault|Caught signal|term
 # mpiexec's own notice that a rank exited non-zero: not the program's output.
 MPIEXEC_NOTICE = re.compile(r"^-{20,}\n(Primary job  terminated normally.*?|mpiexec detected that one or more.*?)"
                             r"^-{20,}\n", re.M | re.S)
+MPI_START_FAILED = re.compile(r"ompi_rte_init failed|orte_init failed|fail during orte_init|"
+                              r"before MPI_INIT completed")
 PARTIAL = re.compile(r"\.(tmp|partial|probe)$")
 
 
@@ -153,12 +155,19 @@ def judge(rc, out, name, kind, value):
 
 
 def run(np_, prog, args, cwd):
-    try:
-        p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT)
-        return p.returncode, MPIEXEC_NOTICE.sub("", p.stdout.decode(errors="replace"))
-    except subprocess.TimeoutExpired as e:
-        return None, (e.stdout or b"").decode(errors="replace")
+    """(exit code or None on a timeout, output). A run whose MPI start-up failed (Open MPI's runtime, before
+    the program's first line: seen on an overloaded machine) is not the program's answer: retried, twice at most."""
+    for attempt in range(3):
+        try:
+            p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT)
+            rc, out = p.returncode, MPIEXEC_NOTICE.sub("", p.stdout.decode(errors="replace"))
+        except subprocess.TimeoutExpired as e:
+            rc, out = None, (e.stdout or b"").decode(errors="replace")
+        if rc == 0 or not MPI_START_FAILED.search(out):
+            break
+        time.sleep(1.0 + attempt)
+    return rc, out
 
 
 def valid_hdf5(path):
