@@ -156,7 +156,8 @@ def judge(rc, out, name, kind, value):
 
 def run(np_, prog, args, cwd):
     """(exit code or None on a timeout, output). A run whose MPI start-up failed (Open MPI's runtime, before
-    the program's first line: seen on an overloaded machine) is not the program's answer: retried, twice at most."""
+    the program's first line: seen on an overloaded machine) is not the program's answer: retried, twice at most;
+    a timeout is retried once."""
     for attempt in range(3):
         try:
             p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
@@ -164,7 +165,9 @@ def run(np_, prog, args, cwd):
             rc, out = p.returncode, MPIEXEC_NOTICE.sub("", p.stdout.decode(errors="replace"))
         except subprocess.TimeoutExpired as e:
             rc, out = None, (e.stdout or b"").decode(errors="replace")
-        if rc == 0 or not MPI_START_FAILED.search(out):
+        # A timeout is tried once more (four runs stalled at once on an overloaded machine, each fine alone): a
+        # real hang hangs again.
+        if not ((rc is None and attempt == 0) or (rc != 0 and MPI_START_FAILED.search(out))):
             break
         time.sleep(1.0 + attempt)
     return rc, out
