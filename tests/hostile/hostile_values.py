@@ -157,16 +157,16 @@ def judge(rc, out, name, kind, value):
 def run(np_, prog, args, cwd):
     """(exit code or None on a timeout, output). A run whose MPI start-up failed (Open MPI's runtime, before
     the program's first line: seen on an overloaded machine) is not the program's answer: retried, twice at most;
-    a timeout is retried once."""
+    a timeout is retried once, with 3 times the limit."""
     for attempt in range(3):
         try:
             p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT)
+                               stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT * (3 if attempt else 1))
             rc, out = p.returncode, MPIEXEC_NOTICE.sub("", p.stdout.decode(errors="replace"))
         except subprocess.TimeoutExpired as e:
             rc, out = None, (e.stdout or b"").decode(errors="replace")
-        # A timeout is tried once more (four runs stalled at once on an overloaded machine, each fine alone): a
-        # real hang hangs again.
+        # A timeout is tried once more with 3 times the limit (on an overloaded machine the runs in flight stalled
+        # together for over 30 s, each fine alone): a real hang hangs again.
         if not ((rc is None and attempt == 0) or (rc != 0 and MPI_START_FAILED.search(out))):
             break
         time.sleep(1.0 + attempt)
