@@ -5,6 +5,7 @@
 #include "contact/friction_formulation.hpp"
 #include "contact/lemke_rf.hpp"
 #include "core/named_choice.hpp"
+#include "core/option_value.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,19 +18,19 @@ namespace {
 struct Reader {
   PetscOptionItems* po;
   PetscErrorCode real(const char* name, const char* text, double* v) const {
-    return PetscOptionsReal_Private(po, name, text, nullptr, *v, v, nullptr);
+    return suite::optionsReal(po, name, text, nullptr, *v, v, nullptr);
   }
   template <class I> PetscErrorCode integer(const char* name, const char* text, I* v) const {
     PetscInt x = (PetscInt)*v;
     PetscFunctionBeginUser;
-    PetscCall(PetscOptionsInt_Private(po, name, text, nullptr, x, &x, nullptr, PETSC_MIN_INT, PETSC_MAX_INT));
+    PetscCall(suite::optionsInt(po, name, text, nullptr, x, &x, nullptr));
     *v = (I)x;
     PetscFunctionReturn(0);
   }
   PetscErrorCode boolean(const char* name, const char* text, bool* v) const {
     PetscBool x = *v ? PETSC_TRUE : PETSC_FALSE;
     PetscFunctionBeginUser;
-    PetscCall(PetscOptionsBool_Private(po, name, text, nullptr, x, &x, nullptr));
+    PetscCall(suite::optionsBool(po, name, text, nullptr, x, &x, nullptr));
     *v = x;
     PetscFunctionReturn(0);
   }

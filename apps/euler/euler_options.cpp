@@ -3,6 +3,7 @@
 #include "euler_options.hpp"
 
 #include "core/named_choice.hpp"
+#include "core/option_value.hpp"
 #include "euler/line_options.hpp"
 #include "euler/schemes.hpp"
 #include "euler_stepper.hpp"
@@ -55,9 +56,10 @@ PetscErrorCode readChoices(MPI_Comm comm, Options* o) {
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-time", "Time integrator (then -ts_* refine it)",
                                  timeIntegrators(), &o->time));
   if (o->dim == 1)
-    PetscCall(PetscOptionsInt(
-        "-scheme_spectrum", "Measure the scheme's modified wavenumber on N periodic points instead of a run",
-        "", o->scheme_spectrum, &o->scheme_spectrum, nullptr));
+    PetscCall(
+        suite::optionsInt(PetscOptionsObject, "-scheme_spectrum",
+                          "Measure the scheme's modified wavenumber on N periodic points instead of a run",
+                          "", o->scheme_spectrum, &o->scheme_spectrum, nullptr));
   else
     PetscCall(
         suite::optionsChoice(PetscOptionsObject, "-axis", "Axis of a planar (1D) problem", kAxes, &o->axis));
@@ -94,8 +96,10 @@ PetscErrorCode createProblemOf(MPI_Comm comm, Options* o, Problem* line, Problem
 PetscErrorCode readLineDomain(PetscOptionItems* PetscOptionsObject, Problem* line) {
   std::string bc[2] = {bcName(line->bc_left), bcName(line->bc_right)};
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsReal("-xmin", "Left end of the domain", "", line->xmin, &line->xmin, nullptr));
-  PetscCall(PetscOptionsReal("-xmax", "Right end of the domain", "", line->xmax, &line->xmax, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-xmin", "Left end of the domain", "", line->xmin,
+                               &line->xmin, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-xmax", "Right end of the domain", "", line->xmax,
+                               &line->xmax, nullptr));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-bc_left", "Left boundary", kBoundaries, &bc[0]));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-bc_right", "Right boundary", kBoundaries, &bc[1]));
   parseBc(bc[0], &line->bc_left);
@@ -105,37 +109,46 @@ PetscErrorCode readLineDomain(PetscOptionItems* PetscOptionsObject, Problem* lin
 
 PetscErrorCode readGrid(PetscOptionItems* PetscOptionsObject, Options* o, Problem* line) {
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsInt("-nx", o->dim == 1 ? "Number of cells" : "Cells along x", "", o->n[0], &o->n[0],
-                            nullptr));
-  if (o->dim >= 2) PetscCall(PetscOptionsInt("-ny", "Cells along y", "", o->n[1], &o->n[1], nullptr));
-  if (o->dim == 3) PetscCall(PetscOptionsInt("-nz", "Cells along z", "", o->n[2], &o->n[2], nullptr));
-  PetscCall(PetscOptionsReal("-t_final", "End time", "", o->t_final, &o->t_final, nullptr));
+  PetscCall(suite::optionsInt(PetscOptionsObject, "-nx", o->dim == 1 ? "Number of cells" : "Cells along x",
+                              "", o->n[0], &o->n[0], nullptr));
+  if (o->dim >= 2)
+    PetscCall(suite::optionsInt(PetscOptionsObject, "-ny", "Cells along y", "", o->n[1], &o->n[1], nullptr));
+  if (o->dim == 3)
+    PetscCall(suite::optionsInt(PetscOptionsObject, "-nz", "Cells along z", "", o->n[2], &o->n[2], nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-t_final", "End time", "", o->t_final, &o->t_final, nullptr));
   if (o->dim == 1) PetscCall(readLineDomain(PetscOptionsObject, line));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsReal("-cfl",
-                             o->dim == 1 ? "CFL number: dt = cfl dx / max(|u| + c)"
-                                         : "CFL number: dt = cfl / sum_d(max(|u_d| + c) / dx_d)",
-                             "", o->cfl, &o->cfl, nullptr));
-  PetscCall(PetscOptionsReal("-dt", "Fixed time step (0: CFL-controlled)", "", o->dt, &o->dt, nullptr));
-  PetscCall(PetscOptionsInt("-max_steps", "Maximum number of steps (-1: no limit)", "", o->max_steps,
-                            &o->max_steps, nullptr));
-  PetscCall(PetscOptionsBool("-characteristic", "Characteristic-wise reconstruction (false: component-wise)",
-                             "", o->characteristic, &o->characteristic, nullptr));
-  PetscCall(PetscOptionsBool("-local_lf", "Local Lax-Friedrichs splitting (false: global; implicit default)",
-                             "", o->local_lf, &o->local_lf, nullptr));
-  PetscCall(PetscOptionsBool("-positivity", "Hu-Adams-Shu positivity-preserving flux limiter", "",
-                             o->positivity, &o->positivity, nullptr));
-  PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
-                             o->shock_threshold, &o->shock_threshold, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-cfl",
+                               o->dim == 1 ? "CFL number: dt = cfl dx / max(|u| + c)"
+                                           : "CFL number: dt = cfl / sum_d(max(|u_d| + c) / dx_d)",
+                               "", o->cfl, &o->cfl, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-dt", "Fixed time step (0: CFL-controlled)", "", o->dt,
+                               &o->dt, nullptr));
+  PetscCall(suite::optionsInt(PetscOptionsObject, "-max_steps", "Maximum number of steps (-1: no limit)", "",
+                              o->max_steps, &o->max_steps, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-characteristic",
+                               "Characteristic-wise reconstruction (false: component-wise)", "",
+                               o->characteristic, &o->characteristic, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-local_lf",
+                               "Local Lax-Friedrichs splitting (false: global; implicit default)", "",
+                               o->local_lf, &o->local_lf, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-positivity",
+                               "Hu-Adams-Shu positivity-preserving flux limiter", "", o->positivity,
+                               &o->positivity, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-shock_threshold",
+                               "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
+                               o->shock_threshold, &o->shock_threshold, nullptr));
   if (o->dim > 1)
-    PetscCall(PetscOptionsInt("-line_batch_mb",
-                              "Memory (MiB) of one batch of block lines in the compact solves (more batches: "
-                              "more messages, less memory)",
-                              "", o->line_batch_mb, &o->line_batch_mb, nullptr));
+    PetscCall(
+        suite::optionsInt(PetscOptionsObject, "-line_batch_mb",
+                          "Memory (MiB) of one batch of block lines in the compact solves (more batches: "
+                          "more messages, less memory)",
+                          "", o->line_batch_mb, &o->line_batch_mb, nullptr));
   o->line_solve = lineSolveChoices(o->dim)[0].name; // the default: the first
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-line_solve",
                                  "Compact solves of lines split over ranks", lineSolveChoices(o->dim),
@@ -150,24 +163,27 @@ PetscErrorCode readOutput(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscCall(PetscOptionsString("-output", "HDF5 output file (XDMF sidecar beside it)", "", buf, buf,
                                sizeof(buf), &set));
   if (set) o->output = buf;
-  PetscCall(PetscOptionsInt("-snapshot_every", "Write a snapshot every N steps (0: none)", "",
-                            o->snapshot_every, &o->snapshot_every, nullptr));
+  PetscCall(suite::optionsInt(PetscOptionsObject, "-snapshot_every",
+                              "Write a snapshot every N steps (0: none)", "", o->snapshot_every,
+                              &o->snapshot_every, nullptr));
   if (o->dim == 1)
-    PetscCall(PetscOptionsInt("-spacetime_every", "Record density every N steps for the x-t image (0: none)",
-                              "", o->spacetime_every, &o->spacetime_every, nullptr));
-  PetscCall(PetscOptionsBool("-error",
-                             o->dim == 1 ? "L1/L2/Linf errors against the exact solution (or -reference)"
-                                         : "Density errors (L1, L2, Linf) against the exact solution",
-                             "", o->error, &o->error, nullptr));
+    PetscCall(suite::optionsInt(PetscOptionsObject, "-spacetime_every",
+                                "Record density every N steps for the x-t image (0: none)", "",
+                                o->spacetime_every, &o->spacetime_every, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-error",
+                               o->dim == 1 ? "L1/L2/Linf errors against the exact solution (or -reference)"
+                                           : "Density errors (L1, L2, Linf) against the exact solution",
+                               "", o->error, &o->error, nullptr));
   if (o->dim == 1) {
     buf[0] = 0;
     PetscCall(PetscOptionsString("-reference", "HDF5 file of a finer (or equal) grid run to compare with", "",
                                  buf, buf, sizeof(buf), &set));
     if (set) o->reference = buf;
   } else {
-    PetscCall(PetscOptionsBool(
-        "-spectrum", "Kinetic-energy spectrum E(k) of the final state and every snapshot (FFTW-MPI)", "",
-        o->spectrum, &o->spectrum, nullptr));
+    PetscCall(
+        suite::optionsBool(PetscOptionsObject, "-spectrum",
+                           "Kinetic-energy spectrum E(k) of the final state and every snapshot (FFTW-MPI)",
+                           "", o->spectrum, &o->spectrum, nullptr));
   }
   PetscFunctionReturn(0);
 }

@@ -3,6 +3,8 @@
 // the suite's TimeLoop.
 #include "euler_run.hpp"
 
+#include "core/option_value.hpp"
+
 namespace euler_app {
 
 PetscErrorCode EulerRun::solve() {
@@ -22,10 +24,10 @@ PetscErrorCode runEuler(const suite::RunContext& ctx) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx.comm(), "", "Euler dimension", "");
   PetscCall(
-      PetscOptionsInt("-dim",
-                      "Spatial dimension: 1, 2 or 3 (2/3: -nx -ny -nz, DMDA process grid); the problems "
-                      "and options listed below are those of this -dim",
-                      "", dim, &dim, nullptr));
+      suite::optionsInt(PetscOptionsObject, "-dim",
+                        "Spatial dimension: 1, 2 or 3 (2/3: -nx -ny -nz, DMDA process grid); the problems "
+                        "and options listed below are those of this -dim",
+                        "", dim, &dim, nullptr));
   PetscOptionsEnd();
   PetscCheck(dim >= 1 && dim <= 3, ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -dim %" PetscInt_FMT ": 1, 2 or 3", dim);

@@ -14,13 +14,13 @@ namespace {
 struct Read {
   PetscOptionItems* PetscOptionsObject;
   PetscErrorCode operator()(const char* name, const char* text, PetscReal* v) const {
-    return PetscOptionsReal(name, text, "", *v, v, nullptr);
+    return suite::optionsReal(PetscOptionsObject, name, text, "", *v, v, nullptr);
   }
   PetscErrorCode operator()(const char* name, const char* text, PetscInt* v) const {
-    return PetscOptionsInt(name, text, "", *v, v, nullptr);
+    return suite::optionsInt(PetscOptionsObject, name, text, "", *v, v, nullptr);
   }
   PetscErrorCode operator()(const char* name, const char* text, PetscBool* v) const {
-    return PetscOptionsBool(name, text, "", *v, v, nullptr);
+    return suite::optionsBool(PetscOptionsObject, name, text, "", *v, v, nullptr);
   }
   PetscErrorCode operator()(const char* name, const char* text, std::string* v) const {
     return suite::optionsString(PetscOptionsObject, name, text, v);
@@ -40,10 +40,10 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(o("-mesh", "Mesh", suite::fem::meshChoices(), &opt_.mesh));
   PetscCall(o("-mesh_file", "Gmsh .msh (2.2/4.1 ASCII) or TetGen basename (.node/.ele)", &opt_.mesh_file));
   PetscCall(o("-beam_length", "Beam length along x", &opt_.beam.length));
-  PetscCall(PetscOptionsRealArray("-beam_size", "Beam cross-section sy,sz", "", opt_.beam.size.data(), &nsize,
-                                  nullptr));
-  PetscCall(PetscOptionsIntArray("-beam_cells", "Hexahedra nx,ny,nz", "", opt_.beam.cells.data(), &ncells,
-                                 nullptr));
+  PetscCall(suite::optionsRealArray(PetscOptionsObject, "-beam_size", "Beam cross-section sy,sz", "",
+                                    opt_.beam.size.data(), &nsize, nullptr));
+  PetscCall(suite::optionsIntArray(PetscOptionsObject, "-beam_cells", "Hexahedra nx,ny,nz", "",
+                                   opt_.beam.cells.data(), &ncells, nullptr));
   PetscCall(o("-order", "Element order: 1 (P1) or 2 (P2)", &opt_.order));
   PetscCall(o("-material", "Material", suite::fem::materialChoices(), &opt_.material));
   PetscCall(o("-young", "Young's modulus E", &opt_.young));
@@ -56,8 +56,9 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(o("-static", "Static solve K u = f (StVK: load stepping + Newton)", &opt_.is_static));
   PetscCall(
       o("-tip_load", "Total force P (-y) on the end face x = max as a uniform traction", &opt_.tip_load));
-  PetscCall(PetscOptionsRealArray("-gravity", "Gravity gx,gy,gz (body force density * g)", "", opt_.gravity,
-                                  &ngrav, nullptr));
+  PetscCall(suite::optionsRealArray(PetscOptionsObject, "-gravity",
+                                    "Gravity gx,gy,gz (body force density * g)", "", opt_.gravity, &ngrav,
+                                    nullptr));
   PetscCall(o("-load_steps", "Static load increments", &opt_.load_steps));
   PetscCall(o("-dt", "Time step", &opt_.dt));
   PetscCall(o("-steps", "Number of time steps", &opt_.steps));
@@ -89,9 +90,9 @@ PetscErrorCode FemdynRun::readIntegratorOptions(PetscOptionItems* PetscOptionsOb
       o("-snapshot_every", "Displacement/velocity snapshot every N steps (0: none)", &opt_.snapshot_every));
   PetscCall(o("-output", "HDF5 output file", &opt_.output));
   PetscCall(o("-probe", "Haptic probe: a rigid point pressing on a surface node (penalty)", &opt_.probe));
-  PetscCall(PetscOptionsRealArray("-probe_point",
-                                  "Probe contact point x,y,z (nearest node; default: top of the free end)",
-                                  "", p.point, &npt, nullptr));
+  PetscCall(suite::optionsRealArray(PetscOptionsObject, "-probe_point",
+                                    "Probe contact point x,y,z (nearest node; default: top of the free end)",
+                                    "", p.point, &npt, nullptr));
   PetscCall(o("-probe_stiffness", "Probe penalty stiffness k (force per length)", &p.stiffness));
   PetscCall(o("-probe_speed", "Probe indentation speed (along -y, from the node's height)", &p.speed));
   PetscCall(o("-probe_depth", "Probe travel below the node's initial height, then it holds", &p.depth));

@@ -124,6 +124,12 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
     PetscCall(suite::checkIntOptionRange(comm, name, 0));
   PetscCheck(o->n >= 1 && o->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
   PetscCall(checkSizes(comm, *o));
+  // The same ranges as lcpbench (a condition number below 1 makes a matrix the Siconos solvers assert on).
+  PetscCheck(o->cond >= 1.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-cond %g: must be >= 1", (double)o->cond);
+  PetscCheck(o->qrange >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-qrange %g: must be >= 0", (double)o->qrange);
+  PetscCheck(o->max_it >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-max_it %d: must be >= 0", (int)o->max_it);
+  PetscCheck(o->rel_tol > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-rel_tol %g: must be > 0",
+             (double)o->rel_tol);
   PetscCheck(!o->output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
   PetscCall(suite::checkOutputWritable(comm, o->output.c_str(), "output"));
   PetscFunctionReturn(0);

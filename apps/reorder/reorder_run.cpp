@@ -31,8 +31,8 @@ PetscErrorCode readOptions(MPI_Comm comm, Options* o) {
   PetscCall(
       suite::optionsChoice(PetscOptionsObject, "-ordering", "Fill-reducing ordering", choices, &o->ordering));
   PetscCall(suite::optionsString(PetscOptionsObject, "-output", "HDF5 output file", &o->output));
-  PetscCall(PetscOptionsInt("-repeat", "Ordering time = minimum over this many runs", "", o->repeat,
-                            &o->repeat, nullptr));
+  PetscCall(suite::optionsInt(PetscOptionsObject, "-repeat", "Ordering time = minimum over this many runs",
+                              "", o->repeat, &o->repeat, nullptr));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }

@@ -1,5 +1,16 @@
 // Numeric, boolean and free-text PETSc options in one call between PetscOptionsBegin and PetscOptionsEnd: the
 // current value is the default shown by -help. Options with a fixed set of values: core/named_choice.hpp.
+//
+// Every numeric or boolean option of the suite is read here (never with PetscOptionsReal/Int/Bool directly):
+// its text is checked first, collectively, so that a bad value is one error for the whole job naming the option
+// (PETSc's own conversion errors are raised on PETSC_COMM_SELF, once per rank, and it accepts nan and inf for
+// reals and wraps integers beyond 32 bits):
+//   - a number option given no value or an empty one ("-nx" last, -nx "") is refused;
+//   - an integer must be an integer in PetscInt's range (-nx 2147483648 is refused, not wrapped);
+//   - a real must be finite (nan, inf, 1e400 are refused) unless the option accepts infinity (Real::or_inf:
+//     then +-inf are accepted, never nan);
+//   - a flag must be true/false, yes/no, on/off or 1/0 (no value: true).
+// The same rules hold for each entry of a comma-separated array (optionsArray).
 #pragma once
 
 #include <petscsys.h>
@@ -8,25 +19,34 @@
 
 namespace suite {
 
+enum class Real { finite, or_inf };
+
+PetscErrorCode optionsReal(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                           const char* man, PetscReal dflt, PetscReal* value, PetscBool* set,
+                           Real accept = Real::finite);
+PetscErrorCode optionsInt(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                          const char* man, PetscInt dflt, PetscInt* value, PetscBool* set);
+PetscErrorCode optionsBool(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                           const char* man, PetscBool dflt, PetscBool* value, PetscBool* set);
+// Up to *n values; on return *n is the number given (0 if the option is not given, as in PETSc).
+PetscErrorCode optionsRealArray(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                                const char* man, PetscReal* values, PetscInt* n, PetscBool* set);
+PetscErrorCode optionsIntArray(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                               const char* man, PetscInt* values, PetscInt* n, PetscBool* set);
+
 inline PetscErrorCode optionsValue(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
                                    PetscInt* value, PetscBool* set = nullptr) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsInt(name, text, "", *value, value, set));
-  PetscFunctionReturn(0);
+  return optionsInt(PetscOptionsObject, name, text, "", *value, value, set);
 }
 
 inline PetscErrorCode optionsValue(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
-                                   PetscReal* value, PetscBool* set = nullptr) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsReal(name, text, "", *value, value, set));
-  PetscFunctionReturn(0);
+                                   PetscReal* value, PetscBool* set = nullptr, Real accept = Real::finite) {
+  return optionsReal(PetscOptionsObject, name, text, "", *value, value, set, accept);
 }
 
 inline PetscErrorCode optionsValue(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
                                    PetscBool* value, PetscBool* set = nullptr) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsBool(name, text, "", *value, value, set));
-  PetscFunctionReturn(0);
+  return optionsBool(PetscOptionsObject, name, text, "", *value, value, set);
 }
 
 // A string without a fixed set of values (a path, a plane), read into a std::string.

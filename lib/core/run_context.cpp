@@ -3,6 +3,7 @@
 
 #include "core/error_handler.hpp"
 #include "core/options_file_check.hpp"
+#include "core/option_value.hpp"
 #include "core/sanitizer_defaults.hpp"
 
 #include <cstdarg>
@@ -61,13 +62,15 @@ PetscErrorCode bufferHelp(MPI_Comm comm, const char format[], ...) {
 PetscErrorCode readMemoryCheckOptions(PetscOptionItems* PetscOptionsObject, PetscReal* gib) {
   PetscBool check = PETSC_TRUE;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsBool(
-      "-memory_check", "Refuse a run whose memory estimate exceeds the limit of its node (false: run anyway)",
-      nullptr, check, &check, nullptr));
-  PetscCall(PetscOptionsReal("-max_memory_gib",
-                             "Memory limit per node for that check in GiB (0: 90% of the smaller of physical "
-                             "memory and the cgroup limit)",
-                             nullptr, *gib, gib, nullptr));
+  PetscCall(suite::optionsBool(
+      PetscOptionsObject, "-memory_check",
+      "Refuse a run whose memory estimate exceeds the limit of its node (false: run anyway)", nullptr, check,
+      &check, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-max_memory_gib",
+                         "Memory limit per node for that check in GiB (0: 90% of the smaller of physical "
+                         "memory and the cgroup limit)",
+                         nullptr, *gib, gib, nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -147,15 +150,18 @@ PetscErrorCode RunContext::readCommonOptions() {
   help_ = has_help;
   if (help_) PetscCall(printProgramHelp());
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Run control (all programs of the suite)", nullptr);
-  PetscCall(PetscOptionsBool("-quiet", "Print no progress or info lines (errors still go to stderr)", nullptr,
-                             quiet, &quiet, nullptr));
-  PetscCall(PetscOptionsReal("-max_walltime",
-                             "Stop cleanly (final output/checkpoint) after this many seconds; 0 = off",
-                             nullptr, max_walltime_, &max_walltime_, nullptr));
-  PetscCall(PetscOptionsReal("-progress_interval", "Seconds of wall time between progress lines", nullptr,
-                             progress_interval_, &progress_interval_, nullptr));
-  PetscCall(PetscOptionsBool("-allow_unused_options", "Do not treat unknown/unused options as an error",
-                             nullptr, allow, &allow, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-quiet",
+                               "Print no progress or info lines (errors still go to stderr)", nullptr, quiet,
+                               &quiet, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-max_walltime",
+                               "Stop cleanly (final output/checkpoint) after this many seconds; 0 = off",
+                               nullptr, max_walltime_, &max_walltime_, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-progress_interval",
+                               "Seconds of wall time between progress lines", nullptr, progress_interval_,
+                               &progress_interval_, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-allow_unused_options",
+                               "Do not treat unknown/unused options as an error", nullptr, allow, &allow,
+                               nullptr));
   PetscCall(readMemoryCheckOptions(PetscOptionsObject, &max_memory_gib));
   PetscOptionsEnd();
   PetscCheck(max_memory_gib >= 0.0 && max_memory_gib < 1e12, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,

@@ -4,6 +4,7 @@
 // through a uniform medium with sine-shaped oscillations ahead of it, 560 cells and 2000 fixed steps by
 // default (our reconstruction of the seed code's 2003 pulse case; the exact solution is known, so -error
 // works).
+#include "core/option_value.hpp"
 #include "euler/problem.hpp"
 
 #include <cmath>
@@ -24,12 +25,15 @@ PetscErrorCode createAdvectionProblem(MPI_Comm comm, const std::string& name, Pr
   const bool pulse = name == "pulse";
   double amp = pulse ? 0.3 : 0.2, u = pulse ? -3.0 : 1.0, p = 1.0, gamma = 1.4, block = 4.0;
   PetscOptionsBegin(comm, "", "Advection problem options", "");
-  PetscCall(PetscOptionsReal("-amplitude", "Density wave amplitude", "", amp, &amp, nullptr));
-  PetscCall(PetscOptionsReal("-velocity", "Advection velocity", "", u, &u, nullptr));
-  PetscCall(PetscOptionsReal("-pressure", "Uniform pressure", "", p, &p, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-amplitude", "Density wave amplitude", "", amp, &amp, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-velocity", "Advection velocity", "", u, &u, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-pressure", "Uniform pressure", "", p, &p, nullptr));
   if (pulse)
-    PetscCall(PetscOptionsReal("-block_density", "Density of the moving block", "", block, &block, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, "-block_density", "Density of the moving block", "",
+                                 block, &block, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCheck(p > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -8,6 +8,7 @@
 // wall beyond), top Custom time-dependent (the exact undisturbed flow: post-shock left of the shock line,
 // pre-shock right of it, evaluated at the ghost cell centre). t = 0.2, grid 1/120 (480 x 120) by default.
 // Reference: Woodward & Colella, J. Comput. Phys. 54 (1984) 115, sec. IVc. In 3D uniform along z.
+#include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
 
 #include <cmath>
@@ -18,8 +19,9 @@ PetscErrorCode createDoubleMachProblemND(MPI_Comm comm, const std::string&, int 
   PetscFunctionBeginUser;
   double mach = 10.0, gamma = 1.4;
   PetscOptionsBegin(comm, "", "Double Mach reflection options", "");
-  PetscCall(PetscOptionsReal("-mach", "Shock Mach number", "", mach, &mach, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-mach", "Shock Mach number", "", mach, &mach, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCheck(mach > 1.0 && std::isfinite(mach), comm, PETSC_ERR_ARG_OUTOFRANGE,

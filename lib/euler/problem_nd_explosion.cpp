@@ -13,6 +13,7 @@
 //   and Dimensional Methods in Mechanics (1959); setup in the style of Fryxell et al., Astrophys. J. Suppl.
 //   131 (2000) 273 (FLASH Sedov test: rho 1, p 1e-5, E 1).
 // No exact solution is provided for either (compare with a fine-grid or 1D radial reference).
+#include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
 
 #include <cmath>
@@ -27,19 +28,26 @@ PetscErrorCode createExplosionProblemND(MPI_Comm comm, const std::string& name, 
   double energy = 1.0;
   if (sedov) out = {1.0, {0.0, 0.0, 0.0}, 1e-5};
   PetscOptionsBegin(comm, "", sedov ? "Sedov blast options" : "Explosion options", "");
-  PetscCall(PetscOptionsReal("-radius", "Radius of the initial charge", "", radius, &radius, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-radius", "Radius of the initial charge", "", radius,
+                               &radius, nullptr));
   if (sedov) {
-    PetscCall(PetscOptionsReal("-rho0", "Ambient density", "", out.rho, &out.rho, nullptr));
-    PetscCall(PetscOptionsReal("-p_ambient", "Ambient pressure", "", out.p, &out.p, nullptr));
-    PetscCall(PetscOptionsReal("-energy", "Deposited energy (per unit length in 2D)", "", energy, &energy,
-                               nullptr));
+    PetscCall(
+        suite::optionsReal(PetscOptionsObject, "-rho0", "Ambient density", "", out.rho, &out.rho, nullptr));
+    PetscCall(
+        suite::optionsReal(PetscOptionsObject, "-p_ambient", "Ambient pressure", "", out.p, &out.p, nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, "-energy", "Deposited energy (per unit length in 2D)",
+                                 "", energy, &energy, nullptr));
   } else {
-    PetscCall(PetscOptionsReal("-rho_in", "Density inside", "", in.rho, &in.rho, nullptr));
-    PetscCall(PetscOptionsReal("-p_in", "Pressure inside", "", in.p, &in.p, nullptr));
-    PetscCall(PetscOptionsReal("-rho_out", "Density outside", "", out.rho, &out.rho, nullptr));
-    PetscCall(PetscOptionsReal("-p_out", "Pressure outside", "", out.p, &out.p, nullptr));
+    PetscCall(
+        suite::optionsReal(PetscOptionsObject, "-rho_in", "Density inside", "", in.rho, &in.rho, nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, "-p_in", "Pressure inside", "", in.p, &in.p, nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, "-rho_out", "Density outside", "", out.rho, &out.rho,
+                                 nullptr));
+    PetscCall(
+        suite::optionsReal(PetscOptionsObject, "-p_out", "Pressure outside", "", out.p, &out.p, nullptr));
   }
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCheck(radius > 0.0 && radius < 1.0, comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -8,6 +8,7 @@
 // states (rho, u, v, p) = (2, 0, 0, 1) and (1, 0, 0, 2.5). t = 1.95, 64 x 256 cells by default.
 // Reference: Shi, Zhang & Shu, J. Comput. Phys. 186 (2003) 690, sec. 4 (Rayleigh-Taylor instability). In 3D
 // uniform along z.
+#include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
 
 #include <cmath>
@@ -18,9 +19,11 @@ PetscErrorCode createRayleighTaylorProblemND(MPI_Comm comm, const std::string&, 
   PetscFunctionBeginUser;
   double amp = 0.025, gamma = 5.0 / 3.0, g = 1.0;
   PetscOptionsBegin(comm, "", "Rayleigh-Taylor options", "");
-  PetscCall(PetscOptionsReal("-amplitude", "Interface perturbation amplitude (times the sound speed)", "",
-                             amp, &amp, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-amplitude",
+                               "Interface perturbation amplitude (times the sound speed)", "", amp, &amp,
+                               nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCheck(std::isfinite(amp) && std::abs(amp) < 1.0, comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -16,6 +16,7 @@
 // SIAM J. Sci. Comput. 25 (2003) 995 (2D Riemann problem case 3 = Lax-Liu configuration 3, t = 0.3). The
 // four-digit states are the published ones (the shocks of configurations 3 and 4 satisfy the Rankine-Hugoniot
 // relations to those digits; tests/unit/euler_nd checks it). In 3D the data are uniform along z.
+#include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
 
 namespace suite::euler {
@@ -52,14 +53,19 @@ PetscErrorCode createRiemann2dProblemND(MPI_Comm comm, const std::string& name, 
   }
   PetscOptionsBegin(comm, "", "2D Riemann problem options", "");
   for (int k = 0; k < 4; ++k) {
-    PetscCall(PetscOptionsReal(opt[k][0].c_str(), "Quadrant density", "", q[k].rho, &q[k].rho, nullptr));
-    PetscCall(PetscOptionsReal(opt[k][1].c_str(), "Quadrant x velocity", "", q[k].u[0], &q[k].u[0], nullptr));
-    PetscCall(PetscOptionsReal(opt[k][2].c_str(), "Quadrant y velocity", "", q[k].u[1], &q[k].u[1], nullptr));
-    PetscCall(PetscOptionsReal(opt[k][3].c_str(), "Quadrant pressure", "", q[k].p, &q[k].p, nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, opt[k][0].c_str(), "Quadrant density", "", q[k].rho,
+                                 &q[k].rho, nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, opt[k][1].c_str(), "Quadrant x velocity", "", q[k].u[0],
+                                 &q[k].u[0], nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, opt[k][2].c_str(), "Quadrant y velocity", "", q[k].u[1],
+                                 &q[k].u[1], nullptr));
+    PetscCall(suite::optionsReal(PetscOptionsObject, opt[k][3].c_str(), "Quadrant pressure", "", q[k].p,
+                                 &q[k].p, nullptr));
   }
-  PetscCall(PetscOptionsReal("-x0", "Split point x", "", x0, &x0, nullptr));
-  PetscCall(PetscOptionsReal("-y0", "Split point y", "", y0, &y0, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-x0", "Split point x", "", x0, &x0, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-y0", "Split point y", "", y0, &y0, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   for (int k = 0; k < 4; ++k) PetscCall(checkStateN(comm, q[k], opt[k][0].c_str(), opt[k][3].c_str()));

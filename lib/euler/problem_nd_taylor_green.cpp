@@ -6,6 +6,7 @@
 // No exact solution (compare kinetic energy, enstrophy and spectra across resolutions). References: Taylor &
 // Green, Proc. R. Soc. Lond. A 158 (1937) 499; Brachet et al., J. Fluid Mech. 130 (1983) 411 (inviscid TGV);
 // DeBonis, AIAA 2013-0382 (compressible Mach 0.1 setup).
+#include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
 
 #include <cmath>
@@ -18,9 +19,11 @@ PetscErrorCode createTaylorGreenProblemND(MPI_Comm comm, const std::string&, int
              "Problem taylor_green is three-dimensional: run it with -dim 3 (got -dim %d)", dim);
   double mach = 0.1, gamma = 1.4;
   PetscOptionsBegin(comm, "", "Taylor-Green vortex options", "");
-  PetscCall(PetscOptionsReal("-mach", "Reference Mach number (velocity 1 over the sound speed at p0)", "",
-                             mach, &mach, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-mach",
+                               "Reference Mach number (velocity 1 over the sound speed at p0)", "", mach,
+                               &mach, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   const double p0 = 1.0 / (gamma * mach * mach);

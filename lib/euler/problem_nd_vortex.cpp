@@ -15,6 +15,7 @@
 // References: Shu, ICASE report 97-65 (NASA/CR-97-206253, 1997), the 2D vortex evolution example; Yee,
 // Sandham & Djomehri, J. Comput. Phys. 150 (1999) 199 (isentropic vortex convection). In 3D the vortex is
 // uniform along z (w = 0).
+#include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
 
 #include <cmath>
@@ -32,12 +33,17 @@ PetscErrorCode createVortexProblemND(MPI_Comm comm, const std::string&, int dim,
   PetscFunctionBeginUser;
   double beta = 5.0, u0 = 1.0, v0 = 1.0, gamma = 1.4, L = 10.0;
   PetscOptionsBegin(comm, "", "Isentropic vortex options", "");
-  PetscCall(PetscOptionsReal("-vortex_strength", "Vortex strength beta", "", beta, &beta, nullptr));
-  PetscCall(PetscOptionsReal("-vortex_u", "Mean flow velocity along x", "", u0, &u0, nullptr));
-  PetscCall(PetscOptionsReal("-vortex_v", "Mean flow velocity along y", "", v0, &v0, nullptr));
-  PetscCall(PetscOptionsReal(
-      "-vortex_domain", "Side L of the periodic domain [0, L]^2 (vortex at its centre)", "", L, &L, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-vortex_strength", "Vortex strength beta", "", beta,
+                               &beta, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-vortex_u", "Mean flow velocity along x", "", u0, &u0,
+                               nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-vortex_v", "Mean flow velocity along y", "", v0, &v0,
+                               nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-vortex_domain",
+                               "Side L of the periodic domain [0, L]^2 (vortex at its centre)", "", L, &L,
+                               nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCheck(L >= 4.0 && std::isfinite(L), comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -1,6 +1,7 @@
 // Riemann problems (`riemann` with any states, presets `sod`, `lax`, `toro123`, `modified_sod`) and their
 // exact solution. References: Sod, J. Comput. Phys. 27 (1978) 1; Lax, Comm. Pure Appl. Math. 7 (1954) 159
 // (data as in Harten 1983); Toro (2009) sec. 4.3.3, tests 1 (modified Sod, x0 = 0.3) and 2 (123 problem).
+#include "core/option_value.hpp"
 #include "euler/exact_riemann.hpp"
 #include "euler/problem.hpp"
 
@@ -30,14 +31,16 @@ PetscErrorCode createRiemannProblem(MPI_Comm comm, const std::string& name, Prob
   }
   double gamma = 1.4;
   PetscOptionsBegin(comm, "", "Riemann problem options", "");
-  PetscCall(PetscOptionsReal("-rho_l", "Left density", "", L.rho, &L.rho, nullptr));
-  PetscCall(PetscOptionsReal("-u_l", "Left velocity", "", L.u, &L.u, nullptr));
-  PetscCall(PetscOptionsReal("-p_l", "Left pressure", "", L.p, &L.p, nullptr));
-  PetscCall(PetscOptionsReal("-rho_r", "Right density", "", R.rho, &R.rho, nullptr));
-  PetscCall(PetscOptionsReal("-u_r", "Right velocity", "", R.u, &R.u, nullptr));
-  PetscCall(PetscOptionsReal("-p_r", "Right pressure", "", R.p, &R.p, nullptr));
-  PetscCall(PetscOptionsReal("-x0", "Initial discontinuity position", "", x0, &x0, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-rho_l", "Left density", "", L.rho, &L.rho, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-u_l", "Left velocity", "", L.u, &L.u, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-p_l", "Left pressure", "", L.p, &L.p, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-rho_r", "Right density", "", R.rho, &R.rho, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-u_r", "Right velocity", "", R.u, &R.u, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-p_r", "Right pressure", "", R.p, &R.p, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-x0", "Initial discontinuity position", "", x0, &x0, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCall(checkState(comm, L, "-rho_l", "-p_l"));

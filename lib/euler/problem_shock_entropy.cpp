@@ -2,6 +2,7 @@
 // 8: Mach 3 shock into rho = 1 + 0.2 sin(5x) on [-5, 5], t = 1.8) and `titarev_toro` (Titarev & Toro, J.
 // Comput. Phys. 201 (2004) 238, sec. 7: rho = 1 + 0.1 sin(20 pi x), shock at x = -4.5, t = 5). No exact
 // solution: compare with a fine-grid run (-reference).
+#include "core/option_value.hpp"
 #include "euler/problem.hpp"
 
 #include <cmath>
@@ -14,13 +15,17 @@ PetscErrorCode createShockEntropyProblem(MPI_Comm comm, const std::string& name,
   Prim L = so ? Prim{3.857143, 2.629369, 10.33333} : Prim{1.515695, 0.523346, 1.805};
   double x0 = so ? -4.0 : -4.5, amp = so ? 0.2 : 0.1, wavenumber = so ? 5.0 : 20.0 * M_PI, gamma = 1.4;
   PetscOptionsBegin(comm, "", "Shock/entropy-wave problem options", "");
-  PetscCall(PetscOptionsReal("-rho_l", "Post-shock density", "", L.rho, &L.rho, nullptr));
-  PetscCall(PetscOptionsReal("-u_l", "Post-shock velocity", "", L.u, &L.u, nullptr));
-  PetscCall(PetscOptionsReal("-p_l", "Post-shock pressure", "", L.p, &L.p, nullptr));
-  PetscCall(PetscOptionsReal("-x0", "Initial shock position", "", x0, &x0, nullptr));
-  PetscCall(PetscOptionsReal("-amplitude", "Density wave amplitude", "", amp, &amp, nullptr));
-  PetscCall(PetscOptionsReal("-wavenumber", "Density wave number", "", wavenumber, &wavenumber, nullptr));
-  PetscCall(PetscOptionsReal("-gamma", "Ratio of specific heats", "", gamma, &gamma, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-rho_l", "Post-shock density", "", L.rho, &L.rho, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-u_l", "Post-shock velocity", "", L.u, &L.u, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-p_l", "Post-shock pressure", "", L.p, &L.p, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-x0", "Initial shock position", "", x0, &x0, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-amplitude", "Density wave amplitude", "", amp, &amp, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-wavenumber", "Density wave number", "", wavenumber,
+                               &wavenumber, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCall(checkState(comm, L, "-rho_l", "-p_l"));

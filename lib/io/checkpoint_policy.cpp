@@ -1,6 +1,7 @@
 // Periodic checkpoint policy and restart-file selection (see checkpoint_policy.hpp).
 #include "io/checkpoint_policy.hpp"
 
+#include "core/option_value.hpp"
 #include "io/h5_output.hpp"
 
 #include <algorithm>
@@ -53,12 +54,13 @@ PetscErrorCode CheckpointPolicy::setFromOptions(MPI_Comm comm, const std::string
   PetscOptionsBegin(comm, nullptr, "Checkpoint/restart options", nullptr);
   PetscCall(PetscOptionsString("-checkpoint_dir", "Directory for periodic and final checkpoints", nullptr,
                                dir, dir, sizeof dir, nullptr));
-  PetscCall(PetscOptionsInt("-checkpoint_every", "Checkpoint every N steps (0: off)", nullptr, every, &every,
-                            nullptr));
-  PetscCall(PetscOptionsReal("-checkpoint_wall", "Checkpoint every S seconds of wall time (0: off)", nullptr,
-                             wall, &wall, nullptr));
-  PetscCall(PetscOptionsInt("-checkpoint_keep", "Number of newest checkpoint files kept", nullptr, keep,
-                            &keep, nullptr));
+  PetscCall(suite::optionsInt(PetscOptionsObject, "-checkpoint_every", "Checkpoint every N steps (0: off)",
+                              nullptr, every, &every, nullptr));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-checkpoint_wall",
+                               "Checkpoint every S seconds of wall time (0: off)", nullptr, wall, &wall,
+                               nullptr));
+  PetscCall(suite::optionsInt(PetscOptionsObject, "-checkpoint_keep",
+                              "Number of newest checkpoint files kept", nullptr, keep, &keep, nullptr));
   PetscCall(PetscOptionsString("-restart", "Checkpoint file to restart from, or 'latest' in -checkpoint_dir",
                                nullptr, restart, restart, sizeof restart, nullptr));
   PetscOptionsEnd();

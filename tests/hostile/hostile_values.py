@@ -1,0 +1,292 @@
+#!/usr/bin/env python3
+"""Hostile option values (issue #21): every option a program lists in -help, tried with nan, inf, -inf, -1, 0,
+1e308, 2^31, an empty value and a missing value (and, for file options, a binary file and a truncated HDF5 file),
+one option at a time, appended last to a small base run (PETSc takes the last occurrence).
+
+Usage: hostile_values.py PROGRAM NP
+
+Each run must end within the per-run timeout (RUN_TIMEOUT s times $SUITE_TIMEOUT_SCALE) either
+  - cleanly (exit 0, no ERROR line), or
+  - with one clean collective error: non-zero exit (not a signal), exactly one line starting with "ERROR:" and none
+    with "ERROR on rank" (every rank reads the same options, so an option error must be collective), no
+    MPI_ABORT, no crash or sanitizer text;
+and
+  - nan given to a numeric option and 2^31 given to an integer option (PetscInt is 32-bit) are refused;
+  - a failed run leaves the good output file of the base run (every hostile run would overwrite it) bitwise
+    unchanged, unless its ERROR line names that file (the suite's documented "output up to step N in OUT") and
+    the file is a valid HDF5 file; no run leaves a partial file (*.tmp, *.partial, *.probe) behind.
+The options are parsed from `PROGRAM BASE -help` up to the line "PETSc's generic options" for every base
+configuration of the program, so a new option is covered without editing this test; an option listed by several
+bases is tried with the first base that lists it.
+Cost: a run takes ~0.1 s of CPU but ~0.5 s of wall time (MPI start-up waits), so HOSTILE_JOBS (default 4) runs go
+at a time, each in its own scratch folder with its own good file. Open MPI is told to use its shared-memory
+transport (pml ob1, btl self,vader: no network probing) and to kill the other ranks of a failed job at once
+(odls_base_sigkill_timeout 0; the default 1 s wait was most of the cost of a failing run).
+Prints every failing case (command line and output tail) and a summary:
+  hostile PROGRAM np=N: R runs, F failures, T s (C s CPU; ...)
+"""
+import hashlib
+import os
+import queue
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import h5py
+
+SRC = Path(os.environ.get("SUITE_SOURCE", Path(__file__).resolve().parents[2]))
+BIN = Path(os.environ.get("SUITE_BIN", SRC / "build" / "bin"))
+DATA = Path(os.environ.get("SUITE_DATA", SRC.parent / "shared" / "data"))
+RUN_TIMEOUT = 30.0 * float(os.environ.get("SUITE_TIMEOUT_SCALE", "1"))
+JOBS = int(os.environ.get("HOSTILE_JOBS", "4"))
+
+VALUES = ["nan", "inf", "-inf", "-1", "0", "1e308", str(2**31), ""]
+MISSING = None  # the option last on the command line, without a value
+OUT = "out.h5"
+
+# Base configurations: small and fast, output OUT in the scratch folder. Several per program where -help lists
+# different options (euler: per -dim). The base bounds the run (few steps, -max_walltime) so that a huge value of
+# one option (an end time, a step count) still ends in time.
+BASES = {
+    "euler": [
+        ["-dim", "1", "-nx", "16", "-t_final", "0.01", "-max_steps", "4", "-max_walltime", "10", "-output", OUT],
+        ["-dim", "2", "-nx", "8", "-ny", "8", "-t_final", "0.01", "-max_steps", "2", "-max_walltime", "10",
+         "-output", OUT],
+        ["-dim", "3", "-nx", "8", "-ny", "8", "-nz", "8", "-t_final", "0.01", "-max_steps", "2",
+         "-max_walltime", "10", "-output", OUT],
+    ],
+    "femdyn": [["-beam_cells", "2,1,1", "-steps", "2", "-max_walltime", "10", "-output", OUT]],
+    "contact": [["-steps", "3", "-max_walltime", "10", "-output", OUT]],
+    "lcpbench": [["-n", "4", "-count", "3", "-max_walltime", "10", "-output", OUT]],
+    "lcpcompare": [["-n", "4", "-count", "2", "-max_walltime", "10", "-output", OUT]],
+    "reorder": [["-matrix", str(DATA / "matrices" / "bcsstk01.mtx"), "-repeat", "1", "-max_walltime", "10",
+                 "-output", OUT]],
+}
+# A file option is read only in its mode: the binary and truncated files are given in that mode too.
+FILE_MODES = {"-mesh_file": ["-mesh", "file"], "-scene_file": ["-scene", "file"], "-file": ["-family", "file"],
+              "-reference": ["-error"]}
+FILE_WORDS = re.compile(r"file|path|mesh|restart|checkpoint|reference|matrix|deck|scene|directory|prefix", re.I)
+CRASH = re.compile(r"MPI_ABORT was invoked|Segmentation fault|Caught signal|terminate called|\(core dumped\)|"
+                   r"AddressSanitizer|runtime error:|LeakSanitizer|exited on signal|killed by signal")
+# mpiexec's own notice that a rank exited non-zero: not the program's output.
+MPIEXEC_NOTICE = re.compile(r"^-{20,}\n(Primary job  terminated normally.*?|mpiexec detected that one or more.*?)"
+                            r"^-{20,}\n", re.M | re.S)
+MPI_START_FAILED = re.compile(r"ompi_rte_init failed|orte_init failed|fail during orte_init|"
+                              r"before MPI_INIT completed")
+PARTIAL = re.compile(r"\.(tmp|partial|probe)$")
+
+
+def env():
+    e = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+             OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_odls_base_sigkill_timeout="0",
+             OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader")
+    return e
+
+
+def mpi(np_, prog, args):
+    return ["mpiexec", "--oversubscribe", "-n", str(np_), str(BIN / prog)] + args
+
+
+def parse_help(text):
+    """[(name, kind, help line)] of the program's own options; kind: bool, int, real, array, choice, string."""
+    text = text.split("PETSc's generic options")[0]
+    lines = text.splitlines()
+    opts = []
+    for i, line in enumerate(lines):
+        m = re.match(r"^  (-[A-Za-z0-9_]+)(:?) <([^>]*)>", line)
+        if not m:
+            continue
+        name, colon, dflt = m.groups()
+        choice = i + 1 < len(lines) and lines[i + 1].startswith("      ")
+        now = re.match(r"now (.*) : formerly", dflt)
+        pair = re.match(r"(.*) : (.*)", dflt)
+        if colon:
+            kind = "bool"
+        elif choice:
+            kind = "choice"
+        elif now:
+            kind = "int" if re.fullmatch(r"-?\d+", now.group(1).strip()) else "string"
+        elif pair:
+            kind = "real"
+        else:
+            kind = "array"
+        opts.append((name, kind, line))
+    return opts
+
+
+def is_file_option(kind, line):
+    return kind == "string" and FILE_WORDS.search(line) is not None
+
+
+def digest(path):
+    return hashlib.sha256(path.read_bytes()).hexdigest() if path.exists() else None
+
+
+def leftovers(d):
+    return sorted(str(p.relative_to(d)) for p in d.rglob("*") if PARTIAL.search(p.name))
+
+
+def judge(rc, out, name, kind, value):
+    """Why the run is not acceptable, or None."""
+    if rc is None:
+        return f"no exit within {RUN_TIMEOUT:.0f} s (hang)"
+    if rc < 0 or rc >= 128:
+        return f"killed by a signal (exit {rc})"
+    errors = [ln for ln in out.splitlines() if ln.startswith("ERROR")]
+    if CRASH.search(out):
+        return f"crash/abort text: {CRASH.search(out).group(0)!r}"
+    if rc == 0:
+        if errors:
+            return "exit 0 but an ERROR line"
+        if value == "nan" and kind in ("int", "real", "array"):
+            return "nan accepted by a numeric option"
+        if value == str(2**31) and kind == "int":
+            return "2^31 accepted by a 32-bit integer option"
+        return None
+    if len(errors) != 1 or not errors[0].startswith("ERROR:"):
+        return f"exit {rc} with {len(errors)} ERROR lines (want one 'ERROR:' line)"
+    return None
+
+
+def run(np_, prog, args, cwd):
+    """(exit code or None on a timeout, output). A run whose MPI start-up failed (Open MPI's runtime, before
+    the program's first line: seen on an overloaded machine) is not the program's answer: retried, twice at most;
+    a timeout is retried once, with 3 times the limit."""
+    for attempt in range(3):
+        try:
+            p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT * (3 if attempt else 1))
+            rc, out = p.returncode, MPIEXEC_NOTICE.sub("", p.stdout.decode(errors="replace"))
+        except subprocess.TimeoutExpired as e:
+            rc, out = None, (e.stdout or b"").decode(errors="replace")
+        # A timeout is tried once more with 3 times the limit (on an overloaded machine the runs in flight stalled
+        # together for over 30 s, each fine alone): a real hang hangs again.
+        if not ((rc is None and attempt == 0) or (rc != 0 and MPI_START_FAILED.search(out))):
+            break
+        time.sleep(1.0 + attempt)
+    return rc, out
+
+
+def valid_hdf5(path):
+    try:
+        with h5py.File(path, "r") as f:
+            f.visit(lambda name: None)
+        return True
+    except Exception:  # noqa: BLE001 (any failure to read it: not a valid file)
+        return False
+
+
+def check_output(work, rc, out, pristine):
+    """A failed run may only change the good output file if it says so (its ERROR line names the file, e.g.
+    "output up to step 3 in out.h5") and leaves a valid HDF5 file; no run leaves a partial file."""
+    good = work / OUT
+    if rc not in (None, 0) and digest(good) != pristine:
+        error = next((ln for ln in out.splitlines() if ln.startswith("ERROR")), "")
+        if OUT not in error:
+            return "a failed run changed the good output file without saying so"
+        if not valid_hdf5(good):
+            return "a failed run left an invalid output file"
+    left = leftovers(work)
+    for f in left:
+        (work / f).unlink()
+    return f"partial files left: {left}" if left else None
+
+
+class Worker:
+    """A scratch folder holding the good output file of one base run (restored before every case)."""
+
+    def __init__(self, prog, np_, base, root, k):
+        self.prog, self.np, self.base = prog, np_, base + ["-quiet"]
+        self.work = Path(tempfile.mkdtemp(prefix=f"w{k}_", dir=root))
+        rc, out = run(np_, prog, self.base, self.work)
+        if rc != 0:
+            sys.exit(f"base run failed (exit {rc}): {prog} {' '.join(self.base)}\n{out}")
+        self.pristine_bytes = (self.work / OUT).read_bytes()
+        self.pristine = digest(self.work / OUT)
+
+    def case(self, name, kind, value, mode):
+        """(command line, None or why the run is not acceptable, output)"""
+        if digest(self.work / OUT) != self.pristine:
+            (self.work / OUT).write_bytes(self.pristine_bytes)
+        args = self.base + list(mode) + [name] + ([] if value is MISSING else [value])
+        rc, out = run(self.np, self.prog, args, self.work)
+        why = judge(rc, out, name, kind, value) or check_output(self.work, rc, out, self.pristine)
+        shown = " ".join(repr(a) if a == "" or " " in a else a for a in mpi(self.np, self.prog, args))
+        return shown, why, out
+
+
+def hostile_files(root, prog, good):
+    """A binary file (a chunk of the program itself) and a truncated copy of the base run's HDF5 output."""
+    binary = root / "hostile_binary.bin"
+    binary.write_bytes((BIN / prog).read_bytes()[:8192])
+    truncated = root / "hostile_truncated.h5"
+    truncated.write_bytes(good[: max(len(good) // 2, 64)])
+    return [str(binary), str(truncated)]
+
+
+def options_of(np_, prog, base, cwd):
+    rc, text = run(np_, prog, base + ["-help"], cwd)
+    if rc != 0:
+        sys.exit(f"{prog} -help failed (exit {rc}):\n{text}")
+    return parse_help(text)
+
+
+def cases_of(opts, seen, files):
+    for name, kind, line in opts:
+        if name in seen:
+            continue
+        seen.add(name)
+        for value in VALUES + [MISSING]:
+            yield name, kind, value, ()
+        if is_file_option(kind, line):
+            for f in files:
+                yield name, kind, f, FILE_MODES.get(name, ())
+
+
+def run_base(prog, np_, base, root, seen):
+    """The cases of the options this base lists first, JOBS at a time (a run mostly waits: MPI start-up)."""
+    workers = queue.Queue()
+    for k in range(JOBS):
+        workers.put(Worker(prog, np_, base, root, k))
+    w0 = workers.queue[0]
+    files = hostile_files(root, prog, w0.pristine_bytes)
+    cases = list(cases_of(options_of(np_, prog, base, w0.work), seen, files))
+
+    def one(c):
+        w = workers.get()
+        try:
+            return w.case(*c)
+        finally:
+            workers.put(w)
+
+    with ThreadPoolExecutor(JOBS) as pool:
+        return list(pool.map(one, cases))
+
+
+def main(prog, np_):
+    t0 = time.time()
+    cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    seen, results = set(), []
+    with tempfile.TemporaryDirectory(prefix=f"hostile_{prog}_np{np_}_") as d:
+        for base in BASES[prog]:
+            results += run_base(prog, np_, base, Path(d), seen)
+    if not seen:
+        sys.exit(f"no options parsed from {prog} -help")
+    failures = [(shown, why, out) for shown, why, out in results if why]
+    for shown, why, out in failures:
+        print(f"FAIL [{why}] {shown}\n    " + "\n    ".join(out.strip().splitlines()[-8:]))
+    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = cpu1.ru_utime + cpu1.ru_stime - cpu0.ru_utime - cpu0.ru_stime
+    print(f"hostile {prog} np={np_}: {len(results)} runs, {len(failures)} failures, {time.time() - t0:.0f} s "
+          f"({cpu:.0f} s CPU; {len(seen)} options, {JOBS} runs at a time, {RUN_TIMEOUT:.0f} s limit per run)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], int(sys.argv[2])))
