@@ -127,8 +127,16 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                              "", o->characteristic, &o->characteristic, nullptr));
   PetscCall(PetscOptionsBool("-local_lf", "Local Lax-Friedrichs splitting (false: global; implicit default)",
                              "", o->local_lf, &o->local_lf, nullptr));
-  PetscCall(PetscOptionsBool("-positivity", "Hu-Adams-Shu positivity-preserving flux limiter", "",
-                             o->positivity, &o->positivity, nullptr));
+  PetscCall(
+      PetscOptionsBool("-positivity",
+                       "Hu-Adams-Shu positivity-preserving flux limiter (explicit integrators; proven for "
+                       "SSP-RK3 up to -cfl 0.5)",
+                       "", o->positivity, &o->positivity, nullptr));
+  PetscCall(
+      PetscOptionsInt("-max_retries",
+                      "Retries of a step at half dt when a stage leaves density or pressure non-positive or "
+                      "passes the positivity limiter's CFL bound (0: stop at the first)",
+                      "", o->max_retries, &o->max_retries, nullptr));
   PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
                              o->shock_threshold, &o->shock_threshold, nullptr));
   if (o->dim > 1)
