@@ -32,14 +32,16 @@ struct StageScope {
   }
 };
 
-// -log_view events of the pencil transposes (LineTranspose::gather, LineTranspose::scatter).
-PetscLogEvent transposeEvent(int which) {
-  static const std::array<PetscLogEvent, 2> ev = [] {
-    std::array<PetscLogEvent, 2> e = {-1, -1};
+// -log_view events of the pencil transposes (LineTranspose::gather, LineTranspose::scatter) and of the positivity
+// limiter (limitFaces).
+PetscLogEvent sweepEvent(int which) {
+  static const std::array<PetscLogEvent, 3> ev = [] {
+    std::array<PetscLogEvent, 3> e = {-1, -1, -1};
     PetscClassId cls = 0;
     if (PetscClassIdRegister("Euler lines", &cls) || PetscLogEventRegister("LineTransposeGath", cls, &e[0]) ||
-        PetscLogEventRegister("LineTransposeScat", cls, &e[1]))
-      e = {-1, -1};
+        PetscLogEventRegister("LineTransposeScat", cls, &e[1]) ||
+        PetscLogEventRegister("PositivityLimit", cls, &e[2]))
+      e = {-1, -1, -1};
     return e;
   }();
   return ev[which];
@@ -331,7 +333,7 @@ void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* 
   for (int l0 = 0; l0 < nlines; l0 += chunk) {
     const int cn = std::min(chunk, nlines - l0), own = tr->owned(cn);
     {
-      EventScope ev(transposeEvent(0));
+      EventScope ev(sweepEvent(0));
       tr->gather(&q[(size_t)l0 * ncell][0], NV, cn, &tq_);
     }
     th_.resize((size_t)own * (n + 1));
@@ -349,7 +351,7 @@ void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* 
     if (suite::agreeOnFailure(comm, &failure) != 0 && failure.empty())
       failure = "MPI error agreeing on a failure";
     if (!failure.empty()) throw std::runtime_error(failure);
-    EventScope ev(transposeEvent(1));
+    EventScope ev(sweepEvent(1));
     tr->scatter(&th_.data()[0][0], NV, cn, &h[(size_t)l0 * nface][0]);
   }
 }
@@ -510,6 +512,7 @@ template <int NV> void DirectionSweep<NV>::limitFaces(const V* q, int nlines, in
   using G = LineGas<NV>;
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
   const double g = opt_.gamma;
+  EventScope ev(sweepEvent(2));
   for (int l = 0; l < nlines; ++l) {
     const V* ql = q + (size_t)l * ncell;
     V* hl = h + (size_t)l * nface;
