@@ -78,6 +78,19 @@ def leblanc():
                 check(counts[0] >= 1, f"{scheme}: the retry is exercised ({counts[0]} step(s) retried)")
 
 
+def stage_retry():
+    """A stage state that is not admissible is caught inside the step (not only the final state): LeBlanc with WENO5,
+    the limiter off and -cfl 1.5 (allowed without the limiter) retries step 1 from its first stage at half dt and
+    completes positive."""
+    with tempfile.TemporaryDirectory() as d:
+        h5 = os.path.join(d, "stage.h5")
+        out = run(LEBLANC + ["-scheme", "weno5", "-positivity", "false", "-cfl", 1.5, "-output", h5])
+        check(re.search(r"step 1 retried at dt = 0.01125 \(a stage state: invalid p = ", out) is not None,
+              "step 1 retried at half dt on a non-positive stage state")
+        ok, retries, rmin, pmin = positive_finite(h5)
+        check(ok and retries >= 1, f"completes positive (min rho {rmin:.3e}, min p {pmin:.3e}), {retries} retried")
+
+
 def planar2d():
     """LeBlanc as a planar problem on a 2D grid (along x, 200 x 8 cells), enopade6 at 2 ranks: completes
     positive (the limiter's weighted directional split and the retry), L1(rho) as in 1D."""
