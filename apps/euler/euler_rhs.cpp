@@ -186,13 +186,13 @@ template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, d
   using V = std::array<double, NV>;
   DirectionSweep<NV>& sweep = sweepOf<NV>(sweep3_.get(), sweep4_.get(), sweep5_.get());
   PetscFunctionBeginUser;
-  // Max |u_d| + c over the stage state per direction, and a[3] = 1 where an explicit stage state has a cell that
-  // is not admissible (one Allreduce): the step is then retried (euler_step.cpp) and no flux is computed.
-  double a[4] = {0, 0, 0, 0};
-  if (!stageSpeeds<NV>(ul, a) && !opt_.implicit) a[3] = 1.0;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, a, 4, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
-  const double* amax = a;
-  if (a[3] > 0.0) {
+  // Max |u_d| + c over the stage state per direction, and speeds[3] = 1 where an explicit stage state has a cell
+  // that is not admissible (one Allreduce): the step is then retried (euler_step.cpp) and no flux is computed.
+  double speeds[4] = {0, 0, 0, 0};
+  if (!stageSpeeds<NV>(ul, speeds) && !opt_.implicit) speeds[3] = 1.0;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, speeds, 4, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  const double* amax = speeds;
+  if (speeds[3] > 0.0) {
     stage_rejected_ = true;
     std::fill(f, f + (size_t)localCells() * NV, 0.0);
     PetscFunctionReturn(0);
