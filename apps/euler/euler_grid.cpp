@@ -20,6 +20,7 @@ PetscErrorCode rhsCallback(TS, PetscReal t, Vec U, Vec F, void* ctx) {
 EulerRun::~EulerRun() {
   TSDestroy(&ts_);
   VecDestroy(&U_);
+  VecDestroy(&U0_);
   DMDestroy(&da_);
   for (MPI_Comm& c : line_comm_)
     if (c != MPI_COMM_NULL) MPI_Comm_free(&c);

@@ -96,6 +96,15 @@ PetscErrorCode validateOptions(const suite::RunContext& ctx, const Options& o, c
   if (!o.output.empty()) PetscCall(suite::checkOutputWritable(comm, o.output, "-output"));
   PetscCall(o.dim == 1 ? checkLine(ctx, o, line) : checkGrid(ctx, o, pr));
   PetscCheck(o.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", o.cfl);
+  // The positivity limiter's bound (lib/euler/direction_sweep.hpp): a CFL number above it is refused, not reduced.
+  PetscCheck(
+      !o.positivity || o.implicit || o.cfl <= kPositivityCfl, comm, PETSC_ERR_ARG_OUTOFRANGE,
+      "Invalid -cfl %g: the positivity limiter is proven up to -cfl %g (give -positivity false to run above "
+      "it)",
+      o.cfl, kPositivityCfl);
+  PetscCall(suite::checkIntOptionRange(comm, "-max_retries", 0));
+  PetscCheck(o.max_retries <= 30, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -max_retries %" PetscInt_FMT ": at most 30 (dt / 2^30)", o.max_retries);
   PetscCheck(o.dt >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -dt %g: must be >= 0 (0: CFL-controlled)",
              o.dt);
   PetscCheck(o.t_final > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -t_final %g: must be > 0", o.t_final);

@@ -137,9 +137,16 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscCall(suite::optionsBool(PetscOptionsObject, "-local_lf",
                                "Local Lax-Friedrichs splitting (false: global; implicit default)", "",
                                o->local_lf, &o->local_lf, nullptr));
-  PetscCall(suite::optionsBool(PetscOptionsObject, "-positivity",
-                               "Hu-Adams-Shu positivity-preserving flux limiter", "", o->positivity,
-                               &o->positivity, nullptr));
+  PetscCall(
+      suite::optionsBool(PetscOptionsObject, "-positivity",
+                         "Hu-Adams-Shu positivity-preserving flux limiter (explicit integrators; proven for "
+                         "SSP-RK3 up to -cfl 0.5)",
+                         "", o->positivity, &o->positivity, nullptr));
+  PetscCall(
+      suite::optionsInt(PetscOptionsObject, "-max_retries",
+                        "Retries of a step at half dt when a stage leaves density or pressure non-positive "
+                        "or passes the positivity limiter's CFL bound (0: stop at the first)",
+                        "", o->max_retries, &o->max_retries, nullptr));
   PetscCall(suite::optionsReal(PetscOptionsObject, "-shock_threshold",
                                "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
                                o->shock_threshold, &o->shock_threshold, nullptr));

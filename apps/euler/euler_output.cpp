@@ -88,6 +88,7 @@ PetscErrorCode EulerRun::writeRunAttributes() {
   PetscCall(out_.writeAttribute("/", "cfl", opt_.cfl));
   PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
+  PetscCall(out_.writeAttribute("/", "steps_retried", (long long)retries_));
   PetscCall(out_.writeAttribute("/", "solve_seconds", wall_solve_));
   PetscCall(out_.writeAttribute("/", "solve_cpu_seconds_rank0", cpu_solve_));
   PetscFunctionReturn(0);

@@ -16,10 +16,15 @@ PetscErrorCode EulerRun::reportConservation() {
   const char* names[5] = {"mass", "momentum_x", "momentum_y", "momentum_z", "energy"};
   for (int c = 0; c < nv(); ++c) {
     const char* name = c == nv() - 1 ? "energy" : dim() == 1 && c == 1 ? "momentum" : names[c];
-    const double scale = std::max(std::abs(totals0_[c]), 1e-300);
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                             "conservation %s: initial %.15e final %.15e rel_change %.3e", name, totals0_[c],
-                             tot[c], std::abs(tot[c] - totals0_[c]) / scale));
+    const double change = std::abs(tot[c] - totals0_[c]);
+    if (totals0_[c] == 0.0) // no scale to relate the change to (e.g. the momentum of a fluid at rest)
+      PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                               "conservation %s: initial %.15e final %.15e abs_change %.3e (initial zero)",
+                               name, totals0_[c], tot[c], change));
+    else
+      PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                               "conservation %s: initial %.15e final %.15e rel_change %.3e", name,
+                               totals0_[c], tot[c], change / std::abs(totals0_[c])));
   }
   PetscFunctionReturn(0);
 }
@@ -41,19 +46,19 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
   const double cells = (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * sum.steps, rate = cells / wall_solve_;
   const char* head =
       "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank; "
-      "rank 0 CPU %.3f s); shock rows %lld, limited faces %lld";
+      "rank 0 CPU %.3f s); steps retried %lld, shock rows %lld, limited faces %lld";
   if (dim() == 1) { // the line's counts are rank 0's
     const std::string fmt = std::string(head) + ", line solves %lld (exact fallbacks %lld)";
     PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
-                             rate / ctx_.size(), cpu_solve_, c.counts[0], c.counts[1], c.solves,
-                             c.counts[2]));
+                             rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
+                             c.solves, c.counts[2]));
   } else { // shock rows, limited faces and fallbacks summed over the ranks; the solve calls and lines are rank 0's
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, c.counts, 3, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
     const std::string fmt =
         std::string(head) + "; rank 0: %lld batched line solves of %lld lines; exact fallbacks %lld";
     PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
-                             rate / ctx_.size(), cpu_solve_, c.counts[0], c.counts[1], c.solves, c.lines,
-                             c.counts[2]));
+                             rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
+                             c.solves, c.lines, c.counts[2]));
   }
   if (!opt_.implicit) PetscFunctionReturn(0);
   PetscInt failures, rejections;
@@ -68,7 +73,7 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
 
 PetscErrorCode EulerRun::writeFinal(const suite::LoopSummary& sum) {
   PetscFunctionBeginUser;
-  step_ = sum.steps, time_ = sum.t;
+  step_ = sum.steps, time_ = sum.t, retries_ = sum.retries;
   wall_solve_ = sum.wall,
   cpu_solve_ = sum.cpu; // this rank's CPU time: the clock to trust on a loaded machine
   PetscCall(reportConservation());

@@ -159,21 +159,48 @@ void EulerRun::addGravity(const double* ul, double* f) const {
       }
 }
 
-template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, double* f) {
-  using V = std::array<double, NV>;
-  DirectionSweep<NV>& sweep = sweepOf<NV>(sweep3_.get(), sweep4_.get(), sweep5_.get());
-  PetscFunctionBeginUser;
-  // Max |u_d| + c over the cells this rank owns, per direction (one Allreduce).
-  double amax[3] = {0, 0, 0};
+// amax[d] = max |u_d| + c over the cells this rank owns; false when one of them has a density or pressure that is
+// not > 0 (or not finite).
+template <int NV> bool EulerRun::stageSpeeds(const double* ul, double amax[3]) const {
+  bool ok = true;
   for (PetscInt k = s_[2]; k < s_[2] + m_[2]; ++k)
     for (PetscInt j = s_[1]; j < s_[1] + m_[1]; ++j)
       for (PetscInt i = s_[0]; i < s_[0] + m_[0]; ++i) {
         const PetscInt off = ((k - gs_[2]) * gm_[1] + (j - gs_[1])) * gm_[0] + (i - gs_[0]);
+        const double* q = ul + (size_t)off * NV;
         double s[3];
-        waveSpeeds(ul + (size_t)off * NV, dim(), problem_.gamma, s);
+        waveSpeeds(q, dim(), problem_.gamma, s);
         for (int d = 0; d < dim(); ++d) amax[d] = std::max(amax[d], s[d]);
+        ok = ok && q[0] > 0.0 && primitive(q, dim(), problem_.gamma).p > 0.0;
       }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, amax, 3, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  return ok;
+}
+
+long long EulerRun::unattainableFaces() const {
+  return dim() == 1   ? sweep3_->stats().unattainable_faces
+         : dim() == 2 ? sweep4_->stats().unattainable_faces
+                      : sweep5_->stats().unattainable_faces;
+}
+
+template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, double* f) {
+  using V = std::array<double, NV>;
+  DirectionSweep<NV>& sweep = sweepOf<NV>(sweep3_.get(), sweep4_.get(), sweep5_.get());
+  PetscFunctionBeginUser;
+  // Max |u_d| + c over the stage state per direction, and speeds[3] = 1 where an explicit stage state has a cell
+  // that is not admissible (one Allreduce): the step is then retried (euler_step.cpp) and no flux is computed.
+  double speeds[4] = {0, 0, 0, 0};
+  if (!stageSpeeds<NV>(ul, speeds) && !opt_.implicit) speeds[3] = 1.0;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, speeds, 4, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  const double* amax = speeds;
+  if (speeds[3] > 0.0) {
+    stage_rejected_ = true;
+    std::fill(f, f + (size_t)localCells() * NV, 0.0);
+    PetscFunctionReturn(0);
+  }
+  // The positivity limiter's scaled dt/dx per direction (direction_sweep.hpp): 1D dt/dx; 2D/3D
+  // dt sum_e(amax_e/dx_e) / amax_d, the weights w_d = (dt amax_d/dx_d) / sum_e(dt amax_e/dx_e) of the split.
+  double cfl_rate = 0.0;
+  for (int d = 0; d < dim(); ++d) cfl_rate += amax[d] / dx_[d];
   std::fill(f, f + (size_t)localCells() * NV, 0.0);
   std::vector<V> q, h;
   for (int d = 0; d < dim(); ++d) {
@@ -183,7 +210,8 @@ template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, d
     otherDirections(dim(), d, &a, &b);
     const int nlines = (int)(m_[a] * m_[b]), xm = (int)m_[d];
     h.resize((size_t)nlines * (xm + 1));
-    const double lambda = opt_.positivity ? dim() * dt_limiter_ / dx_[d] : 0.0;
+    double lambda = 0.0;
+    if (opt_.positivity) lambda = dim() == 1 ? dt_limiter_ / dx_[0] : dt_limiter_ * cfl_rate / amax[d];
     try {
       sweep.faceFluxes(dim() == 1 ? ctx_.comm() : line_comm_[d], q.data(), nlines, opt_.n[d], s_[d], xm,
                        periodic_[d], amax[d] * (1.0 + 1e-12), lambda, h.data());
@@ -209,7 +237,13 @@ PetscErrorCode EulerRun::rhs(double t, Vec U, Vec F) {
   PetscCall(VecGetArrayRead(Ul, &ul));
   PetscCall(VecGetArray(F, &f));
   rhs_failure_.clear();
+  stage_rejected_ = false;
   PetscCall(dim() == 1 ? rhsImpl<3>(t, ul, f) : dim() == 2 ? rhsImpl<4>(t, ul, f) : rhsImpl<5>(t, ul, f));
+  // A non-admissible stage state (the same decision on every rank): its first bad cell names the retry.
+  if (stage_rejected_ && stage_failure_.empty()) {
+    PetscCall(findInvalidState(U, step_ + 1, t, &stage_failure_));
+    stage_failure_ = "a stage state: " + stage_failure_;
+  }
   PetscCall(VecRestoreArray(F, &f));
   PetscCall(VecRestoreArrayRead(Ul, &ul));
   PetscCall(DMRestoreLocalVector(da_, &Ul));

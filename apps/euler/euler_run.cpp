@@ -14,6 +14,7 @@ PetscErrorCode EulerRun::solve() {
   s.t_final = opt_.t_final;
   s.max_steps = opt_.max_steps;
   s.snapshot_every = opt_.snapshot_every;
+  s.max_retries = opt_.max_retries;
   suite::TimeLoop loop(ctx_, ckpt_, s);
   PetscCall(loop.run(*this));
   PetscFunctionReturn(0);

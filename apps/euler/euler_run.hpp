@@ -58,6 +58,8 @@ private:
   PetscErrorCode totals(Vec U, std::vector<double>* sum) const;
   // right-hand side (euler_rhs.cpp)
   template <int NV> PetscErrorCode rhsImpl(double t, const double* ul, double* f);
+  template <int NV> bool stageSpeeds(const double* ul, double amax[3]) const; // false: a cell not admissible
+  long long unattainableFaces() const; // DirectionSweep's count, this rank
   template <int NV>
   void gatherLines(int d, double t, const double* ul, std::vector<std::array<double, NV>>* q);
   template <int NV>
@@ -69,6 +71,10 @@ private:
   PetscErrorCode maxWaveSpeeds(Vec U, double amax[3]) const;
   double cflTimeStep(const double amax[3]) const;
   PetscErrorCode checkState(Vec U, PetscInt step, double time) const;
+  // The first non-positive density or pressure (or non-finite value) of U as checkState's message, "" if none.
+  PetscErrorCode findInvalidState(Vec U, PetscInt step, double time, std::string* message) const;
+  PetscErrorCode stepProblem(PetscInt step, double t_new, std::string* why); // after TSStep: "" to accept
+  PetscErrorCode rollBack(PetscInt step, double t);                          // the state before the step
   PetscErrorCode recordSpacetime(Vec U, double t);
   // output (euler_output.cpp, euler_energy_spectrum.cpp, euler_errors.cpp)
   PetscErrorCode primitiveFields(Vec U, std::vector<double> fields[5]) const; // rho, u, v, w, p
@@ -111,13 +117,22 @@ private:
   MPI_Comm line_comm_[3] = {MPI_COMM_NULL, MPI_COMM_NULL, MPI_COMM_NULL};
   PetscLogStage stage_lines_[3] = {0, 0, 0};
   std::string rhs_failure_; // set by rhsImpl when a line solve throws
+  // Retries of a step (euler_step.cpp): the state before the step, a stage state found non-positive (rhs, explicit
+  // integrators: its message), the limiter's unattainable faces before the step, the step being retried and its
+  // attempt.
+  Vec U0_ = nullptr;
+  std::string stage_failure_;
+  bool stage_rejected_ = false; // this rhs call's stage state was not admissible
+  long long unattainable0_ = 0;
+  PetscInt retry_step_ = -1, retry_attempt_ = 0;
   std::vector<double> totals0_;
   suite::CheckpointPolicy ckpt_;
   // output
   suite::H5Output out_;
   std::vector<std::pair<PetscInt, double>> snapshots_;
   std::vector<double> spacetime_rho_, spacetime_t_; // -spacetime_every (1D)
-  PetscInt step_ = 0; // the last completed step (messages of the right-hand side)
+  PetscInt step_ = 0;    // the last completed step (messages of the right-hand side)
+  PetscInt retries_ = 0; // steps retried at half dt (TimeLoop's summary, for the output)
   double time_ = 0.0, wall_solve_ = 0.0, cpu_solve_ = 0.0;
   struct Errors {
     bool have = false;

@@ -1,7 +1,10 @@
 // One step of the Euler run under the suite's TimeLoop (see euler_run.hpp): the CFL time step from the
 // largest wave speeds (or -dt), one TSStep of PETSc TS (an implicit step's Newton retries stay inside it), and
-// the collective check of the new state: a non-finite or non-positive density or pressure stops the job naming
-// step, time and cell.
+// the collective check of the new state. A step is retried at half dt (TimeLoop, at most -max_retries times,
+// counted in the run's summary and output) from the state before it when a stage state (explicit integrators)
+// or the new state has a non-finite or non-positive density or pressure, or when the positivity limiter met a
+// face it could not make safe (a stage above its CFL bound, lib/euler/direction_sweep.hpp). When the retries
+// are exhausted the job stops with the last attempt's message, naming step, time and cell.
 #include "euler_run.hpp"
 
 #include "core/field_check.hpp"
@@ -9,6 +12,8 @@
 #include "euler_state.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace euler_app {
 
@@ -37,7 +42,7 @@ double EulerRun::cflTimeStep(const double amax[3]) const {
   return opt_.cfl / s;
 }
 
-PetscErrorCode EulerRun::checkState(Vec U, PetscInt step, double time) const {
+PetscErrorCode EulerRun::findInvalidState(Vec U, PetscInt step, double time, std::string* message) const {
   const PetscScalar* a;
   const PetscInt ncell = localCells();
   std::vector<double> rho(ncell), u(ncell), p(ncell), x;
@@ -54,13 +59,22 @@ PetscErrorCode EulerRun::checkState(Vec U, PetscInt step, double time) const {
     for (PetscInt i = 0; i < ncell; ++i) x.push_back(problem_.lo[0] + (s_[0] + i + 0.5) * dx_[0]);
     where.global_offset = s_[0], where.coords = x.data();
   }
-  PetscCall(suite::checkAbove(ctx_.comm(), rho.data(), ncell, 1, 0, 0.0, where));
-  if (dim() == 1) {
+  PetscCall(suite::findNotAbove(ctx_.comm(), rho.data(), ncell, 1, 0, 0.0, where, message));
+  if (message->empty() && dim() == 1) {
     where.field = "u";
-    PetscCall(suite::checkFinite(ctx_.comm(), u.data(), ncell, 1, 0, where));
+    PetscCall(suite::findNonFinite(ctx_.comm(), u.data(), ncell, 1, 0, where, message));
   }
   where.field = "p";
-  PetscCall(suite::checkAbove(ctx_.comm(), p.data(), ncell, 1, 0, 0.0, where));
+  if (message->empty())
+    PetscCall(suite::findNotAbove(ctx_.comm(), p.data(), ncell, 1, 0, 0.0, where, message));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EulerRun::checkState(Vec U, PetscInt step, double time) const {
+  std::string message;
+  PetscFunctionBeginUser;
+  PetscCall(findInvalidState(U, step, time, &message));
+  PetscCheck(message.empty(), ctx_.comm(), PETSC_ERR_FP, "%s: stopping the run", message.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -113,13 +127,50 @@ PetscErrorCode EulerRun::proposeDt(PetscInt step, double t, double* dt) {
   PetscFunctionReturn(0);
 }
 
+// Why the step just taken must be retried ("" to accept it), the same on every rank: a stage state that was not
+// admissible (explicit integrators, rhs), the new state not admissible, or (positivity limiter) a face the limiter
+// could not make safe at a stage above its CFL bound; the last is accepted on the last attempt when the state is
+// admissible (the retries are for positivity, not for the bound itself).
+PetscErrorCode EulerRun::stepProblem(PetscInt step, double t_new, std::string* why) {
+  PetscFunctionBeginUser;
+  *why = stage_failure_;
+  if (why->empty()) PetscCall(findInvalidState(U_, step + 1, t_new, why));
+  if (!why->empty() || !opt_.positivity || retry_attempt_ >= opt_.max_retries) PetscFunctionReturn(0);
+  long long faces = unattainableFaces() - unattainable0_;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &faces, 1, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
+  if (faces > 0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "a stage above the positivity limiter's CFL bound %g at %lld face(s)",
+                  suite::euler::kPositivityCfl, faces);
+    *why = buf;
+  }
+  PetscFunctionReturn(0);
+}
+
+// Back to the state, time and step number before the step; TSRestartStep: a multistep integrator (BDF2) starts
+// again from this state with its one-step method.
+PetscErrorCode EulerRun::rollBack(PetscInt step, double t) {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(U0_, U_));
+  PetscCall(TSSetTime(ts_, t));
+  PetscCall(TSSetStepNumber(ts_, step));
+  PetscCall(TSRestartStep(ts_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode EulerRun::advance(PetscInt step, double t, double dt, suite::StepOutcome* out) {
   TSConvergedReason reason;
   PetscReal t_new;
+  std::string why;
   PetscFunctionBeginUser;
-  (void)t;
   step_ = step;
   dt_limiter_ = dt; // the positivity limiter's dt
+  retry_attempt_ = retry_step_ == step ? retry_attempt_ + 1 : 0;
+  retry_step_ = step;
+  if (!U0_) PetscCall(VecDuplicate(U_, &U0_));
+  PetscCall(VecCopy(U_, U0_));
+  stage_failure_.clear();
+  unattainable0_ = unattainableFaces();
   PetscCall(TSSetTimeStep(ts_, dt));
   PetscCall(TSStep(ts_));
   PetscCall(TSGetConvergedReason(ts_, &reason));
@@ -129,7 +180,16 @@ PetscErrorCode EulerRun::advance(PetscInt step, double t, double dt, suite::Step
     PetscFunctionReturn(0);
   }
   PetscCall(TSGetTime(ts_, &t_new));
-  PetscCall(checkState(U_, step + 1, t_new));
+  PetscCall(stepProblem(step, t_new, &why));
+  if (!why.empty()) { // TimeLoop retries at dt / 2 (at most -max_retries times) or stops with this message
+    PetscCall(rollBack(step, t));
+    out->status = suite::StepStatus::Retry;
+    out->message = why;
+    if (retry_attempt_ >= opt_.max_retries)
+      out->message += " (after " + std::to_string(retry_attempt_) + " retries at half dt)";
+    PetscFunctionReturn(0);
+  }
+  retry_step_ = -1;
   if (opt_.spacetime_every > 0 && (step + 1) % opt_.spacetime_every == 0)
     PetscCall(recordSpacetime(U_, t_new));
   step_ = step + 1, time_ = t_new;

@@ -57,24 +57,51 @@ std::string place(const FieldLocation& w, const Bad& bad) {
 
 } // namespace
 
-PetscErrorCode checkFinite(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride, PetscInt component,
-                           const FieldLocation& where) {
+PetscErrorCode findNonFinite(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride,
+                             PetscInt component, const FieldLocation& where, std::string* message) {
   PetscFunctionBeginUser;
   Bad bad{};
   PetscCall(firstBad(comm, data, n, stride, component, 0.0, false, where, &bad));
-  PetscCheck(bad.index < 0, comm, PETSC_ERR_FP, "non-finite %s = %g at %s: stopping the run", where.field,
-             bad.value, place(where, bad).c_str());
+  message->clear();
+  if (bad.index < 0) PetscFunctionReturn(0);
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "non-finite %s = %g at %s", where.field, bad.value,
+                place(where, bad).c_str());
+  *message = buf;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode findNotAbove(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride,
+                            PetscInt component, double floor, const FieldLocation& where,
+                            std::string* message) {
+  PetscFunctionBeginUser;
+  Bad bad{};
+  PetscCall(firstBad(comm, data, n, stride, component, floor, true, where, &bad));
+  message->clear();
+  if (bad.index < 0) PetscFunctionReturn(0);
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s %s = %g (must be > %g) at %s",
+                std::isfinite(bad.value) ? "invalid" : "non-finite", where.field, bad.value, floor,
+                place(where, bad).c_str());
+  *message = buf;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkFinite(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride, PetscInt component,
+                           const FieldLocation& where) {
+  std::string message;
+  PetscFunctionBeginUser;
+  PetscCall(findNonFinite(comm, data, n, stride, component, where, &message));
+  PetscCheck(message.empty(), comm, PETSC_ERR_FP, "%s: stopping the run", message.c_str());
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode checkAbove(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride, PetscInt component,
                           double floor, const FieldLocation& where) {
+  std::string message;
   PetscFunctionBeginUser;
-  Bad bad{};
-  PetscCall(firstBad(comm, data, n, stride, component, floor, true, where, &bad));
-  PetscCheck(bad.index < 0, comm, PETSC_ERR_FP, "%s %s = %g (must be > %g) at %s: stopping the run",
-             std::isfinite(bad.value) ? "invalid" : "non-finite", where.field, bad.value, floor,
-             place(where, bad).c_str());
+  PetscCall(findNotAbove(comm, data, n, stride, component, floor, where, &message));
+  PetscCheck(message.empty(), comm, PETSC_ERR_FP, "%s: stopping the run", message.c_str());
   PetscFunctionReturn(0);
 }
 

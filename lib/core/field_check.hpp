@@ -4,6 +4,8 @@
 
 #include <petscsys.h>
 
+#include <string>
+
 namespace suite {
 
 struct FieldLocation {
@@ -21,5 +23,13 @@ PetscErrorCode checkFinite(MPI_Comm comm, const double* data, PetscInt n, PetscI
 // Errors on all ranks if any entry is not finite or is <= floor (floor = 0 for density/pressure).
 PetscErrorCode checkAbove(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride, PetscInt component,
                           double floor, const FieldLocation& where);
+
+// The same checks without stopping: *message is what checkFinite / checkAbove would stop with (without the
+// trailing ": stopping the run"), or "" when every entry passes. Collective; the same result on every rank.
+PetscErrorCode findNonFinite(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride,
+                             PetscInt component, const FieldLocation& where, std::string* message);
+PetscErrorCode findNotAbove(MPI_Comm comm, const double* data, PetscInt n, PetscInt stride,
+                            PetscInt component, double floor, const FieldLocation& where,
+                            std::string* message);
 
 } // namespace suite

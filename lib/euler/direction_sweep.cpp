@@ -32,14 +32,16 @@ struct StageScope {
   }
 };
 
-// -log_view events of the pencil transposes (LineTranspose::gather, LineTranspose::scatter).
-PetscLogEvent transposeEvent(int which) {
-  static const std::array<PetscLogEvent, 2> ev = [] {
-    std::array<PetscLogEvent, 2> e = {-1, -1};
+// -log_view events of the pencil transposes (LineTranspose::gather, LineTranspose::scatter) and of the positivity
+// limiter (limitFaces).
+PetscLogEvent sweepEvent(int which) {
+  static const std::array<PetscLogEvent, 3> ev = [] {
+    std::array<PetscLogEvent, 3> e = {-1, -1, -1};
     PetscClassId cls = 0;
     if (PetscClassIdRegister("Euler lines", &cls) || PetscLogEventRegister("LineTransposeGath", cls, &e[0]) ||
-        PetscLogEventRegister("LineTransposeScat", cls, &e[1]))
-      e = {-1, -1};
+        PetscLogEventRegister("LineTransposeScat", cls, &e[1]) ||
+        PetscLogEventRegister("PositivityLimit", cls, &e[2]))
+      e = {-1, -1, -1};
     return e;
   }();
   return ev[which];
@@ -331,7 +333,7 @@ void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* 
   for (int l0 = 0; l0 < nlines; l0 += chunk) {
     const int cn = std::min(chunk, nlines - l0), own = tr->owned(cn);
     {
-      EventScope ev(transposeEvent(0));
+      EventScope ev(sweepEvent(0));
       tr->gather(&q[(size_t)l0 * ncell][0], NV, cn, &tq_);
     }
     th_.resize((size_t)own * (n + 1));
@@ -349,7 +351,7 @@ void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* 
     if (suite::agreeOnFailure(comm, &failure) != 0 && failure.empty())
       failure = "MPI error agreeing on a failure";
     if (!failure.empty()) throw std::runtime_error(failure);
-    EventScope ev(transposeEvent(1));
+    EventScope ev(sweepEvent(1));
     tr->scatter(&th_.data()[0][0], NV, cn, &h[(size_t)l0 * nface][0]);
   }
 }
@@ -367,7 +369,7 @@ void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, 
     scalarLinesFaceFluxes(comm, q, nlines, n, xs, xm, nown, periodic, alpha, h);
     blockLinesFaceFluxes(comm, q, n, xs, xm, nown, periodic, alpha, h);
   }
-  if (opt_.positivity && lambda > 0.0) limitFaces(q, nlines, xm, alpha, lambda, h);
+  if (opt_.positivity && lambda > 0.0) limitFaces(q, nlines, xm, lambda, h);
 }
 
 // Marks the shock rows of every line (shock_) and the lines that need the block solve (flag_, agreed over the
@@ -500,25 +502,27 @@ void DirectionSweep<NV>::blockBatchSolve(MPI_Comm comm, int nown, bool periodic,
     throw std::invalid_argument("gathered line solves (-line_solve gather) are 1D only");
 }
 
-// Hu-Adams-Shu positivity limiter on the face fluxes h of nlines lines (lambda = dt/dx scaled).
-template <int NV>
-void DirectionSweep<NV>::limitFaces(const V* q, int nlines, int xm, double alpha, double lambda, V* h) {
+// Hu-Adams-Shu positivity limiter on the face fluxes h of nlines lines (lambda = dt/dx scaled, see the header):
+// each face flux h_{j+1/2} is blended with the Lax-Friedrichs flux of its two cells, with alpha = max(|u| + c)
+// of these two cells, the least alpha of the guarantee (gas_nd.hpp), until U_j - 2 lambda h and
+// U_{j+1} + 2 lambda h have positive density and pressure. One value per face: conservative, and applied after
+// the compact solves, so they stay exact. Faces whose Lax-Friedrichs sides are not positive (possible only above
+// the CFL bound) are counted in stats_.unattainable_faces.
+template <int NV> void DirectionSweep<NV>::limitFaces(const V* q, int nlines, int xm, double lambda, V* h) {
   using G = LineGas<NV>;
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
   const double g = opt_.gamma;
+  EventScope ev(sweepEvent(2));
   for (int l = 0; l < nlines; ++l) {
     const V* ql = q + (size_t)l * ncell;
     V* hl = h + (size_t)l * nface;
     for (int k = 0; k < nface; ++k) {
       if (G::sidesPositive(ql[k + 2], ql[k + 3], lambda, g, hl[k])) continue; // the limiter would keep h
-      double a = alpha;
-      if (opt_.local_lf && !scheme_->compact) {
-        a = 0.0;
-        for (int m = 0; m < 6; ++m) a = std::max(a, G::maxSpeed(ql[k + m], g));
-        a *= 1.0 + 1e-12;
-      }
-      a = std::max(std::max(G::maxSpeed(ql[k + 2], g), G::maxSpeed(ql[k + 3], g)) * (1.0 + 1e-12), a);
-      if (G::limitPositivity(ql[k + 2], ql[k + 3], a, lambda, g, &hl[k]) < 1.0) ++stats_.limited_faces;
+      const double a = std::max(G::maxSpeed(ql[k + 2], g), G::maxSpeed(ql[k + 3], g)) * (1.0 + 1e-12);
+      bool attainable = true;
+      if (G::limitPositivity(ql[k + 2], ql[k + 3], a, lambda, g, &hl[k], &attainable) < 1.0)
+        ++stats_.limited_faces;
+      if (!attainable) ++stats_.unattainable_faces;
     }
   }
 }

@@ -2,7 +2,7 @@
 // direction) for the conservative finite-difference form dU_j/dt = -(h_{j+1/2} - h_{j-1/2}) / dx:
 // Lax-Friedrichs flux splitting (line_options.hpp), characteristic-wise rows with the direction's Roe
 // eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry, the Hu-Adams-Shu
-// positivity limiter, and for compact schemes one batched, exact, distributed solve of every line of the
+// positivity limiter (below), and for compact schemes one batched, exact, distributed solve of every line of the
 // direction (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve
 // with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). Lines split over
 // several ranks are by default moved whole to one rank each (pencil transpose, LineTranspose: per batch of lines
@@ -10,6 +10,24 @@
 // false (or fewer lines than ranks, as in 1D) the split lines are solved in place by substructuring: the
 // block/scalar decision is reduced over the ranks that share a line (one Allreduce of the line flags), then per
 // batch one Allgather and one Allreduce. Either way the messages per call are O(1) in the number of lines.
+//
+// Positivity (Hu, Adams & Shu, J. Comput. Phys. 242 (2013) 169; Zhang & Shu, J. Comput. Phys. 229 (2010) 8918).
+// One forward-Euler stage U_j - sum_d lambda_d (h_{j+1/2} - h_{j-1/2}), lambda_d = dt/dx_d, is the convex
+// combination sum_d w_d [1/2 (U_j - 2 L_d h_{j+1/2}) + 1/2 (U_j + 2 L_d h_{j-1/2})] with w_d = lambda_d A_d / S,
+// S = sum_e lambda_e A_e, A_d the stage state's max |u_d| + c, and L_d = lambda_d / w_d = S / A_d (1D: L = dt/dx).
+// faceFluxes' `lambda` is L_d. The limiter (limitFaces, after the compact solves: one value per face, so
+// conservation and the exactness of the line solves are kept) blends each face flux with the Lax-Friedrichs flux
+// of its two cells (alpha = their max |u| + c) until both half-states are admissible; then the stage is
+// admissible, whatever the scheme. It can always do so when L_d alpha <= 1/2 (gas_nd.hpp, limitPositivity), i.e.
+//     sigma = dt sum_d A_d / dx_d <= 1/2        (the stage's own CFL number, summed over the directions),
+// up to the 1e-12 safety factor on alpha. SSP-RK3 (Shu & Osher) stages are convex combinations of such
+// forward-Euler steps with the full dt, so every stage and the step keep density and pressure positive when
+// sigma <= 1/2 holds at each of the three stages. The Euler run refuses -cfl above 1/2 (kPositivityCfl) with the
+// limiter on; the stage speeds may still grow past those of the step's start, and a face whose Lax-Friedrichs
+// half-states are not admissible (stats().unattainable_faces: possible only when sigma > 1/2) makes the run retry
+// the step at half dt (apps/euler/euler_step.cpp), as does a non-positive state left by round-off. RK4 is not SSP
+// and the implicit integrators are not forward-Euler combinations: there the limiter is not proven (off by
+// default for the implicit ones) and only the retry protects the run.
 // References: Shu, ICASE report 97-65 (1997), sec. 2.3 (flux splitting, characteristic decomposition,
 // dimension-by-dimension finite differences); Ghosh & Baeder, SIAM J. Sci. Comput. 34 (2012) A1678, sec. 2.3
 // (characteristic compact rows as a block-tridiagonal system: row j+1/2 of field k is multiplied by the left
@@ -53,7 +71,7 @@ public:
   // ghosts filled), line after line. n: global cells along the direction; xs, xm: this rank's cells.
   // line_comm: the ranks sharing these lines, in line order (every rank passes the same nlines).
   // alpha: the Lax-Friedrichs speed for compact schemes and -local_lf false (max |u_n| + c of the direction).
-  // lambda = dt/dx scaled for the positivity limiter (<= 0: off). Output h: nlines x (xm + 1) face fluxes,
+  // lambda: L_d = dt/dx_d scaled for the positivity limiter, see above (<= 0: off). Output h: nlines x (xm + 1) face fluxes,
   // h[l (xm+1) + k] at x_{xs+k-1/2}. Collective on line_comm for compact schemes. Throws std::runtime_error (the
   // same on every rank of line_comm) if a line system is singular.
   void faceFluxes(MPI_Comm line_comm, const V* q, int nlines, long long n, long long xs, int xm,
@@ -88,7 +106,7 @@ private:
   void blockBatchRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                       int c0, int cn);
   void blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface, int cn);
-  void limitFaces(const V* q, int nlines, int xm, double alpha, double lambda, V* h);
+  void limitFaces(const V* q, int nlines, int xm, double lambda, V* h);
   void prepareLine(const V* q, int xm, double alpha_global);
 
   const SchemeInfo* scheme_;

@@ -166,7 +166,13 @@ template <int NV> struct LineGas {
 
   // Hu, Adams & Shu, J. Comput. Phys. 242 (2013) 169, eqs. (3.6)-(3.12): blends h with the Lax-Friedrichs
   // flux so that U_j - 2 lambda h and U_{j+1} + 2 lambda h keep positive density and pressure. Returns theta.
-  static double limitPositivity(const V& qa, const V& qb, double alpha, double lambda, double g, V* h) {
+  // *attainable (optional): whether the Lax-Friedrichs sides U_j - 2 lambda h_LF, U_{j+1} + 2 lambda h_LF have
+  // density and pressure > 0, the premise of the guarantee. It holds whenever alpha >= |u| + c of both states and
+  // lambda alpha <= 1/2: U_j - 2 lambda h_LF = (1 - 2 lambda alpha) U_j + lambda alpha (U_j - f_j / alpha)
+  // + lambda alpha (U_{j+1} - f_{j+1} / alpha), a convex combination of admissible states (U -+ f(U) / alpha is
+  // admissible for alpha >= |u| + c: Zhang & Shu, J. Comput. Phys. 229 (2010) 8918, Lemma 2); likewise the right.
+  static double limitPositivity(const V& qa, const V& qb, double alpha, double lambda, double g, V* h,
+                                bool* attainable = nullptr) {
     const V lf = laxFriedrichs(qa, qb, alpha, g);
     const V* q[2] = {&qa, &qb};
     const double s[2] = {-2.0 * lambda, 2.0 * lambda};
@@ -176,6 +182,9 @@ template <int NV> struct LineGas {
       return y;
     };
     const V lfSide[2] = {side(qa, lf, s[0]), side(qb, lf, s[1])};
+    if (attainable)
+      *attainable = lfSide[0][0] > 0.0 && lfSide[1][0] > 0.0 && pressure(lfSide[0], g) > 0.0 &&
+                    pressure(lfSide[1], g) > 0.0;
     const double eps_rho = std::min(1e-13, std::min(lfSide[0][0], lfSide[1][0]));
     const double eps_p = std::min(1e-13, std::min(pressure(lfSide[0], g), pressure(lfSide[1], g)));
     double theta = 1.0;

@@ -11,6 +11,8 @@
 namespace suite::euler {
 
 constexpr int kLineGhost = 3; // stencil half-width: ghost cells needed on each side of a rank's cells
+// The CFL number up to which the positivity limiter is proven with SSP-RK3 (direction_sweep.hpp).
+constexpr double kPositivityCfl = 0.5;
 
 struct LineOptions {
   double gamma = 1.4;
@@ -28,6 +30,9 @@ struct LineOptions {
 
 struct LineStats {
   long long shock_rows = 0, limited_faces = 0, evaluations = 0;
+  // Faces the positivity limiter could not make safe: their Lax-Friedrichs sides are not positive, which happens
+  // only above the limiter's CFL bound (direction_sweep.hpp); the Euler run retries such a step at half dt.
+  long long unattainable_faces = 0;
 };
 
 } // namespace suite::euler
