@@ -59,6 +59,15 @@ template <int NV> struct LineGas {
   // Roe-averaged eigensystem between qa and qb.
   static Eigen roe(const V& qa, const V& qb, double g) { return roe(roeState(qa, g), roeState(qb, g), g); }
   static Eigen roe(const RoeState& a, const RoeState& b, double g) {
+    Eigen e;
+    e.R.fill(0.0);
+    e.L.fill(0.0);
+    roeInto(a, b, g, &e);
+    return e;
+  }
+  // The same into *out, setting only the entries that are not zero for every state (leftZero, rightZero): the
+  // others must be zero already (a reused Eigen).
+  static void roeInto(const RoeState& a, const RoeState& b, double g, Eigen* out) {
     const double w = 1.0 / (a.sr + b.sr);
     double vel[NV - 2]; // u_n, u_t...
     for (int c = 0; c < NV - 2; ++c) vel[c] = (a.srv[c] + b.srv[c]) * w;
@@ -67,11 +76,8 @@ template <int NV> struct LineGas {
     for (int c = 0; c < NV - 2; ++c) v2 += vel[c] * vel[c];
     const double c2 = std::max((g - 1.0) * (H - 0.5 * v2), 1e-300), c = std::sqrt(c2);
     const double b1 = (g - 1.0) / c2, b2 = 0.5 * b1 * v2;
-    Eigen e;
-    e.R.fill(0.0);
-    e.L.fill(0.0);
-    auto R = [&e](int r, int col) -> double& { return e.R[r * NV + col]; };
-    auto L = [&e](int r, int col) -> double& { return e.L[r * NV + col]; };
+    auto R = [out](int r, int col) -> double& { return out->R[r * NV + col]; };
+    auto L = [out](int r, int col) -> double& { return out->L[r * NV + col]; };
     const int last = NV - 1;
     // columns 0 (u - c), 1 (u), 2.. (shear), last (u + c)
     R(0, 0) = 1.0, R(1, 0) = u - c, R(last, 0) = H - u * c;
@@ -89,7 +95,6 @@ template <int NV> struct LineGas {
       L(1, t) = b1 * vel[t - 1];
       L(t, 0) = -vel[t - 1], L(t, t) = 1.0;
     }
-    return e;
   }
   // Entries of roe()'s L (the shear rows) and R (the shear columns) that are zero for every state.
   static constexpr bool leftZero(int i, int j) { return i >= 2 && i < NV - 1 && j != 0 && j != i; }

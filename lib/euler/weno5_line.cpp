@@ -11,9 +11,14 @@ template <int NV>
 void Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_lf, bool characteristic,
                                double g, V* h) {
   prepareCells(q, nface + 5, local_lf, characteristic, g);
-  if (characteristic) r_.resize((size_t)NV * NV * nface);
+  alpha_.resize(nface);
+  for (int k = 0; k < nface; ++k) alpha_[k] = faceAlpha(k, alpha, local_lf);
+  if (characteristic) { // a loop of its own: the square roots and divisions of neighbouring faces overlap
+    if ((int)eigen_.size() < nface) eigen_.resize(nface, typename G::Eigen{}); // zeros, kept by roeInto
+    for (int k = 0; k < nface; ++k) G::roeInto(roe_[k + 2], roe_[k + 3], g, &eigen_[k]);
+  }
   st_.resize((size_t)2 * NV * 5 * nface);
-  for (int k = 0; k < nface; ++k) projectFace(k, nface, faceAlpha(k, alpha, local_lf), characteristic, g);
+  for (int k = 0; k < nface; ++k) projectFace(k, nface, characteristic);
   wenoValues(nface);
   for (int k = 0; k < nface; ++k) combineFace(k, nface, characteristic, h);
 }
@@ -44,7 +49,8 @@ template <int NV> double Weno5Line<NV>::faceAlpha(int k, double alpha, bool loca
 // The split fluxes f+ = (f + a U) / 2 of cells k .. k + 4 (lanes 0..4) and f- = (f - a U) / 2 of cells
 // k + 1 .. k + 5 (lanes 5..9), times the left eigenvectors of face k, into the stencils st_: f+ left-biased
 // (element i = cell k + i), f- mirrored (element i = cell k + 5 - i, lane 9 - i).
-template <int NV> void Weno5Line<NV>::projectFace(int k, int nface, double a, bool characteristic, double g) {
+template <int NV> void Weno5Line<NV>::projectFace(int k, int nface, bool characteristic) {
+  const double a = alpha_[k];
   double x[NV][10], y[NV][10];
   for (int j = 0; j < NV; ++j) {
     const double* f = &ft_[(size_t)j * ncell_ + k];
@@ -54,13 +60,12 @@ template <int NV> void Weno5Line<NV>::projectFace(int k, int nface, double a, bo
   }
   const double(*out)[10] = x;
   if (characteristic) {
-    const typename G::Eigen e = G::roe(roe_[k + 2], roe_[k + 3], g);
-    std::copy(e.R.begin(), e.R.end(), &r_[(size_t)NV * NV * k]);
+    const typename G::M& L = eigen_[k].L;
     for (int c = 0; c < NV; ++c) {
       for (int l = 0; l < 10; ++l) y[c][l] = 0.0;
       for (int j = 0; j < NV; ++j)
         if (!G::leftZero(c, j))
-          for (int l = 0; l < 10; ++l) y[c][l] += e.L[NV * c + j] * x[j][l];
+          for (int l = 0; l < 10; ++l) y[c][l] += L[NV * c + j] * x[j][l];
     }
     out = y;
   }
@@ -89,7 +94,7 @@ template <int NV> void Weno5Line<NV>::combineFace(int k, int nface, bool charact
     for (int i = 0; i < NV; ++i) h[k][i] = hc[i];
     return;
   }
-  const double* R = &r_[(size_t)NV * NV * k];
+  const typename G::M& R = eigen_[k].R;
   for (int i = 0; i < NV; ++i) {
     double s = 0.0;
     for (int j = 0; j < NV; ++j)

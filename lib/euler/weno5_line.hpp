@@ -28,14 +28,15 @@ public:
 private:
   void prepareCells(const V* q, int ncell, bool local_lf, bool characteristic, double g);
   double faceAlpha(int k, double alpha, bool local_lf) const;
-  void projectFace(int k, int nface, double a, bool characteristic, double g);
+  void projectFace(int k, int nface, bool characteristic);
   void wenoValues(int nface);
   void combineFace(int k, int nface, bool characteristic, V* h) const;
 
   int ncell_ = 0;
   std::vector<double> qt_, ft_, speed_; // cell-major per component: qt_[j * ncell + m]
   std::vector<typename G::RoeState> roe_;
-  std::vector<double> r_;   // per face: roe()'s R, row-major
+  std::vector<double> alpha_;                // per face: the Lax-Friedrichs speed
+  std::vector<typename G::Eigen> eigen_;     // per face: the Roe eigenvectors
   std::vector<double> st_;  // stencils: st_[((2 c + s) 5 + i) nface + k], element i of field c, sign s, face k
   std::vector<double> w_;   // WENO-Z values: w_[(2 c + s) nface + k]
 };
