@@ -51,29 +51,30 @@ template <int NV> double Weno5Line<NV>::faceAlpha(int k, double alpha, bool loca
 // (element i = cell k + i), f- mirrored (element i = cell k + 5 - i, lane 9 - i).
 template <int NV> void Weno5Line<NV>::projectFace(int k, int nface, bool characteristic) {
   const double a = alpha_[k];
-  double x[NV][10], y[NV][10];
+  double x[NV][10];
   for (int j = 0; j < NV; ++j) {
     const double* f = &ft_[(size_t)j * ncell_ + k];
     const double* u = &qt_[(size_t)j * ncell_ + k];
     for (int l = 0; l < 5; ++l) x[j][l] = 0.5 * (f[l] + a * u[l]);
     for (int l = 0; l < 5; ++l) x[j][5 + l] = 0.5 * (f[l + 1] - a * u[l + 1]);
   }
-  const double(*out)[10] = x;
-  if (characteristic) {
-    const typename G::M& L = eigen_[k].L;
-    for (int c = 0; c < NV; ++c) {
-      for (int l = 0; l < 10; ++l) y[c][l] = 0.0;
+  const double* L = characteristic ? eigen_[k].L.data() : nullptr;
+  for (int c = 0; c < NV; ++c) {
+    double y[10];
+    if (characteristic) {
+      for (int l = 0; l < 10; ++l) y[l] = 0.0;
       for (int j = 0; j < NV; ++j)
-        if (!G::leftZero(c, j))
-          for (int l = 0; l < 10; ++l) y[c][l] += L[NV * c + j] * x[j][l];
+        if (!G::leftZero(c, j)) {
+          const double lcj = L[NV * c + j];
+          for (int l = 0; l < 10; ++l) y[l] += lcj * x[j][l];
+        }
+    } else {
+      for (int l = 0; l < 10; ++l) y[l] = x[c][l];
     }
-    out = y;
+    double* sp = &st_[(size_t)(2 * c) * 5 * nface + k];
+    double* sm = &st_[(size_t)(2 * c + 1) * 5 * nface + k];
+    for (int i = 0; i < 5; ++i) sp[(size_t)i * nface] = y[i], sm[(size_t)i * nface] = y[9 - i];
   }
-  for (int c = 0; c < NV; ++c)
-    for (int i = 0; i < 5; ++i) {
-      st_[((size_t)(2 * c) * 5 + i) * nface + k] = out[c][i];
-      st_[((size_t)(2 * c + 1) * 5 + i) * nface + k] = out[c][9 - i];
-    }
 }
 
 template <int NV> void Weno5Line<NV>::wenoValues(int nface) {
