@@ -4,6 +4,7 @@
 
 #include "core/error_handler.hpp"
 #include "euler/enopade6.hpp"
+#include "euler/weno5.hpp"
 
 #include <petsclog.h>
 
@@ -132,12 +133,16 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
                                       double alpha, V* h) {
   using G = LineGas<NV>;
   const double g = opt_.gamma;
+  if (scheme_->state_riemann) { // muscl2: no flux splitting
+    for (int k = 0; k <= xm; ++k) h[k] = G::muscl2(q + k + 1, g);
+    return;
+  }
+  if (scheme_->shock_row == weno5Row && scheme_->boundary_shock == weno5Row) { // the same rows, vectorised
+    weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic, g, h);
+    return;
+  }
   prepareLine(q, xm, alpha);
   for (int k = 0; k <= xm; ++k) {
-    if (scheme_->state_riemann) {
-      h[k] = G::muscl2(q + k + 1, g);
-      continue;
-    }
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
     typename G::Eigen e;

@@ -39,6 +39,7 @@
 #include "euler/line_options.hpp"
 #include "euler/line_transpose.hpp"
 #include "euler/schemes.hpp"
+#include "euler/weno5_line.hpp"
 #include "linalg/substructured_block_lines.hpp"
 #include "linalg/tridiag_distributed.hpp"
 
@@ -122,6 +123,7 @@ private:
   std::vector<LineTranspose> transposes_; // one per line communicator (grid direction) used with transposes
   std::vector<double> tq_;                // whole lines received by this rank (LineTranspose::gather)
   std::vector<V> th_;                     // their face fluxes
+  Weno5Line<NV> weno5_;                   // lineExplicit of schemes with WENO5 rows everywhere
 };
 
 extern template class DirectionSweep<3>;

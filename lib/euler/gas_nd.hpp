@@ -45,22 +45,39 @@ template <int NV> struct LineGas {
     M R; // columns: right eigenvectors
     M L; // rows: left eigenvectors, L R = I
   };
+  // The per-state part of the Roe average: sqrt(rho), sqrt(rho) times the velocities (u_n, u_t...), sqrt(rho) H.
+  struct RoeState {
+    double sr, srv[NV - 2], srH;
+  };
+  static RoeState roeState(const V& q, double g) {
+    RoeState s;
+    s.sr = std::sqrt(q[0]);
+    for (int c = 0; c < NV - 2; ++c) s.srv[c] = s.sr * q[c + 1] / q[0];
+    s.srH = s.sr * ((q[NV - 1] + pressure(q, g)) / q[0]);
+    return s;
+  }
   // Roe-averaged eigensystem between qa and qb.
-  static Eigen roe(const V& qa, const V& qb, double g) {
-    const double ra = std::sqrt(qa[0]), rb = std::sqrt(qb[0]), w = 1.0 / (ra + rb);
+  static Eigen roe(const V& qa, const V& qb, double g) { return roe(roeState(qa, g), roeState(qb, g), g); }
+  static Eigen roe(const RoeState& a, const RoeState& b, double g) {
+    Eigen e;
+    e.R.fill(0.0);
+    e.L.fill(0.0);
+    roeInto(a, b, g, &e);
+    return e;
+  }
+  // The same into *out, setting only the entries that are not zero for every state (leftZero, rightZero): the
+  // others must be zero already (a reused Eigen).
+  static void roeInto(const RoeState& a, const RoeState& b, double g, Eigen* out) {
+    const double w = 1.0 / (a.sr + b.sr);
     double vel[NV - 2]; // u_n, u_t...
-    for (int c = 0; c < NV - 2; ++c) vel[c] = (ra * qa[c + 1] / qa[0] + rb * qb[c + 1] / qb[0]) * w;
-    const double Ha = (qa[NV - 1] + pressure(qa, g)) / qa[0], Hb = (qb[NV - 1] + pressure(qb, g)) / qb[0];
-    const double H = (ra * Ha + rb * Hb) * w, u = vel[0];
+    for (int c = 0; c < NV - 2; ++c) vel[c] = (a.srv[c] + b.srv[c]) * w;
+    const double H = (a.srH + b.srH) * w, u = vel[0];
     double v2 = 0.0;
     for (int c = 0; c < NV - 2; ++c) v2 += vel[c] * vel[c];
     const double c2 = std::max((g - 1.0) * (H - 0.5 * v2), 1e-300), c = std::sqrt(c2);
     const double b1 = (g - 1.0) / c2, b2 = 0.5 * b1 * v2;
-    Eigen e;
-    e.R.fill(0.0);
-    e.L.fill(0.0);
-    auto R = [&e](int r, int col) -> double& { return e.R[r * NV + col]; };
-    auto L = [&e](int r, int col) -> double& { return e.L[r * NV + col]; };
+    auto R = [out](int r, int col) -> double& { return out->R[r * NV + col]; };
+    auto L = [out](int r, int col) -> double& { return out->L[r * NV + col]; };
     const int last = NV - 1;
     // columns 0 (u - c), 1 (u), 2.. (shear), last (u + c)
     R(0, 0) = 1.0, R(1, 0) = u - c, R(last, 0) = H - u * c;
@@ -78,8 +95,10 @@ template <int NV> struct LineGas {
       L(1, t) = b1 * vel[t - 1];
       L(t, 0) = -vel[t - 1], L(t, t) = 1.0;
     }
-    return e;
   }
+  // Entries of roe()'s L (the shear rows) and R (the shear columns) that are zero for every state.
+  static constexpr bool leftZero(int i, int j) { return i >= 2 && i < NV - 1 && j != 0 && j != i; }
+  static constexpr bool rightZero(int i, int j) { return j >= 2 && j < NV - 1 && i != j && i != NV - 1; }
   static V mul(const M& A, const V& v) {
     V r;
     for (int i = 0; i < NV; ++i) {

@@ -5,14 +5,6 @@
 
 namespace suite::euler {
 
-namespace {
-// epsilon relative to the data scale: 1e-6 (Ghosh & Baeder 2012) times the mean square of the stencil values,
-// so that round-off-level variations (e.g. the acoustic characteristic fields of a pure entropy wave) give
-// the optimal weights instead of arbitrary ones; with arbitrary weights, compact (CRWENO) systems can become
-// ill-conditioned.
-constexpr double kEpsRel = 1e-6, kEpsAbs = 1e-40;
-} // namespace
-
 void weno5Smoothness(const double* v, double beta[3]) {
   const double t0 = v[0] - 2.0 * v[1] + v[2], s0 = v[0] - 4.0 * v[1] + 3.0 * v[2];
   const double t1 = v[1] - 2.0 * v[2] + v[3], s1 = v[1] - v[3];
@@ -27,7 +19,7 @@ void wenoZWeights(const double* v, const double d[3], double w[3]) {
   weno5Smoothness(v, beta);
   const double tau = std::abs(beta[0] - beta[2]);
   const double kEps =
-      kEpsAbs + kEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
+      kWenoEpsAbs + kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
   double sum = 0.0;
   for (int k = 0; k < 3; ++k) {
     const double q = tau / (beta[k] + kEps);
@@ -38,13 +30,7 @@ void wenoZWeights(const double* v, const double d[3], double w[3]) {
 }
 
 double weno5Value(const double* v) {
-  static const double d[3] = {0.1, 0.6, 0.3};
-  double w[3];
-  wenoZWeights(v, d, w);
-  const double q0 = (2.0 * v[0] - 7.0 * v[1] + 11.0 * v[2]) / 6.0;
-  const double q1 = (-v[1] + 5.0 * v[2] + 2.0 * v[3]) / 6.0;
-  const double q2 = (2.0 * v[2] + 5.0 * v[3] - v[4]) / 6.0;
-  return w[0] * q0 + w[1] * q1 + w[2] * q2;
+  return weno5ZValue(v[0], v[1], v[2], v[3], v[4]);
 }
 
 Row weno5Row(const double* v) {

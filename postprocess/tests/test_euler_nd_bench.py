@@ -25,6 +25,13 @@ def test_cell_rate(bench):
     assert math.isnan(bench.cell_rate(10, 3, 0.0))
 
 
+def test_ns_per_point_equation_rhs(bench):
+    # 1e6 cell updates per CPU second, 5 equations, 3 RHS per SSP-RK3 step: 1e9 / 1.5e7 ns
+    assert bench.ns_per_point_equation_rhs(1e6) == pytest.approx(1e9 / 1.5e7, rel=1e-15)
+    assert bench.ns_per_point_equation_rhs(1e6, equations=4, rhs_per_step=1) == pytest.approx(250.0, rel=1e-15)
+    assert math.isnan(bench.ns_per_point_equation_rhs(0.0))
+
+
 def test_block_average_of_a_linear_field_is_its_cell_centre_value(bench):
     # f(x, y) = 2 x + 3 y at fine cell centres of [0, 4] x [0, 1]; the average over a block of a linear field is
     # its value at the coarse cell centre.

@@ -1,0 +1,108 @@
+// The `weno5` line kernel (lib/euler/weno5_line.hpp) against the row-by-row definition of the scheme (Lax-
+// Friedrichs split fluxes of the six-cell stencil, projected on the face's Roe left eigenvectors, weno5Row for
+// f+ and its mirror for f-, back with the right eigenvectors): the same fluxes bitwise, for NV = 3, 4, 5, local
+// and global alpha, characteristic and component-wise, on a line with a shock and smooth parts. Also roeInto
+// (the reused-storage Roe eigenvectors) against roe(), and the structural zeros leftZero / rightZero.
+#include "euler/gas_nd.hpp"
+#include "euler/row.hpp"
+#include "euler/weno5.hpp"
+#include "euler/weno5_line.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace suite::euler;
+
+namespace {
+constexpr double kGamma = 1.4;
+
+// A line of n cells: a shock-like jump at the middle, smooth waves elsewhere, transverse velocities.
+template <int NV> std::vector<typename LineGas<NV>::V> testLine(int n) {
+  std::vector<typename LineGas<NV>::V> q(n);
+  for (int m = 0; m < n; ++m) {
+    const double x = (m + 0.5) / n, jump = m < n / 2 ? 1.0 : 0.125;
+    double w[NV];
+    w[0] = jump * (1.0 + 0.2 * std::sin(6.0 * x));
+    for (int c = 1; c < NV - 1; ++c) w[c] = 0.3 * c * std::cos(5.0 * x + c) - (m < n / 2 ? 0.0 : 0.4);
+    w[NV - 1] = (m < n / 2 ? 1.0 : 0.1) * (1.0 + 0.1 * std::cos(3.0 * x));
+    q[m] = LineGas<NV>::fromPrim(w, kGamma);
+  }
+  return q;
+}
+
+// The face flux between cells k + 2 and k + 3 by the row-by-row definition.
+template <int NV>
+typename LineGas<NV>::V referenceFlux(const typename LineGas<NV>::V* q, double a, bool characteristic) {
+  using G = LineGas<NV>;
+  const typename G::Eigen e = G::roe(q[2], q[3], kGamma);
+  double wp[NV][6], wm[NV][6];
+  for (int m = 0; m < 6; ++m) {
+    const typename G::V f = G::flux(q[m], kGamma);
+    typename G::V fp, fm;
+    for (int c = 0; c < NV; ++c) fp[c] = 0.5 * (f[c] + a * q[m][c]), fm[c] = 0.5 * (f[c] - a * q[m][c]);
+    if (characteristic) fp = G::mul(e.L, fp), fm = G::mul(e.L, fm);
+    for (int c = 0; c < NV; ++c) wp[c][m] = fp[c], wm[c][m] = fm[c];
+  }
+  typename G::V hc;
+  for (int c = 0; c < NV; ++c) {
+    const Row rp = weno5Row(wp[c]), rm = mirrorRow(weno5Row, wm[c]);
+    hc[c] = rp.r / rp.b + rm.r / rm.b;
+  }
+  return characteristic ? G::mul(e.R, hc) : hc;
+}
+} // namespace
+
+template <typename T> class Weno5LineTest : public ::testing::Test {};
+template <int N> struct Nv { static constexpr int value = N; };
+using Sizes = ::testing::Types<Nv<3>, Nv<4>, Nv<5>>;
+TYPED_TEST_SUITE(Weno5LineTest, Sizes);
+
+TYPED_TEST(Weno5LineTest, FluxesEqualTheRowByRowSchemeBitwise) {
+  constexpr int NV = TypeParam::value;
+  using G = LineGas<NV>;
+  const int nface = 33;
+  const auto q = testLine<NV>(nface + 5);
+  Weno5Line<NV> line;
+  for (bool local : {true, false})
+    for (bool characteristic : {true, false}) {
+      std::vector<typename G::V> h(nface);
+      line.faceFluxes(q.data(), nface, 2.5, local, characteristic, kGamma, h.data());
+      for (int k = 0; k < nface; ++k) {
+        double a = 2.5;
+        if (local) {
+          a = 0.0;
+          for (int m = 0; m < 6; ++m) a = std::max(a, G::maxSpeed(q[k + m], kGamma));
+          a *= 1.0 + 1e-12;
+        }
+        const typename G::V ref = referenceFlux<NV>(q.data() + k, a, characteristic);
+        for (int c = 0; c < NV; ++c)
+          EXPECT_EQ(h[k][c], ref[c]) << "face " << k << " component " << c << " local " << local
+                                     << " characteristic " << characteristic;
+      }
+    }
+}
+
+TYPED_TEST(Weno5LineTest, RoeIntoReusedStorageEqualsRoeAndKeepsTheStructuralZeros) {
+  constexpr int NV = TypeParam::value;
+  using G = LineGas<NV>;
+  const auto q = testLine<NV>(12);
+  typename G::Eigen reused{};
+  for (int k = 0; k + 1 < 12; ++k) {
+    const typename G::Eigen e = G::roe(q[k], q[k + 1], kGamma);
+    G::roeInto(G::roeState(q[k], kGamma), G::roeState(q[k + 1], kGamma), kGamma, &reused);
+    for (int i = 0; i < NV; ++i)
+      for (int j = 0; j < NV; ++j) {
+        EXPECT_EQ(reused.L[NV * i + j], e.L[NV * i + j]);
+        EXPECT_EQ(reused.R[NV * i + j], e.R[NV * i + j]);
+        if (G::leftZero(i, j)) {
+          EXPECT_EQ(e.L[NV * i + j], 0.0) << i << "," << j;
+        }
+        if (G::rightZero(i, j)) {
+          EXPECT_EQ(e.R[NV * i + j], 0.0) << i << "," << j;
+        }
+      }
+  }
+}
