@@ -129,8 +129,16 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                              "", o->local_lf, &o->local_lf, nullptr));
   PetscCall(PetscOptionsBool("-positivity", "Hu-Adams-Shu positivity-preserving flux limiter", "",
                              o->positivity, &o->positivity, nullptr));
-  PetscCall(PetscOptionsReal("-shock_threshold", "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
-                             o->shock_threshold, &o->shock_threshold, nullptr));
+  PetscCall(
+      PetscOptionsReal("-shock_threshold",
+                       "ENO-Pade sensor, amplitude test: a shock row needs a relative second difference "
+                       "(Jameson phi) above this",
+                       "", o->shock_threshold, &o->shock_threshold, nullptr));
+  PetscCall(
+      PetscOptionsReal("-shock_ppw",
+                       "ENO-Pade sensor, resolution test: a shock row needs data less resolved than a sine "
+                       "of this many points per wavelength (>= 4; 0: amplitude test alone)",
+                       "", o->shock_ppw, &o->shock_ppw, nullptr));
   if (o->dim > 1)
     PetscCall(PetscOptionsInt("-line_batch_mb",
                               "Memory (MiB) of one batch of block lines in the compact solves (more batches: "
