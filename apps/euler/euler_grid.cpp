@@ -94,6 +94,7 @@ PetscErrorCode EulerRun::setupSweep() {
   lo.characteristic = opt_.characteristic;
   lo.local_lf = opt_.local_lf;
   lo.shock_threshold = opt_.shock_threshold;
+  lo.shock_ppw = opt_.shock_ppw;
   lo.positivity = opt_.positivity;
   lo.gather_lines = opt_.line_solve == "gather";
   lo.transpose_lines = opt_.line_solve == "transpose";

@@ -107,6 +107,12 @@ PetscErrorCode validateOptions(const suite::RunContext& ctx, const Options& o, c
              "Invalid -max_retries %" PetscInt_FMT ": at most 30 (dt / 2^30)", o.max_retries);
   PetscCheck(o.dt >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -dt %g: must be >= 0 (0: CFL-controlled)",
              o.dt);
+  PetscCheck(o.shock_threshold >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -shock_threshold %g: must be >= 0", o.shock_threshold);
+  PetscCheck(o.shock_ppw == 0.0 || (o.shock_ppw >= 4.0 && o.shock_ppw < 1e300), comm,
+             PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -shock_ppw %g: must be >= 4 points per wavelength, or 0 (the amplitude test alone)",
+             o.shock_ppw);
   PetscCheck(o.t_final > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -t_final %g: must be > 0", o.t_final);
   PetscCheck(o.snapshot_every >= 0 && o.spacetime_every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -snapshot_every/-spacetime_every: must be >= 0");

@@ -147,9 +147,16 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                         "Retries of a step at half dt when a stage leaves density or pressure non-positive "
                         "or passes the positivity limiter's CFL bound (0: stop at the first)",
                         "", o->max_retries, &o->max_retries, nullptr));
-  PetscCall(suite::optionsReal(PetscOptionsObject, "-shock_threshold",
-                               "ENO-Pade switch threshold (0: CRWENO rows everywhere)", "",
-                               o->shock_threshold, &o->shock_threshold, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-shock_threshold",
+                         "ENO-Pade sensor, amplitude test: a shock row needs a relative second difference "
+                         "(Jameson phi) above this",
+                         "", o->shock_threshold, &o->shock_threshold, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-shock_ppw",
+                         "ENO-Pade sensor, resolution test: a shock row needs data less resolved than a sine "
+                         "of this many points per wavelength (>= 4; 0: amplitude test alone)",
+                         "", o->shock_ppw, &o->shock_ppw, nullptr));
   if (o->dim > 1)
     PetscCall(
         suite::optionsInt(PetscOptionsObject, "-line_batch_mb",

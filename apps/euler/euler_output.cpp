@@ -1,5 +1,5 @@
 // Euler HDF5 output for -dim 1|2|3: snapshots and the final state as primitive fields in ((z,) (y,) x) array
-// order written collectively (1D: rho, u, p; 2D/3D: rho, u, v, w, p), cell centres /grid/x[, y, z], the run's
+// order written collectively (1D: rho, u, p; 2D/3D: rho, u, v, w, p; enopade6: the shock-row flags), cell centres /grid/x[, y, z], the run's
 // attributes, and the XDMF sidecar of every snapshot plus the final state. What only one layout has: 1D the
 // per-quantity totals and errors as root attributes, /exact and the x-t image /spacetime; 2D/3D the totals as
 // arrays, /errors and the energy spectra.
@@ -42,8 +42,9 @@ PetscErrorCode EulerRun::primitiveFields(Vec U, std::vector<double> fields[5]) c
   PetscFunctionReturn(0);
 }
 
-// group/rho, group/u, ..., group/p: 1D rho, u, p; 2D/3D all five (w = 0 in 2D).
-PetscErrorCode EulerRun::writeFields(const std::string& group, Vec U) {
+// group/rho, group/u, ..., group/p: 1D rho, u, p; 2D/3D all five (w = 0 in 2D); group/shock, the ENO-Pade
+// shock rows of this state (euler_shock_flags.cpp), for enopade6. t: the state's time (boundary ghosts).
+PetscErrorCode EulerRun::writeFields(const std::string& group, Vec U, double t) {
   std::vector<double> fields[5];
   suite::Dims dims, start, count;
   PetscFunctionBeginUser;
@@ -53,6 +54,10 @@ PetscErrorCode EulerRun::writeFields(const std::string& group, Vec U) {
     if (dim() > 1 || f == 0 || f == 1 || f == 4)
       PetscCall(
           out_.writeDistributed(group + "/" + kFieldNames[f], fields[f].data(), dims, start, count, ""));
+  if (hasShockFlags()) {
+    PetscCall(shockFlags(U, t, &fields[0]));
+    PetscCall(out_.writeDistributed(group + "/shock", fields[0].data(), dims, start, count, ""));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -62,7 +67,7 @@ PetscErrorCode EulerRun::writeSnapshot(PetscInt step, double t) {
   if (!out_.isOpen()) PetscCall(out_.open(ctx_.comm(), opt_.output));
   char group[64];
   PetscCall(PetscSNPrintf(group, sizeof(group), "/snapshots/%06" PetscInt_FMT, step));
-  PetscCall(writeFields(group, U_));
+  PetscCall(writeFields(group, U_, t));
   if (opt_.spectrum) PetscCall(writeSpectrum(std::string(group) + "/spectrum"));
   PetscCall(out_.writeAttribute(group, "time", t));
   PetscCall(out_.writeAttribute(group, "step", (long long)step));
@@ -89,6 +94,12 @@ PetscErrorCode EulerRun::writeRunAttributes() {
   PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "steps_retried", (long long)retries_));
+  if (hasShockFlags()) {
+    PetscCall(out_.writeAttribute("/", "shock_threshold", opt_.shock_threshold));
+    PetscCall(out_.writeAttribute("/", "shock_ppw", opt_.shock_ppw));
+    PetscCall(out_.writeAttribute("/", "shock_rows", shock_rows_[0]));
+    PetscCall(out_.writeAttribute("/", "shock_sensor_rows", shock_rows_[1]));
+  }
   PetscCall(out_.writeAttribute("/", "solve_seconds", wall_solve_));
   PetscCall(out_.writeAttribute("/", "solve_cpu_seconds_rank0", cpu_solve_));
   PetscFunctionReturn(0);
@@ -154,6 +165,7 @@ PetscErrorCode EulerRun::writeXdmf() {
     suite::XdmfStep s{t, {}};
     for (int f = 0; f < 5; ++f)
       if (f < 1 + dim() || f == 4) s.attributes.push_back({kFieldNames[f], g + "/" + kFieldNames[f], true});
+    if (hasShockFlags()) s.attributes.push_back({"shock", g + "/shock", true});
     return s;
   };
   for (const auto& s : snapshots_) {
@@ -185,7 +197,7 @@ PetscErrorCode EulerRun::writeOutput() {
     for (PetscInt i = 0; i < opt_.n[d]; ++i) xc[i] = problem_.lo[d] + (i + 0.5) * dx_[d];
     PetscCall(out_.writeReplicated(axes[d], xc.data(), {(unsigned long long)xc.size()}, ""));
   }
-  PetscCall(writeFields("/final", U_));
+  PetscCall(writeFields("/final", U_, time_));
   PetscCall(writeXdmf());
   PetscCall(out_.commit(&ctx_));
   PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: wrote %s and %s", opt_.output.c_str(),

@@ -33,21 +33,32 @@ namespace {
 struct SweepCounts {
   long long counts[3]; // shock rows, limited faces, exact fallbacks of the line solves
   long long solves, lines;
+  long long sensor_rows; // rows the ENO-Pade sensor examined
 };
 template <int NV> SweepCounts countsOf(const suite::euler::DirectionSweep<NV>& s) {
-  return {
-      {s.stats().shock_rows, s.stats().limited_faces, s.lineFallbacks()}, s.lineSolves(), s.linesSolved()};
+  return {{s.stats().shock_rows, s.stats().limited_faces, s.lineFallbacks()},
+          s.lineSolves(),
+          s.linesSolved(),
+          s.stats().sensor_rows};
 }
 } // namespace
 
 PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
   PetscFunctionBeginUser;
   SweepCounts c = dim() == 1 ? countsOf(*sweep3_) : dim() == 2 ? countsOf(*sweep4_) : countsOf(*sweep5_);
+  // Shock rows and the rows examined, summed over the ranks (each rank examines its own rows) in every dim.
+  long long rows[2] = {c.counts[0], c.sensor_rows};
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, rows, 2, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
+  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                           "euler: shock sensor: %lld shock rows of %lld rows examined (fraction %.3e)",
+                           rows[0], rows[1], rows[1] > 0 ? (double)rows[0] / (double)rows[1] : 0.0));
+  if (dim() == 1) c.counts[0] = rows[0];
+  shock_rows_[0] = rows[0], shock_rows_[1] = rows[1]; // for the output's attributes
   const double cells = (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * sum.steps, rate = cells / wall_solve_;
   const char* head =
       "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank; "
       "rank 0 CPU %.3f s); steps retried %lld, shock rows %lld, limited faces %lld";
-  if (dim() == 1) { // the line's counts are rank 0's
+  if (dim() == 1) { // the line's counts are rank 0's, but for the shock rows (summed)
     const std::string fmt = std::string(head) + ", line solves %lld (exact fallbacks %lld)";
     PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],

@@ -24,21 +24,6 @@ int frameComponent(int dim, int d, int c) {
   return 1 + other;
 }
 
-// The two directions other than d (b = 2 with one cell when the grid has fewer dimensions).
-void otherDirections(int dim, int d, int* a, int* b) {
-  *a = d == 0 ? 1 : 0;
-  *b = dim == 3 ? (d == 2 ? 1 : 2) : 2;
-}
-
-template <int NV>
-DirectionSweep<NV>& sweepOf(DirectionSweep<3>* s3, DirectionSweep<4>* s4, DirectionSweep<5>* s5) {
-  if constexpr (NV == 3)
-    return *s3;
-  else if constexpr (NV == 4)
-    return *s4;
-  else
-    return *s5;
-}
 } // namespace
 
 // Ghost cells of line (ja, jb) of direction d outside a non-periodic domain, from the boundary conditions.
@@ -184,7 +169,7 @@ long long EulerRun::unattainableFaces() const {
 
 template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, double* f) {
   using V = std::array<double, NV>;
-  DirectionSweep<NV>& sweep = sweepOf<NV>(sweep3_.get(), sweep4_.get(), sweep5_.get());
+  DirectionSweep<NV>& sweep = sweepOf<NV>();
   PetscFunctionBeginUser;
   // Max |u_d| + c over the stage state per direction, and speeds[3] = 1 where an explicit stage state has a cell
   // that is not admissible (one Allreduce): the step is then retried (euler_step.cpp) and no flux is computed.
@@ -226,6 +211,11 @@ template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, d
   addGravity(ul, f);
   PetscFunctionReturn(0);
 }
+
+// The line layout is also the shock flags' (euler_shock_flags.cpp).
+template void EulerRun::gatherLines<3>(int, double, const double*, std::vector<std::array<double, 3>>*);
+template void EulerRun::gatherLines<4>(int, double, const double*, std::vector<std::array<double, 4>>*);
+template void EulerRun::gatherLines<5>(int, double, const double*, std::vector<std::array<double, 5>>*);
 
 PetscErrorCode EulerRun::rhs(double t, Vec U, Vec F) {
   Vec Ul;

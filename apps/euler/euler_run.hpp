@@ -48,6 +48,14 @@ private:
   int dim() const { return opt_.dim; }
   int nv() const { return opt_.nv(); }
   PetscInt localCells() const { return m_[0] * m_[1] * m_[2]; }
+  template <int NV> suite::euler::DirectionSweep<NV>& sweepOf() {
+    if constexpr (NV == 3)
+      return *sweep3_;
+    else if constexpr (NV == 4)
+      return *sweep4_;
+    else
+      return *sweep5_;
+  }
   // grid (euler_grid.cpp)
   PetscErrorCode setupGrid();
   PetscErrorCode setupLineComms();
@@ -78,7 +86,12 @@ private:
   PetscErrorCode recordSpacetime(Vec U, double t);
   // output (euler_output.cpp, euler_energy_spectrum.cpp, euler_errors.cpp)
   PetscErrorCode primitiveFields(Vec U, std::vector<double> fields[5]) const; // rho, u, v, w, p
-  PetscErrorCode writeFields(const std::string& group, Vec U);
+  PetscErrorCode writeFields(const std::string& group, Vec U, double t);
+  // ENO-Pade shock rows of the state U per cell (euler_shock_flags.cpp): bit d set when a face of the cell in
+  // direction d is a shock row; false for schemes without the switch (nothing to write).
+  bool hasShockFlags() const;
+  PetscErrorCode shockFlags(Vec U, double t, std::vector<double>* flags);
+  template <int NV> void shockFlagsImpl(double t, const double* ul, std::vector<double>* flags);
   PetscErrorCode writeOutput();
   PetscErrorCode writeRunAttributes();
   PetscErrorCode writeLineResults();
@@ -131,8 +144,9 @@ private:
   suite::H5Output out_;
   std::vector<std::pair<PetscInt, double>> snapshots_;
   std::vector<double> spacetime_rho_, spacetime_t_; // -spacetime_every (1D)
-  PetscInt step_ = 0;    // the last completed step (messages of the right-hand side)
-  PetscInt retries_ = 0; // steps retried at half dt (TimeLoop's summary, for the output)
+  PetscInt step_ = 0;                // the last completed step (messages of the right-hand side)
+  PetscInt retries_ = 0;             // steps retried at half dt (TimeLoop's summary, for the output)
+  long long shock_rows_[2] = {0, 0}; // shock rows, rows the sensor examined (all ranks; reportStatistics)
   double time_ = 0.0, wall_solve_ = 0.0, cpu_solve_ = 0.0;
   struct Errors {
     bool have = false;

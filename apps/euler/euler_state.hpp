@@ -1,6 +1,7 @@
 // Conversions of one cell's state for -dim 1|2|3: conserved q = (rho, m_x[, m_y[, m_z]], E) <-> primitive
-// PrimN, and the wave speeds |u_d| + c. In 1D they are gas.hpp's line formulas (the exact floating-point
-// expressions the 1D results were produced with); in 2D/3D the formulas of the direction-split grid.
+// PrimN, the wave speeds |u_d| + c, the directions across a grid line. In 1D they are gas.hpp's line formulas
+// (the exact floating-point expressions the 1D results were produced with); in 2D/3D the formulas of the
+// direction-split grid.
 #pragma once
 
 #include "euler/gas.hpp"
@@ -47,6 +48,13 @@ inline void waveSpeeds(const double* q, int dim, double gamma, double s[3]) {
   const PrimN w = primitive(q, dim, gamma);
   const double cs = std::sqrt(std::abs(gamma * w.p / w.rho));
   for (int d = 0; d < dim; ++d) s[d] = std::abs(w.u[d]) + cs;
+}
+
+// The two directions other than d (b = 2 with one cell when the grid has fewer dimensions): the lines of
+// direction d are ordered by (b, a), a fastest.
+inline void otherDirections(int dim, int d, int* a, int* b) {
+  *a = d == 0 ? 1 : 0;
+  *b = dim == 3 ? (d == 2 ? 1 : 2) : 2;
 }
 
 } // namespace euler_app

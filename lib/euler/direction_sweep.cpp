@@ -154,29 +154,57 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
   }
 }
 
-// Marks the shock rows of a line (shock[k] for its nown owned rows; boundary rows are explicit closures, never
-// shock rows here) and returns whether any is a compact shock row, i.e. the line needs the block solve.
 template <int NV>
-bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown,
-                                         bool periodic, char* shock) {
+DirectionSweep<NV>::DirectionSweep(const SchemeInfo* scheme, const LineOptions& options)
+    : scheme_(scheme), opt_(options), theta_(shockResolutionRatio(options.shock_ppw)) {}
+
+// The ENO-Pade sensor (enopade6.hpp) on rows 0 .. nrow-1 of a line of ncell cells (row k reads cells
+// k .. k+5): shock[k], never at a boundary face; returns whether any row is a shock row.
+template <int NV>
+bool DirectionSweep<NV>::markShockRows(const V* q, int ncell, long long n, long long xs, int nrow,
+                                       bool periodic, char* shock) {
   using G = LineGas<NV>;
-  if (!scheme_->hybrid) { // CRWENO rows everywhere
-    for (int k = 0; k < nown; ++k) shock[k] = !boundaryFace(periodic, xs + k, n);
-    return true;
-  }
-  rho_.resize(ncell); // the line's cells (nown may count the closing boundary face, which reads none)
+  rho_.resize(ncell);
   p_.resize(ncell);
   for (int m = 0; m < ncell; ++m) {
     rho_[m] = q[m][0];
     p_[m] = G::pressure(q[m], opt_.gamma);
   }
   bool any = false;
-  for (int k = 0; k < nown; ++k) {
+  for (int k = 0; k < nrow; ++k) {
     shock[k] = !boundaryFace(periodic, xs + k, n) &&
-               enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold);
-    if (shock[k]) ++stats_.shock_rows, any = true;
+               enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold, theta_);
+    any = any || shock[k];
   }
   return any;
+}
+
+// Marks the shock rows of a line (shock[k] for its nown owned rows; boundary rows are explicit closures, never
+// shock rows here) and returns whether any is a compact shock row, i.e. the line needs the block solve.
+template <int NV>
+bool DirectionSweep<NV>::lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown,
+                                         bool periodic, char* shock) {
+  if (!scheme_->hybrid) { // CRWENO rows everywhere
+    for (int k = 0; k < nown; ++k) shock[k] = !boundaryFace(periodic, xs + k, n);
+    return true;
+  }
+  const bool any = markShockRows(q, ncell, n, xs, nown, periodic, shock);
+  stats_.sensor_rows += nown;
+  for (int k = 0; k < nown; ++k) stats_.shock_rows += shock[k];
+  return any;
+}
+
+template <int NV>
+void DirectionSweep<NV>::shockFaces(const V* q, int nlines, long long n, long long xs, int xm, bool periodic,
+                                    char* shock) {
+  const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  for (int l = 0; l < nlines; ++l) {
+    char* sl = shock + (size_t)l * nface;
+    if (scheme_->hybrid)
+      markShockRows(q + (size_t)l * ncell, ncell, n, xs, nface, periodic, sl);
+    else
+      std::fill(sl, sl + nface, 0);
+  }
 }
 
 // Zeroes block row k of the NV x NV blocks A, B, C of one split-flux system.

@@ -66,7 +66,7 @@ public:
   using V = typename LineGas<NV>::V;
   static constexpr int kGhost = kLineGhost;
 
-  DirectionSweep(const SchemeInfo* scheme, const LineOptions& options) : scheme_(scheme), opt_(options) {}
+  DirectionSweep(const SchemeInfo* scheme, const LineOptions& options);
 
   // q: nlines lines of xm + 2 kGhost states each (cells xs-3 .. xs+xm+2 of the line, in the line's frame,
   // ghosts filled), line after line. n: global cells along the direction; xs, xm: this rank's cells.
@@ -77,6 +77,11 @@ public:
   // same on every rank of line_comm) if a line system is singular.
   void faceFluxes(MPI_Comm line_comm, const V* q, int nlines, long long n, long long xs, int xm,
                   bool periodic, double alpha, double lambda, V* h);
+
+  // ENO-Pade shock rows of nlines lines laid out as for faceFluxes, at all xm + 1 faces of each (boundary faces
+  // of a non-periodic line are explicit closures: 0): shock[l (xm+1) + k] = 1 at a shock row. Only the sensor
+  // (no solve, no statistics, nothing collective); all 0 for schemes without the switch.
+  void shockFaces(const V* q, int nlines, long long n, long long xs, int xm, bool periodic, char* shock);
 
   const LineStats& stats() const { return stats_; }
   // Line solves (batched calls, or one per line with -line_solve gather) and their exact fallbacks.
@@ -95,6 +100,7 @@ private:
   void lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, V* h);
   bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
                        char* shock);
+  bool markShockRows(const V* q, int ncell, long long n, long long xs, int nrow, bool periodic, char* shock);
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                        const char* shocks, CompactLineRows out);
   // Steps of linesFaceFluxes for compact schemes.
@@ -112,6 +118,7 @@ private:
 
   const SchemeInfo* scheme_;
   LineOptions opt_;
+  double theta_; // resolution threshold of the shock sensor (from opt_.shock_ppw)
   LineStats stats_;
   linalg::SubstructuredBlockLines lines_;
   linalg::DistributedTridiag gather_; // LineOptions::gather_lines

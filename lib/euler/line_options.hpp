@@ -3,7 +3,8 @@
 // over the direction; compact schemes always use the global alpha: a compact row couples h+- of its neighbours,
 // which must be split with the same alpha, otherwise the alpha U parts of f+ and f- no longer cancel and the
 // scheme is inconsistent — measured: Sod N = 200 L1(rho) 5.5e-3 with per-row alpha vs 2.4e-3 with the global
-// one), characteristic-wise or component-wise rows, the ENO-Pade switch threshold, the positivity limiter.
+// one), characteristic-wise or component-wise rows, the ENO-Pade shock sensor's amplitude threshold and
+// resolution (points per wavelength; enopade6.hpp), the positivity limiter.
 #pragma once
 
 #include <cstddef>
@@ -16,9 +17,10 @@ constexpr double kPositivityCfl = 0.5;
 
 struct LineOptions {
   double gamma = 1.4;
-  bool characteristic = true; // false: component-wise rows
-  bool local_lf = true;       // false: global Lax-Friedrichs alpha
-  double shock_threshold = 0.02;
+  bool characteristic = true;    // false: component-wise rows
+  bool local_lf = true;          // false: global Lax-Friedrichs alpha
+  double shock_threshold = 0.02; // ENO-Pade sensor: amplitude test (Jameson phi)
+  double shock_ppw = 8.0;        // ENO-Pade sensor: resolution test, points per wavelength (0: off)
   bool positivity = true;
   bool gather_lines = false; // true: gather each line to every rank (DistributedTridiag), for comparison
   // Compact schemes, lines split over the ranks of a line communicator with at least as many lines as ranks:
@@ -29,7 +31,8 @@ struct LineOptions {
 };
 
 struct LineStats {
-  long long shock_rows = 0, limited_faces = 0, evaluations = 0;
+  // shock_rows of the rows the ENO-Pade sensor examined (sensor_rows: every row of every line, hybrid schemes)
+  long long shock_rows = 0, sensor_rows = 0, limited_faces = 0, evaluations = 0;
   // Faces the positivity limiter could not make safe: their Lax-Friedrichs sides are not positive, which happens
   // only above the limiter's CFL bound (direction_sweep.hpp); the Euler run retries such a step at half dt.
   long long unattainable_faces = 0;

@@ -84,11 +84,37 @@ TEST(EulerReconstruction, EnoPadeShockRowsKeepFifthOrderAtCriticalPoints) {
 }
 
 TEST(EulerReconstruction, ShockSensorQuietOnSmoothLoudOnJump) {
+  EXPECT_DOUBLE_EQ(shockResolutionRatio(6.0), 0.5); // 4 sin^2(pi/6) / (1 + 2 cos(pi/3))
+  const double theta = shockResolutionRatio(8.0);   // the default -shock_ppw
   double rho[6], p[6] = {1, 1, 1, 1, 1, 1};
   for (int m = 0; m < 6; ++m) rho[m] = 1.0 + 0.2 * std::sin(M_PI * (-1.0 + (m + 0.5) * 0.1)); // N = 20 wave
-  EXPECT_FALSE(enoPadeShockRow(rho, p, 0.02));
-  const double jump[6] = {1, 1, 1, 0.125, 0.125, 0.125};
-  EXPECT_TRUE(enoPadeShockRow(jump, p, 0.02));
+  EXPECT_FALSE(enoPadeShockRow(rho, p, 0.02, theta));
+  // A jump at any of the five faces the row's stencil holds makes a shock row, in rho (contact) or p.
+  for (int f = 0; f < 5; ++f) {
+    double jump[6];
+    for (int m = 0; m < 6; ++m) jump[m] = m <= f ? 1.0 : 0.125;
+    EXPECT_TRUE(enoPadeShockRow(jump, p, 0.02, theta)) << "jump after cell " << f;
+    EXPECT_TRUE(enoPadeShockRow(p, jump, 0.02, theta)) << "jump after cell " << f;
+  }
+  // An under-resolved smooth bump (the 32^2 isentropic vortex: a Gaussian density dip of depth 0.5 and 2.26
+  // cells standard deviation) at every offset: the amplitude test alone (-shock_ppw 0) flags it, the
+  // resolution test does not.
+  bool amplitude_alone = false;
+  for (int s = 0; s < 20; ++s)
+    for (int m = 0; m < 6; ++m) {
+      const double x = (m - 12 + 0.5 * s) / 2.26;
+      rho[m] = 1.0 - 0.5 * std::exp(-0.5 * x * x);
+      if (m == 5) {
+        EXPECT_FALSE(enoPadeShockRow(rho, p, 0.02, theta)) << "offset " << s;
+        amplitude_alone = amplitude_alone || enoPadeShockRow(rho, p, 0.02, 0.0);
+      }
+    }
+  EXPECT_TRUE(amplitude_alone);
+  // Grid-scale noise of small amplitude (1e-4): the resolution test fires, the amplitude test does not.
+  for (int m = 0; m < 6; ++m) rho[m] = 0.4 + (m % 2 ? 1e-4 : -1e-4);
+  EXPECT_FALSE(enoPadeShockRow(rho, p, 0.02, theta));
+  rho[2] = std::nan("");
+  EXPECT_TRUE(enoPadeShockRow(rho, p, 0.02, theta));
 }
 
 TEST(EulerExactRiemann, ToroTable4_2) {
