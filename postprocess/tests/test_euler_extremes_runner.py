@@ -32,6 +32,12 @@ def test_conservation_error_is_relative(ee):
     assert ee.conservation_error(0.0, 0.0) == 0.0
 
 
+def test_conservation_tolerance_is_a_random_walk_of_roundings(ee):
+    eps = 2.220446049250313e-16
+    assert ee.conservation_tolerance(200, 200) == pytest.approx(100 * eps * 200, rel=1e-14)
+    assert ee.conservation_tolerance(64000, 100) == pytest.approx(100 * eps * 2529.822128, rel=1e-9)
+
+
 def test_retries_from_output_or_attribute(ee):
     assert ee.retries_of("implicit: 0 Newton failures, 3 steps retried at half the time step", {}) == 3
     assert ee.retries_of("no retry line", {"steps_retried": 2}) == 2
