@@ -1,4 +1,4 @@
-// Exact Riemann solver for the ideal-gas Euler equations (Toro 2009, ch. 4).
+// Exact Riemann solver for the ideal-gas Euler equations (Toro 2009, ch. 4; vacuum cases sec. 4.6).
 #include "euler/exact_riemann.hpp"
 
 #include <algorithm>
@@ -7,15 +7,28 @@
 
 namespace suite::euler {
 
+namespace {
+bool isVacuum(const Prim& w) {
+  return w.rho == 0.0 && w.p == 0.0;
+}
+bool isGas(const Prim& w) {
+  return w.rho > 0 && w.p >= 0 && std::isfinite(w.rho + w.u + w.p);
+}
+} // namespace
+
 ExactRiemann::ExactRiemann(const Prim& left, const Prim& right, double gamma)
     : L_(left), R_(right), g_(gamma) {
-  if (!(left.rho > 0 && right.rho > 0 && left.p >= 0 && right.p >= 0 && gamma > 1))
-    throw std::invalid_argument("ExactRiemann: states need rho > 0, p >= 0 and gamma > 1");
-  cL_ = soundSpeed(L_.rho, L_.p, g_);
-  cR_ = soundSpeed(R_.rho, R_.p, g_);
+  const bool vacL = isVacuum(left), vacR = isVacuum(right);
+  if (!(gamma > 1) || !(vacL || isGas(left)) || !(vacR || isGas(right)) || (vacL && vacR))
+    throw std::invalid_argument(
+        "ExactRiemann: states need rho > 0 and p >= 0, or rho = p = 0 (vacuum) on one side, and gamma > 1");
+  if (!vacL) cL_ = soundSpeed(L_.rho, L_.p, g_);
+  if (!vacR) cR_ = soundSpeed(R_.rho, R_.p, g_);
   const double du = R_.u - L_.u;
-  if (2.0 * (cL_ + cR_) / (g_ - 1.0) <= du) { // (4.40): vacuum is generated
-    vacuum_ = true;
+  if (vacL || vacR || 2.0 * (cL_ + cR_) / (g_ - 1.0) <= du) { // sec. 4.6; generation: (4.40)
+    vacuum_ = vacR ? Vacuum::Right : vacL ? Vacuum::Left : Vacuum::Generated;
+    const double sL = L_.u + 2.0 * cL_ / (g_ - 1.0), sR = R_.u - 2.0 * cR_ / (g_ - 1.0);
+    u_star_ = vacR ? sL : vacL ? sR : 0.5 * (sL + sR);
     return;
   }
   // Two-rarefaction guess (4.46), Newton on f(p) = fL + fR + du (4.44).
@@ -52,24 +65,41 @@ double ExactRiemann::pressureFunction(double p, const Prim& w, double c, double*
   return 2.0 * c / (g_ - 1.0) * (pr - 1.0);
 }
 
-Prim ExactRiemann::sample(double s) const {
-  const double g = g_, gm = g - 1.0, gp = g + 1.0;
-  if (vacuum_) { // sec. 4.6: two rarefactions separated by vacuum
-    const double sL = L_.u + 2.0 * cL_ / gm, sR = R_.u - 2.0 * cR_ / gm;
+Prim ExactRiemann::leftFan(double s) const {
+  const double gm = g_ - 1.0, gp = g_ + 1.0;
+  const double c = 2.0 / gp * (cL_ + 0.5 * gm * (L_.u - s));
+  return {L_.rho * std::pow(c / cL_, 2.0 / gm), 2.0 / gp * (cL_ + 0.5 * gm * L_.u + s),
+          L_.p * std::pow(c / cL_, 2.0 * g_ / gm)};
+}
+
+Prim ExactRiemann::rightFan(double s) const {
+  const double gm = g_ - 1.0, gp = g_ + 1.0;
+  const double c = 2.0 / gp * (cR_ - 0.5 * gm * (R_.u - s));
+  return {R_.rho * std::pow(c / cR_, 2.0 / gm), 2.0 / gp * (-cR_ + 0.5 * gm * R_.u + s),
+          R_.p * std::pow(c / cR_, 2.0 * g_ / gm)};
+}
+
+// Right vacuum (4.76)-(4.78): left state, left fan, vacuum beyond the front sL. Left vacuum (4.79)-(4.81):
+// the mirror image. Generated vacuum (4.82)-(4.83): both fans with vacuum between the fronts sL < sR.
+Prim ExactRiemann::sampleVacuum(double s) const {
+  const double gm = g_ - 1.0;
+  const double sL = L_.u + 2.0 * cL_ / gm, sR = R_.u - 2.0 * cR_ / gm;
+  if (vacuum_ != Vacuum::Left) {
     if (s <= L_.u - cL_) return L_;
-    if (s >= R_.u + cR_) return R_;
-    if (s < sL) {
-      const double c = 2.0 / gp * (cL_ + 0.5 * gm * (L_.u - s));
-      const double rho = L_.rho * std::pow(c / cL_, 2.0 / gm);
-      return {rho, 2.0 / gp * (cL_ + 0.5 * gm * L_.u + s), L_.p * std::pow(c / cL_, 2.0 * g / gm)};
-    }
-    if (s > sR) {
-      const double c = 2.0 / gp * (cR_ - 0.5 * gm * (R_.u - s));
-      const double rho = R_.rho * std::pow(c / cR_, 2.0 / gm);
-      return {rho, 2.0 / gp * (-cR_ + 0.5 * gm * R_.u + s), R_.p * std::pow(c / cR_, 2.0 * g / gm)};
-    }
-    return {0.0, 0.5 * (sL + sR), 0.0};
+    if (s < sL) return leftFan(s);
+    if (vacuum_ == Vacuum::Right) return {0.0, sL, 0.0};
   }
+  if (vacuum_ != Vacuum::Right) {
+    if (s >= R_.u + cR_) return R_;
+    if (s > sR) return rightFan(s);
+    if (vacuum_ == Vacuum::Left) return {0.0, sR, 0.0};
+  }
+  return {0.0, 0.5 * (sL + sR), 0.0};
+}
+
+Prim ExactRiemann::sample(double s) const {
+  if (vacuum_ != Vacuum::None) return sampleVacuum(s);
+  const double g = g_, gm = g - 1.0, gp = g + 1.0;
   const double ps = p_star_, us = u_star_;
   if (s <= us) { // left of the contact
     const Prim& w = L_;
@@ -82,9 +112,7 @@ Prim ExactRiemann::sample(double s) const {
     const double cs = c * std::pow(ps / w.p, gm / (2 * g));
     if (s <= w.u - c) return w;
     if (s >= us - cs) return {w.rho * std::pow(ps / w.p, 1.0 / g), us, ps};
-    const double cf = 2.0 / gp * (c + 0.5 * gm * (w.u - s));
-    return {w.rho * std::pow(cf / c, 2.0 / gm), 2.0 / gp * (c + 0.5 * gm * w.u + s),
-            w.p * std::pow(cf / c, 2 * g / gm)};
+    return leftFan(s);
   }
   const Prim& w = R_;
   const double c = cR_;
@@ -96,9 +124,7 @@ Prim ExactRiemann::sample(double s) const {
   const double cs = c * std::pow(ps / w.p, gm / (2 * g));
   if (s >= w.u + c) return w;
   if (s <= us + cs) return {w.rho * std::pow(ps / w.p, 1.0 / g), us, ps};
-  const double cf = 2.0 / gp * (c - 0.5 * gm * (w.u - s));
-  return {w.rho * std::pow(cf / c, 2.0 / gm), 2.0 / gp * (-c + 0.5 * gm * w.u + s),
-          w.p * std::pow(cf / c, 2 * g / gm)};
+  return rightFan(s);
 }
 
 } // namespace suite::euler

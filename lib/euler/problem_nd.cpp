@@ -25,6 +25,7 @@ const EntryND kProblemsND[] = {
     {"rayleigh_taylor", createRayleighTaylorProblemND, "Rayleigh-Taylor instability under gravity"},
     {"explosion", createExplosionProblemND, "Toro's cylindrical (2D) / spherical (3D) explosion"},
     {"sedov", createExplosionProblemND, "Sedov point explosion in a cold uniform gas"},
+    {"jet", createJetProblemND, "Zhang-Shu Mach 2000 astrophysical jet, inflow on part of the left face"},
     {"taylor_green", createTaylorGreenProblemND, "Inviscid Taylor-Green vortex at Mach 0.1 (3D only)"},
 };
 

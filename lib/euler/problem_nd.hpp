@@ -66,6 +66,8 @@ PetscErrorCode createRayleighTaylorProblemND(MPI_Comm comm, const std::string& n
                                              ProblemND* problem);
 PetscErrorCode createExplosionProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                         ProblemND* problem);
+PetscErrorCode createJetProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
+                                  ProblemND* problem);
 PetscErrorCode createTaylorGreenProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                           ProblemND* problem);
 // Any 1D problem name of problem.hpp placed along `axis`.

@@ -12,6 +12,8 @@
 //   2D for gamma = 1.4) is then about 0.8 (3D) and 0.63 (2D), inside the box. Reference: Sedov, Similarity
 //   and Dimensional Methods in Mechanics (1959); setup in the style of Fryxell et al., Astrophys. J. Suppl.
 //   131 (2000) 273 (FLASH Sedov test: rho 1, p 1e-5, E 1).
+// Boundaries: outflow, or reflecting walls on every face with -closed_box (a closed box: total mass and energy are
+// conserved to round-off, and the solution is the same until a wave reaches a wall).
 // No exact solution is provided for either (compare with a fine-grid or 1D radial reference).
 #include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
@@ -26,6 +28,7 @@ PetscErrorCode createExplosionProblemND(MPI_Comm comm, const std::string& name, 
   double gamma = 1.4, radius = sedov ? 0.0625 : 0.4;
   PrimN in{1.0, {0.0, 0.0, 0.0}, 1.0}, out{0.125, {0.0, 0.0, 0.0}, 0.1};
   double energy = 1.0;
+  PetscBool closed = PETSC_FALSE;
   if (sedov) out = {1.0, {0.0, 0.0, 0.0}, 1e-5};
   PetscOptionsBegin(comm, "", sedov ? "Sedov blast options" : "Explosion options", "");
   PetscCall(suite::optionsReal(PetscOptionsObject, "-radius", "Radius of the initial charge", "", radius,
@@ -48,6 +51,9 @@ PetscErrorCode createExplosionProblemND(MPI_Comm comm, const std::string& name, 
   }
   PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma", "Ratio of specific heats", "", gamma, &gamma,
                                nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-closed_box",
+                               "Reflecting walls on every face instead of outflow", "", closed, &closed,
+                               nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
   PetscCheck(radius > 0.0 && radius < 1.0, comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -67,7 +73,7 @@ PetscErrorCode createExplosionProblemND(MPI_Comm comm, const std::string& name, 
   for (int d = 0; d < dim; ++d) {
     pr->lo[d] = -1.0;
     pr->hi[d] = 1.0;
-    pr->bc[d][0] = pr->bc[d][1] = BcN::Outflow;
+    pr->bc[d][0] = pr->bc[d][1] = closed ? BcN::Reflecting : BcN::Outflow;
     pr->default_n[d] = dim == 3 ? 64 : 200;
   }
   if (dim == 2) extrudeAlongZ(dim, pr);
