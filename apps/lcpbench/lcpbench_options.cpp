@@ -43,8 +43,11 @@ PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options*
   PetscCall(optionsValue(po, "-qrange", "q uniform in [-qrange, qrange]", &o->qrange));
   o->lower = -o->qrange; // box defaults follow the q range: a mix of free and bound variables
   o->upper = o->qrange;
-  PetscCall(optionsValue(po, "-lower", "Lower bound of random_box problems (default -qrange)", &o->lower));
-  PetscCall(optionsValue(po, "-upper", "Upper bound of random_box problems (default qrange)", &o->upper));
+  // Infinite bounds are meaningful (l = -inf, u = inf: a linear system; l = 0, u = inf: an LCP).
+  PetscCall(optionsValue(po, "-lower", "Lower bound of random_box problems (default -qrange; -inf allowed)",
+                         &o->lower, nullptr, suite::Real::or_inf));
+  PetscCall(optionsValue(po, "-upper", "Upper bound of random_box problems (default qrange; inf allowed)",
+                         &o->upper, nullptr, suite::Real::or_inf));
   PetscCall(PetscOptionsString(
       "-file", "Problem files for -family file (comma-separated; .dat Siconos, .h5 suite, FCLib HDF5)", "",
       files, files, sizeof files, nullptr));
