@@ -110,7 +110,7 @@ PetscErrorCode ContactStepping::failed(PetscInt step, const StepStats& st, suite
   const std::string why = st.message + "problem dumped to " + dump;
   failure_ = "step " + std::to_string(step) + ": " + why;
   out->status = suite::StepStatus::Failed;
-  out->message = why + " (output up to step " + std::to_string(step - 1) + " in " + o_.output + ")";
+  out->message = why; // TimeLoop adds "(output up to step N in FILE)"
   PetscFunctionReturn(0);
 }
 
@@ -177,6 +177,7 @@ PetscErrorCode run(suite::RunContext& ctx) {
   set.max_steps = o.steps;
   set.snapshot_every = o.output_every;
   set.eta_time = o.steps * o.step.dt;
+  set.output = o.output.c_str();
   suite::TimeLoop loop(ctx, policy, set);
   const PetscErrorCode ierr = loop.run(app);
   PetscCall(PetscLogStagePop());

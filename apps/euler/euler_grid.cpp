@@ -7,6 +7,8 @@
 #include "euler_state.hpp"
 #include "euler_stepper.hpp"
 
+#include <algorithm>
+
 namespace euler_app {
 
 using namespace suite::euler;
@@ -26,6 +28,48 @@ EulerRun::~EulerRun() {
     if (c != MPI_COMM_NULL) MPI_Comm_free(&c);
 }
 
+namespace {
+// 2D/3D: every rank of the process grid needs at least w cells along each direction. PETSc's DMSetUp checks this
+// on each rank alone and stops that rank (MPI_Abort). Where some rank could be that thin (n_d < w x ranks), the
+// process grid PETSc would choose (sizes and -da_processors_* as for the run) is probed on a DMDA of stencil width
+// 0 first, and a thin rank is one error for all ranks. (1D: checked with the options, naming -nx.)
+PetscErrorCode checkProcessGrid(MPI_Comm comm, int dim, const DMBoundaryType bt[3], const PetscInt n[3],
+                                PetscInt w) {
+  PetscMPIInt size;
+  DM probe;
+  const PetscInt* ranges[3] = {nullptr, nullptr, nullptr};
+  PetscInt procs[3] = {1, 1, 1};
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  bool may_be_thin = false;
+  for (int d = 0; d < dim; ++d) may_be_thin = may_be_thin || n[d] < w * size;
+  if (!may_be_thin) PetscFunctionReturn(0);
+  if (dim == 2)
+    PetscCall(DMDACreate2d(comm, bt[0], bt[1], DMDA_STENCIL_STAR, n[0], n[1], PETSC_DECIDE, PETSC_DECIDE, 1,
+                           0, nullptr, nullptr, &probe));
+  else
+    PetscCall(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, n[0], n[1], n[2], PETSC_DECIDE,
+                           PETSC_DECIDE, PETSC_DECIDE, 1, 0, nullptr, nullptr, nullptr, &probe));
+  PetscCall(DMSetFromOptions(probe));
+  PetscCall(DMSetUp(probe));
+  PetscCall(DMDAGetInfo(probe, nullptr, nullptr, nullptr, nullptr, &procs[0], &procs[1], &procs[2], nullptr,
+                        nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(probe, &ranges[0], &ranges[1], dim == 3 ? &ranges[2] : nullptr));
+  PetscInt thinnest[3] = {n[0], n[1], n[2]};
+  for (int d = 0; d < dim; ++d)
+    for (PetscInt r = 0; r < procs[d]; ++r) thinnest[d] = std::min(thinnest[d], ranges[d][r]);
+  PetscCall(DMDestroy(&probe));
+  for (int d = 0; d < dim; ++d) // the same ranges on every rank: the same decision
+    PetscCheck(thinnest[d] >= w, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-n%c %" PetscInt_FMT " over %" PetscInt_FMT " ranks along %c (process grid %" PetscInt_FMT
+               " x %" PetscInt_FMT " x %" PetscInt_FMT "): a rank would hold %" PetscInt_FMT
+               " cells, below the stencil width %" PetscInt_FMT "; use more cells or fewer ranks (or set "
+               "-da_processors_%c)",
+               'x' + d, n[d], procs[d], 'x' + d, procs[0], procs[1], procs[2], thinnest[d], w, 'x' + d);
+  PetscFunctionReturn(0);
+}
+} // namespace
+
 PetscErrorCode EulerRun::setupGrid() {
   MPI_Comm comm = ctx_.comm();
   DMBoundaryType bt[3];
@@ -38,6 +82,7 @@ PetscErrorCode EulerRun::setupGrid() {
     dx_[d] = d < dim() ? (problem_.hi[d] - problem_.lo[d]) / opt_.n[d] : 1.0;
   }
   const PetscInt w = kLineGhost, *n = opt_.n;
+  if (dim() > 1) PetscCall(checkProcessGrid(comm, dim(), bt, n, w));
   if (dim() == 1)
     PetscCall(DMDACreate1d(comm, bt[0], n[0], nv(), w, nullptr, &da_));
   else if (dim() == 2)
@@ -52,11 +97,6 @@ PetscErrorCode EulerRun::setupGrid() {
   for (int c = 0; c < nv(); ++c) PetscCall(DMDASetFieldName(da_, c, c == nv() - 1 ? "E" : fields[c]));
   PetscCall(DMDAGetCorners(da_, &s_[0], &s_[1], &s_[2], &m_[0], &m_[1], &m_[2]));
   PetscCall(DMDAGetGhostCorners(da_, &gs_[0], &gs_[1], &gs_[2], &gm_[0], &gm_[1], &gm_[2]));
-  if (dim() > 1) // 1D: checked with the options (the message names -nx and the rank count)
-    for (int d = 0; d < dim(); ++d)
-      PetscCheck(m_[d] >= w, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-                 "Each rank needs at least %d cells per direction (has %" PetscInt_FMT " along %c)", (int)w,
-                 m_[d], 'x' + d);
   PetscFunctionReturn(0);
 }
 

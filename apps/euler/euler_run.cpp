@@ -15,6 +15,7 @@ PetscErrorCode EulerRun::solve() {
   s.max_steps = opt_.max_steps;
   s.snapshot_every = opt_.snapshot_every;
   s.max_retries = opt_.max_retries;
+  s.output = opt_.output.c_str();
   suite::TimeLoop loop(ctx_, ckpt_, s);
   PetscCall(loop.run(*this));
   PetscFunctionReturn(0);

@@ -113,6 +113,10 @@ PetscErrorCode FemdynRun::checkOptions() const {
              "-beam_length %g and -beam_size %g,%g must be > 0", b.length, b.size[0], b.size[1]);
   PetscCheck(b.cells[0] >= 1 && b.cells[1] >= 1 && b.cells[2] >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-beam_cells %d,%d,%d: need at least 1 cell per direction", b.cells[0], b.cells[1], b.cells[2]);
+  PetscCheck(
+      opt_.mesh != "beam" || opt_.mesh_file.empty(), comm, PETSC_ERR_ARG_WRONG,
+      "-mesh_file %s is read only with -mesh file (the mesh is -mesh %s): add -mesh file or drop -mesh_file",
+      opt_.mesh_file.c_str(), opt_.mesh.c_str());
   PetscCheck(opt_.density > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-density %g: must be > 0", opt_.density);
   PetscCheck(opt_.is_static || opt_.dt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g: time step must be > 0",
              opt_.dt);

@@ -43,6 +43,7 @@ PetscErrorCode FemdynRun::solveDynamic() {
   set.max_steps = opt_.steps;
   set.snapshot_every = opt_.snapshot_every;
   set.eta_time = opt_.steps * opt_.dt;
+  set.output = opt_.output.c_str();
   suite::TimeLoop loop(ctx_, policy_, set);
   if (dyn.probe()) loop.addObserver(dyn.probe());
   PetscCall(loop.run(dyn));

@@ -123,6 +123,8 @@ PetscErrorCode TimeLoop::run(TimeStepped& app) {
   sum_.cpu = processCpuSeconds() - c0;
   if (policy_.enabled() && !failed && last_checkpoint_ != sum_.steps) PetscCall(checkpoint(app));
   PetscCall(app.writeFinal(sum_));
+  if (failed && set_.output[0]) // the final output holds the state after the last completed step
+    sum_.failure += " (output up to step " + std::to_string(sum_.steps) + " in " + set_.output + ")";
   PetscCheck(!failed, ctx_.comm(), PETSC_ERR_NOT_CONVERGED, "%s: step %" PetscInt_FMT " failed: %s", set_.app,
              sum_.steps + 1, sum_.failure.c_str());
   PetscFunctionReturn(0);

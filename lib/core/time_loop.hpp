@@ -90,6 +90,8 @@ struct TimeLoopSettings {
       0;                    // > 0: app.writeSnapshot every that many steps (and at the start of a fresh run)
   PetscInt max_retries = 0; // retries of one step at half dt before the run stops
   double eta_time = 0.0;    // the simulated end time the progress line's ETA uses (0: t_final)
+  const char* output =
+      ""; // the final output's path: a failed run's error names it ("output up to step N in F")
 };
 
 class TimeLoop {
