@@ -200,7 +200,7 @@ PetscErrorCode EulerRun::setup() {
   PetscCall(setupLineComms());
   PetscCall(setupSweep());
   PetscCall(setInitialState());
-  PetscCall(maxWaveSpeeds(U_, amax));
+  PetscCall(maxWaveSpeeds(U_, 0.0, amax));
   const StepperSettings s{opt_.time, opt_.t_final, opt_.dt > 0 ? opt_.dt : cflTimeStep(amax)};
   PetscCall(createStepper(ctx_.comm(), da_, U_, s, rhsCallback, this, &ts_));
   PetscFunctionReturn(0);

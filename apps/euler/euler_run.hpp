@@ -76,7 +76,8 @@ private:
   void addFluxDifferences(int d, const std::vector<std::array<double, NV>>& h, double* f) const;
   void addGravity(const double* ul, double* f) const;
   // steps (euler_step.cpp)
-  PetscErrorCode maxWaveSpeeds(Vec U, double amax[3]) const;
+  PetscErrorCode maxWaveSpeeds(Vec U, double t, double amax[3]) const; // owned cells and Custom-face ghosts
+  void customGhostSpeeds(const double* u, double t, double a[3]) const;
   double cflTimeStep(const double amax[3]) const;
   PetscErrorCode checkState(Vec U, PetscInt step, double time) const;
   // The first non-positive density or pressure (or non-finite value) of U as checkState's message, "" if none.

@@ -17,17 +17,54 @@
 
 namespace euler_app {
 
-PetscErrorCode EulerRun::maxWaveSpeeds(Vec U, double amax[3]) const {
+namespace {
+void takeSpeeds(const double* q, int dim, double gamma, double a[3]) {
+  double s[3];
+  waveSpeeds(q, dim, gamma, s);
+  for (int d = 0; d < dim; ++d) // NaN wins: it stops the run in proposeDt
+    a[d] = (std::isnan(s[d]) || s[d] > a[d]) ? (std::isnan(a[d]) ? a[d] : s[d]) : a[d];
+}
+} // namespace
+
+// The ghost states of Custom faces (an inflow such as the jet's) enter the domain within the step: their speeds
+// count too (else the first step of a jet entering ambient gas at rest would be ~80 times the stable one).
+void EulerRun::customGhostSpeeds(const double* u, double t, double a[3]) const {
+  const int nv = this->nv();
+  for (int d = 0; d < dim(); ++d)
+    for (int side = 0; side < 2; ++side) {
+      const PetscInt n = opt_.n[d], edge = side == 0 ? 0 : n - 1;
+      if (problem_.bc[d][side] != suite::euler::BcN::Custom || edge < s_[d] || edge >= s_[d] + m_[d])
+        continue;
+      PetscInt lo[3] = {s_[0], s_[1], s_[2]}, hi[3] = {s_[0] + m_[0], s_[1] + m_[1], s_[2] + m_[2]};
+      lo[d] = edge, hi[d] = edge + 1;
+      for (PetscInt k = lo[2]; k < hi[2]; ++k)
+        for (PetscInt j = lo[1]; j < hi[1]; ++j)
+          for (PetscInt i = lo[0]; i < hi[0]; ++i)
+            for (PetscInt gi = 0; gi < suite::euler::kLineGhost; ++gi) {
+              const PetscInt cell[3] = {i, j, k}; // next to the face
+              PetscInt idx[3] = {i, j, k}, mirror[3] = {i, j, k};
+              idx[d] = side == 0 ? -1 - gi : n + gi;
+              mirror[d] = side == 0 ? gi : n - 1 - gi; // owned: every rank holds >= kLineGhost cells
+              auto local = [&](const PetscInt* c) {
+                return u + (((c[2] - s_[2]) * m_[1] + (c[1] - s_[1])) * m_[0] + (c[0] - s_[0])) * nv;
+              };
+              double x[3], qg[5];
+              cellCentre(idx[0], idx[1], idx[2], x);
+              const PrimN w = problem_.ghost(d, side, x, t, primitive(local(mirror), dim(), problem_.gamma),
+                                             primitive(local(cell), dim(), problem_.gamma));
+              conservative(w, dim(), problem_.gamma, qg);
+              takeSpeeds(qg, dim(), problem_.gamma, a);
+            }
+    }
+}
+
+PetscErrorCode EulerRun::maxWaveSpeeds(Vec U, double t, double amax[3]) const {
   const PetscScalar* u;
   double a[3] = {0, 0, 0};
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(U, &u));
-  for (PetscInt c = 0; c < localCells(); ++c) {
-    double s[3];
-    waveSpeeds(u + c * nv(), dim(), problem_.gamma, s);
-    for (int d = 0; d < dim(); ++d) // NaN wins: it stops the run in proposeDt
-      a[d] = (std::isnan(s[d]) || s[d] > a[d]) ? (std::isnan(a[d]) ? a[d] : s[d]) : a[d];
-  }
+  for (PetscInt c = 0; c < localCells(); ++c) takeSpeeds(u + c * nv(), dim(), problem_.gamma, a);
+  customGhostSpeeds(u, t, a);
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, a, 3, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
   for (int d = 0; d < 3; ++d) amax[d] = a[d];
@@ -119,7 +156,7 @@ PetscErrorCode EulerRun::proposeDt(PetscInt step, double t, double* dt) {
   *dt = opt_.dt;
   if (*dt <= 0.0) {
     double amax[3];
-    PetscCall(maxWaveSpeeds(U_, amax));
+    PetscCall(maxWaveSpeeds(U_, t, amax));
     *dt = cflTimeStep(amax);
     PetscCheck(std::isfinite(*dt) && *dt > 0.0, ctx_.comm(), PETSC_ERR_FP,
                "Wave speed is not finite at step %" PetscInt_FMT ", time %g", step, t);

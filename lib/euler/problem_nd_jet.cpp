@@ -5,10 +5,9 @@
 // lies in the jet, the zero-gradient outflow state elsewhere); outflow on every other face; t = 0.001. The jet's
 // Mach number with respect to its own sound speed sqrt(gamma p / rho) = 0.371 is about 2156 ("Mach 2000").
 // Densities and pressures span several orders of magnitude behind the bow shock: a positivity test.
-// Start: Zhang & Shu fill the domain with ambient gas; here the jet state also fills x < 0.025 (-jet_x0), |y| <
-// halfwidth at t = 0 (the jet has just entered), because the app's CFL time step is taken from the interior
-// cells only: with ambient gas alone the first step would be ~80 times the stable one. Choose -jet_x0 of at
-// least half a cell (0 reproduces Zhang & Shu's start, with that first step).
+// Start: as Zhang & Shu, the domain holds ambient gas only (-jet_x0 L fills x < L, |y| < halfwidth with the jet
+// state at t = 0 instead). The CFL time step counts the inflow ghost states (apps/euler/euler_step.cpp), so the
+// first step is stable although the jet has not entered yet.
 // Reference: Zhang & Shu, J. Comput. Phys. 229 (2010) 8918, sec. 4 (high Mach number astrophysical jets).
 #include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"
@@ -19,7 +18,7 @@ namespace suite::euler {
 
 PetscErrorCode createJetProblemND(MPI_Comm comm, const std::string&, int dim, int, ProblemND* pr) {
   PetscFunctionBeginUser;
-  double gamma = 5.0 / 3.0, halfwidth = 0.05, x0 = 0.025;
+  double gamma = 5.0 / 3.0, halfwidth = 0.05, x0 = 0.0;
   PrimN jet{5.0, {800.0, 0.0, 0.0}, 0.4127}, ambient{0.5, {0.0, 0.0, 0.0}, 0.4127};
   PetscOptionsBegin(comm, "", "Astrophysical jet options", "");
   PetscCall(
