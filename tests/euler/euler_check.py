@@ -10,18 +10,8 @@ import subprocess
 import sys
 import tempfile
 
-BIN = os.environ.get("SUITE_BIN", "build/bin")
-MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
+from euler_harness import BIN, MPIEXEC, check, run
 
-
-def run(args, np=1):
-    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np), os.path.join(BIN, "euler")] + [str(a) for a in args]
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900)
-    print("$ " + " ".join(cmd))
-    print(p.stdout)
-    if p.returncode != 0:
-        raise SystemExit(f"FAIL: exit {p.returncode}")
-    return p.stdout
 
 
 def error(out, var="rho", norm="L1"):
@@ -29,12 +19,6 @@ def error(out, var="rho", norm="L1"):
     if not m:
         raise SystemExit(f"FAIL: no error line for {var}")
     return float(m.group({"L1": 1, "L2": 2, "Linf": 3}[norm]))
-
-
-def check(cond, msg):
-    print(("OK: " if cond else "FAIL: ") + msg)
-    if not cond:
-        raise SystemExit(1)
 
 
 def density_wave_order():
@@ -67,7 +51,7 @@ def shu_osher():
     with tempfile.TemporaryDirectory() as d:
         ref = os.path.join(os.environ.get("SUITE_REFERENCE_DIR") or d, "shu_osher_weno5_6400.h5")
         if not os.path.exists(ref):
-            run(["-problem", "shu_osher", "-nx", 6400, "-scheme", "weno5", "-output", ref, "-quiet"], np=2)
+            run(["-problem", "shu_osher", "-nx", 6400, "-scheme", "weno5", "-output", ref, "-quiet"], np_=2)
         out = run(["-problem", "shu_osher", "-nx", 400, "-reference", ref, "-error", "-quiet"])
         e = error(out)
         check(e <= 1.8e-2, f"Shu-Osher N=400 enopade6 vs N=6400 reference: L1(rho) = {e:.4e} <= 1.8e-2")
@@ -89,14 +73,14 @@ def ranks():
             one = os.path.join(d, f"{problem}1.h5")
             run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-output", one, "-quiet"])
             out = run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-reference", one,
-                       "-error", "-quiet"], np=2)
+                       "-error", "-quiet"], np_=2)
             m = re.search(r"reference max relative difference (\S+)", out)
             v = float(m.group(1))
             check(v <= 1e-12, f"{problem}/{scheme}: 1 vs 2 ranks max relative difference {v:.3e} <= 1e-12")
         # 3 ranks, and the substructured solve against the gathered one at 2 ranks.
         for np_, extra in [(3, []), (2, ["-line_solve", "gather"])]:
             out = run(["-problem", "sod", "-nx", 120, "-max_steps", 60, "-reference", os.path.join(d, "sod1.h5"),
-                       "-error", "-quiet"] + extra, np=np_)
+                       "-error", "-quiet"] + extra, np_=np_)
             v = float(re.search(r"reference max relative difference (\S+)", out).group(1))
             check(v <= 1e-12, f"sod/enopade6 {np_} ranks {' '.join(extra)}: max relative difference {v:.3e}")
 
@@ -119,19 +103,19 @@ def restart():
     with tempfile.TemporaryDirectory() as d:
         full = {n: os.path.join(d, f"full{n}.h5") for n in (1, 2)}
         for n in (1, 2):
-            run(base + ["-output", full[n], "-quiet"], np=n)
+            run(base + ["-output", full[n], "-quiet"], np_=n)
 
         def restart_diff(ck, np_):
             out = run(base + ["-checkpoint_dir", ck, "-restart", "latest", "-reference", full[np_], "-error"],
-                      np=np_)
+                      np_=np_)
             check("restarted from" in out, f"restart at {np_} rank(s) read a checkpoint")
             return float(re.search(r"reference max relative difference (\S+)", out).group(1))
 
         ck = os.path.join(d, "ck")
-        run(base + ["-checkpoint_dir", ck, "-checkpoint_every", 40, "-max_steps", 100, "-quiet"], np=2)
+        run(base + ["-checkpoint_dir", ck, "-checkpoint_every", 40, "-max_steps", 100, "-quiet"], np_=2)
         v = restart_diff(ck, 2)
         check(v == 0.0, f"stopped at step 100 (2 ranks), restarted at 2 ranks: max relative difference {v:.3e} == 0")
-        run(base + ["-checkpoint_dir", ck, "-checkpoint_every", 40, "-max_steps", 100, "-quiet"], np=2)
+        run(base + ["-checkpoint_dir", ck, "-checkpoint_every", 40, "-max_steps", 100, "-quiet"], np_=2)
         v = restart_diff(ck, 1)
         check(v <= 1e-12, f"stopped at 2 ranks, restarted at 1 rank: max relative difference {v:.3e} <= 1e-12")
 
@@ -172,7 +156,7 @@ def restart():
         names = sorted(os.listdir(ck3))
         check(p.returncode != 0 and "euler_0000000003.h5.tmp" in names and "euler_0000000002.h5" in names,
               f"killed inside the write of checkpoint 3: exit {p.returncode}, files {names}")
-        out = run(base + ["-checkpoint_dir", ck3, "-restart", "latest", "-reference", full[2], "-error"], np=2)
+        out = run(base + ["-checkpoint_dir", ck3, "-restart", "latest", "-reference", full[2], "-error"], np_=2)
         check(f"restarted from {os.path.join(ck3, 'euler_0000000002.h5')} at step 2" in out,
               "restart picked the last complete checkpoint (step 2), not the partial one")
         v = float(re.search(r"reference max relative difference (\S+)", out).group(1))

@@ -7,33 +7,15 @@ Needs h5py (the suite's Python environment). SUITE_BIN points at the build's bin
 """
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
 import h5py
 import numpy as np
 
-BIN = os.environ.get("SUITE_BIN", "build/bin")
-MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
-SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from euler_harness import SRC, check, run
+
 LEBLANC = ["-options_file", os.path.join(SRC, "inputs", "euler", "leblanc.yaml")]
-
-
-def run(args, np_=1):
-    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler")] + [str(a) for a in args]
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900)
-    print("$ " + " ".join(cmd))
-    print(p.stdout[-3000:])
-    if p.returncode != 0:
-        raise SystemExit(f"FAIL: exit {p.returncode}")
-    return p.stdout
-
-
-def check(cond, msg):
-    print(("OK: " if cond else "FAIL: ") + msg)
-    if not cond:
-        raise SystemExit(1)
 
 
 def retried(out):

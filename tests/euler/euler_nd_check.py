@@ -7,32 +7,14 @@ Needs numpy and h5py (the suite's Python environment). Usage: euler_nd_check.py 
 import math
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
 import h5py
 import numpy as np
 
-BIN = os.environ.get("SUITE_BIN", "build/bin")
-MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
+from euler_harness import check, run
 
-
-def run(args, np_=1, expect_ok=True):
-    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler")] + [str(a) for a in args]
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=1500, env=env)
-    print("$ " + " ".join(cmd))
-    print(p.stdout[-4000:])
-    if expect_ok and p.returncode != 0:
-        raise SystemExit(f"FAIL: exit {p.returncode}")
-    return p.stdout
-
-
-def check(cond, msg):
-    print(("OK: " if cond else "FAIL: ") + msg)
-    if not cond:
-        raise SystemExit(1)
 
 
 def l1_error(out):

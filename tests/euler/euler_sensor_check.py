@@ -8,35 +8,17 @@ Needs numpy and h5py (the suite's Python environment). Usage: euler_sensor_check
 """
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
 import h5py
 import numpy as np
 
-BIN = os.environ.get("SUITE_BIN", "build/bin")
-MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
+from euler_harness import check, run
+
 
 # Sod (1978), x0 = 0.5, gamma = 1.4: wave speeds of the exact solution (Toro, Riemann Solvers, sec. 4.3.3).
 SOD_SHOCK, SOD_CONTACT, SOD_HEAD, SOD_TAIL = 1.7521557, 0.9274526, -1.1832160, -0.0702728
-
-
-def run(args, np_=1):
-    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler")] + [str(a) for a in args]
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=1500, env=env)
-    print("$ " + " ".join(cmd))
-    print(p.stdout[-3000:])
-    if p.returncode != 0:
-        raise SystemExit(f"FAIL: exit {p.returncode}")
-    return p.stdout
-
-
-def check(cond, msg):
-    print(("OK: " if cond else "FAIL: ") + msg)
-    if not cond:
-        raise SystemExit(1)
 
 
 def sensor_rows(out):

@@ -1,0 +1,26 @@
+"""What every Euler test script shares: running build/bin/euler under mpiexec (output echoed, a non-zero exit a
+failure unless expected) and the OK/FAIL check line. SUITE_BIN and SUITE_MPIEXEC choose the binaries."""
+import os
+import subprocess
+
+BIN = os.environ.get("SUITE_BIN", "build/bin")
+MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
+SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def run(args, np_=1, expect_ok=True, timeout=1500, tail=4000):
+    """Runs euler with args on np_ ranks and returns its output (stdout and stderr)."""
+    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler")] + [str(a) for a in args]
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout, env=env)
+    print("$ " + " ".join(cmd))
+    print(p.stdout[-tail:] if tail else p.stdout)
+    if expect_ok and p.returncode != 0:
+        raise SystemExit(f"FAIL: exit {p.returncode}")
+    return p.stdout
+
+
+def check(cond, msg):
+    print(("OK: " if cond else "FAIL: ") + msg)
+    if not cond:
+        raise SystemExit(1)
