@@ -217,6 +217,8 @@ PetscErrorCode EulerRun::advance(PetscInt step, double t, double dt, suite::Step
     PetscFunctionReturn(0);
   }
   PetscCall(TSGetTime(ts_, &t_new));
+  if (stage_failure_.empty())
+    PetscCall(applyFilter(t_new, t_new - t, U_)); // -filter_alpha (euler_filter.cpp)
   PetscCall(stepProblem(step, t_new, &why));
   if (!why.empty()) { // TimeLoop retries at dt / 2 (at most -max_retries times) or stops with this message
     PetscCall(rollBack(step, t));
