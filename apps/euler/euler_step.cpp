@@ -4,7 +4,8 @@
 // counted in the run's summary and output) from the state before it when a stage state (explicit integrators)
 // or the new state has a non-finite or non-positive density or pressure, or when the positivity limiter met a
 // face it could not make safe (a stage above its CFL bound, lib/euler/direction_sweep.hpp). When the retries
-// are exhausted the job stops with the last attempt's message, naming step, time and cell.
+// are exhausted the job stops with the last attempt's message, naming step, time and cell. With -filter_alpha the
+// new state is filtered (euler_filter.cpp) before that check.
 #include "euler_run.hpp"
 
 #include "core/field_check.hpp"
