@@ -33,11 +33,12 @@ template <int NV> double pressureOf(const std::array<double, NV>& u, double gamm
   return (gamma - 1.0) * (u[NV - 1] - 0.5 * m2 / u[0]);
 }
 
-// Whether the 7-point stencil around stored cell m (cells m-3 .. m+3) holds a jump of density or pressure.
-template <int NV> bool stencilHasJump(const std::array<double, NV>* q, int m, double gamma, double jump) {
-  double p[7];
-  for (int s = 0; s < 7; ++s) p[s] = pressureOf<NV>(q[m - 3 + s], gamma);
-  for (int s = 1; s < 6; ++s) {
+// Whether the stencil of face k, stored cells m-3 .. m+2 (m: the stored index of cell k), holds a jump of density
+// or pressure.
+template <int NV> bool faceStencilHasJump(const std::array<double, NV>* q, int m, double gamma, double jump) {
+  double p[6];
+  for (int s = 0; s < 6; ++s) p[s] = pressureOf<NV>(q[m - 3 + s], gamma);
+  for (int s = 1; s < 5; ++s) {
     const int j = m - 3 + s;
     // NaN compares false: a non-finite stencil counts as a jump (left alone for the state check to report)
     if (!(jamesonPhi(q[j - 1][0], q[j][0], q[j + 1][0]) <= jump) ||
@@ -49,34 +50,46 @@ template <int NV> bool stencilHasJump(const std::array<double, NV>* q, int m, do
 } // namespace
 
 template <int NV>
-void compactFilterRows(const std::array<double, NV>* q, long long n, long long xs, int xm, bool periodic,
-                       double alpha, double gamma, double jump, double* abc, double* rhs) {
-  constexpr int g = kLineGhost; // 3: the filter's half-width
-  double a[4];
-  compactFilterCoefficients(alpha, a);
-  for (int k = 0; k < xm; ++k) {
-    const long long i = xs + k;
-    const int m = k + g;
-    double* row = abc + 3 * k;
-    double* r = rhs + (size_t)NV * k;
-    const bool edge = !periodic && (i < g || i >= n - g);
-    if (edge || stencilHasJump<NV>(q, m, gamma, jump)) {
+void compactFilterFaceRows(const std::array<double, NV>* q, long long n, long long xs, int nface,
+                           bool periodic, double alpha, double gamma, double jump, double* abc, double* rhs) {
+  constexpr int g = kLineGhost; // 3: the stencil's reach to the left of a face
+  constexpr double binom5[6] = {-1.0, 5.0, -10.0, 10.0, -5.0, 1.0}; // delta^5 over cells k-3 .. k+2
+  const double scale = (1.0 - 2.0 * alpha) / 64.0;
+  for (int f = 0; f < nface; ++f) {
+    const long long k = xs + f;
+    const int m = f + g; // stored index of cell k (the cell right of face k)
+    double* row = abc + 3 * f;
+    double* r = rhs + (size_t)NV * f;
+    const bool edge = !periodic && (k < g || k > n - g);
+    if (edge || faceStencilHasJump<NV>(q, m, gamma, jump)) {
       row[0] = 0.0, row[1] = 1.0, row[2] = 0.0;
-      for (int c = 0; c < NV; ++c) r[c] = q[m][c];
+      for (int c = 0; c < NV; ++c) r[c] = 0.0;
       continue;
     }
     row[0] = alpha, row[1] = 1.0, row[2] = alpha;
-    for (int c = 0; c < NV; ++c)
-      r[c] = a[0] * q[m][c] + 0.5 * (a[1] * (q[m + 1][c] + q[m - 1][c]) + a[2] * (q[m + 2][c] + q[m - 2][c]) +
-                                     a[3] * (q[m + 3][c] + q[m - 3][c]));
+    for (int c = 0; c < NV; ++c) {
+      double d5 = 0.0;
+      for (int s = 0; s < 6; ++s) d5 += binom5[s] * q[m - 3 + s][c];
+      r[c] = scale * d5;
+    }
   }
 }
 
-template void compactFilterRows<3>(const std::array<double, 3>*, long long, long long, int, bool, double,
-                                   double, double, double*, double*);
-template void compactFilterRows<4>(const std::array<double, 4>*, long long, long long, int, bool, double,
-                                   double, double, double*, double*);
-template void compactFilterRows<5>(const std::array<double, 5>*, long long, long long, int, bool, double,
-                                   double, double, double*, double*);
+template <int NV>
+void compactFilterApply(const std::array<double, NV>* q, int xm, const double* g,
+                        std::array<double, NV>* out) {
+  for (int i = 0; i < xm; ++i)
+    for (int c = 0; c < NV; ++c) out[i][c] = q[i + kLineGhost][c] + (g[NV * (i + 1) + c] - g[NV * i + c]);
+}
+
+#define SUITE_COMPACT_FILTER(NV)                                                                             \
+  template void compactFilterFaceRows<NV>(const std::array<double, NV>*, long long, long long, int, bool,    \
+                                          double, double, double, double*, double*);                         \
+  template void compactFilterApply<NV>(const std::array<double, NV>*, int, const double*,                    \
+                                       std::array<double, NV>*);
+SUITE_COMPACT_FILTER(3)
+SUITE_COMPACT_FILTER(4)
+SUITE_COMPACT_FILTER(5)
+#undef SUITE_COMPACT_FILTER
 
 } // namespace suite::euler
