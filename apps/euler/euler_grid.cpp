@@ -23,6 +23,7 @@ EulerRun::~EulerRun() {
   TSDestroy(&ts_);
   VecDestroy(&U_);
   VecDestroy(&U0_);
+  VecDestroy(&Ufilter_);
   DMDestroy(&da_);
   for (MPI_Comm& c : line_comm_)
     if (c != MPI_COMM_NULL) MPI_Comm_free(&c);

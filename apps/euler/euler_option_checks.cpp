@@ -113,6 +113,16 @@ PetscErrorCode validateOptions(const suite::RunContext& ctx, const Options& o, c
              PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -shock_ppw %g: must be >= 4 points per wavelength, or 0 (the amplitude test alone)",
              o.shock_ppw);
+  PetscCheck(o.filter_alpha > -0.5 && o.filter_alpha <= 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -filter_alpha %g: must be in (-0.5, 0.5] (0.5: no filter)", o.filter_alpha);
+  PetscCheck(o.filter_time >= 0.0 && o.filter_time < 1e300, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -filter_time %g: must be >= 0 (0: the full filter every step)", o.filter_time);
+  // BDF2 keeps the previous solution in its own history: a state filtered after the step would not be it.
+  PetscCheck(
+      o.filter_alpha >= 0.5 || o.time != "bdf2", comm, PETSC_ERR_ARG_INCOMP,
+      "-filter_alpha %g with -time bdf2: the multistep history would not hold the filtered states (use a "
+      "one-step integrator)",
+      o.filter_alpha);
   PetscCheck(o.t_final > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -t_final %g: must be > 0", o.t_final);
   PetscCheck(o.snapshot_every >= 0 && o.spacetime_every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -snapshot_every/-spacetime_every: must be >= 0");

@@ -157,6 +157,17 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                          "ENO-Pade sensor, resolution test: a shock row needs data less resolved than a sine "
                          "of this many points per wavelength (>= 4; 0: amplitude test alone)",
                          "", o->shock_ppw, &o->shock_ppw, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-filter_alpha",
+                         "Sixth-order compact filter (Gaikwad & Visbal) of the state after every step: its "
+                         "alpha_f in (-0.5, 0.5], typically 0.4 .. 0.49 (0.5: off)",
+                         "", o->filter_alpha, &o->filter_alpha, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-filter_time",
+                         "Relaxation time of -filter_alpha: each step blends in the filtered state with "
+                         "weight min(1, dt / this), keeping the sixth order on smooth flow (0: the full "
+                         "filter every step)",
+                         "", o->filter_time, &o->filter_time, nullptr));
   if (o->dim > 1)
     PetscCall(
         suite::optionsInt(PetscOptionsObject, "-line_batch_mb",

@@ -94,6 +94,8 @@ PetscErrorCode EulerRun::writeRunAttributes() {
   PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "steps_retried", (long long)retries_));
+  PetscCall(out_.writeAttribute("/", "filter_alpha", opt_.filter_alpha));
+  PetscCall(out_.writeAttribute("/", "filter_time", opt_.filter_time));
   if (hasShockFlags()) {
     PetscCall(out_.writeAttribute("/", "shock_threshold", opt_.shock_threshold));
     PetscCall(out_.writeAttribute("/", "shock_ppw", opt_.shock_ppw));

@@ -13,19 +13,6 @@ namespace euler_app {
 
 using namespace suite::euler;
 
-namespace {
-// Component c of the line frame of direction d -> component of the global frame.
-int frameComponent(int dim, int d, int c) {
-  if (c == 0 || c == dim + 1) return c;
-  if (c == 1) return 1 + d;
-  int t = c - 2, other = -1; // t-th direction other than d, in increasing order
-  for (int e = 0; e < dim; ++e)
-    if (e != d && t-- == 0) other = e;
-  return 1 + other;
-}
-
-} // namespace
-
 // Ghost cells of line (ja, jb) of direction d outside a non-periodic domain, from the boundary conditions.
 // ql holds cells s_d-3 .. s_d+m_d+2 of the line, in the frame of d.
 template <int NV>

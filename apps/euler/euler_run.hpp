@@ -85,6 +85,10 @@ private:
   PetscErrorCode stepProblem(PetscInt step, double t_new, std::string* why); // after TSStep: "" to accept
   PetscErrorCode rollBack(PetscInt step, double t);                          // the state before the step
   PetscErrorCode recordSpacetime(Vec U, double t);
+  // -filter_alpha (euler_filter.cpp): the compact filter of the state after a step
+  bool filterOn() const;
+  PetscErrorCode applyFilter(double t, double dt, Vec U);
+  template <int NV> PetscErrorCode filterDirection(int d, double t, Vec U);
   // output (euler_output.cpp, euler_energy_spectrum.cpp, euler_errors.cpp)
   PetscErrorCode primitiveFields(Vec U, std::vector<double> fields[5]) const; // rho, u, v, w, p
   PetscErrorCode writeFields(const std::string& group, Vec U, double t);
@@ -140,6 +144,9 @@ private:
   long long unattainable0_ = 0;
   PetscInt retry_step_ = -1, retry_attempt_ = 0;
   std::vector<double> totals0_;
+  suite::linalg::SubstructuredBlockLines filter_lines_; // -filter_alpha's line solves
+  std::vector<double> filter_abc_, filter_rhs_, filter_x_;
+  Vec Ufilter_ = nullptr; // -filter_time: the filtered state blended in
   suite::CheckpointPolicy ckpt_;
   // output
   suite::H5Output out_;

@@ -57,4 +57,14 @@ inline void otherDirections(int dim, int d, int* a, int* b) {
   *b = dim == 3 ? (d == 2 ? 1 : 2) : 2;
 }
 
+// Component c of the line frame of direction d -> component of the global frame.
+inline int frameComponent(int dim, int d, int c) {
+  if (c == 0 || c == dim + 1) return c;
+  if (c == 1) return 1 + d;
+  int t = c - 2, other = -1; // t-th direction other than d, in increasing order
+  for (int e = 0; e < dim; ++e)
+    if (e != d && t-- == 0) other = e;
+  return 1 + other;
+}
+
 } // namespace euler_app

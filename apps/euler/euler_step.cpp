@@ -4,7 +4,8 @@
 // counted in the run's summary and output) from the state before it when a stage state (explicit integrators)
 // or the new state has a non-finite or non-positive density or pressure, or when the positivity limiter met a
 // face it could not make safe (a stage above its CFL bound, lib/euler/direction_sweep.hpp). When the retries
-// are exhausted the job stops with the last attempt's message, naming step, time and cell.
+// are exhausted the job stops with the last attempt's message, naming step, time and cell. With -filter_alpha the
+// new state is filtered (euler_filter.cpp) before that check.
 #include "euler_run.hpp"
 
 #include "core/field_check.hpp"
@@ -217,6 +218,8 @@ PetscErrorCode EulerRun::advance(PetscInt step, double t, double dt, suite::Step
     PetscFunctionReturn(0);
   }
   PetscCall(TSGetTime(ts_, &t_new));
+  if (stage_failure_.empty())
+    PetscCall(applyFilter(t_new, t_new - t, U_)); // -filter_alpha (euler_filter.cpp)
   PetscCall(stepProblem(step, t_new, &why));
   if (!why.empty()) { // TimeLoop retries at dt / 2 (at most -max_retries times) or stops with this message
     PetscCall(rollBack(step, t));
