@@ -165,7 +165,8 @@ def restart():
         # Refusals: other numerics, a flipped byte.
         latest = sorted(f for f in os.listdir(ck) if f.endswith(".h5"))[-1]
         path = os.path.join(ck, latest)
-        for extra, pattern in [(["-scheme", "weno5"], "scheme"), (["-nx", 200], "grid")]:
+        for extra, pattern in [(["-scheme", "weno5"], "scheme"), (["-filter_alpha", 0.45], "scheme"),
+                               (["-nx", 200], "grid")]:
             p = subprocess.run([MPIEXEC, "--oversubscribe", "-n", "2", os.path.join(BIN, "euler")] +
                                [str(a) for a in base + extra + ["-restart", path]],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
