@@ -4,6 +4,7 @@
 
 #include "core/error_handler.hpp"
 #include "euler/enopade6.hpp"
+#include "euler/rf_char.hpp"
 #include "euler/weno5.hpp"
 
 #include <petsclog.h>
@@ -99,19 +100,19 @@ template <int NV> void DirectionSweep<NV>::prepareLine(const V* q, int xm, doubl
 }
 
 // Characteristic (or component-wise) rows of the split fluxes at face k: rows[0][c] for f+ (left-biased),
-// rows[1][c] for f- (right-biased).
+// rows[1][c] for f- (right-biased). unsplit: the left- and right-biased rows of f itself.
 template <int NV>
 static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
                       RowFunction fn, bool characteristic, double g, typename LineGas<NV>::Eigen* e,
-                      Row rows[2][NV]) {
+                      Row rows[2][NV], bool unsplit = false) {
   using G = LineGas<NV>;
   if (characteristic) *e = G::roe(qs[2], qs[3], g);
   double wp[NV][6], wm[NV][6];
   for (int m = 0; m < 6; ++m) {
     typename G::V fp, fm;
     for (int c = 0; c < NV; ++c) {
-      fp[c] = 0.5 * (fs[m][c] + a * qs[m][c]);
-      fm[c] = 0.5 * (fs[m][c] - a * qs[m][c]);
+      fp[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] + a * qs[m][c]);
+      fm[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] - a * qs[m][c]);
     }
     if (characteristic) {
       fp = G::mul(e->L, fp);
@@ -128,6 +129,37 @@ static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<
   }
 }
 
+// rf-char rows of face k (rf_char.hpp), characteristic: per field the left-biased row of l_c f (speeds > 0),
+// the right-biased one (< 0), else the explicit Lax-Friedrichs row b = 1, r = w(l_c f+) + w~(l_c f-), f+- =
+// (f +- alpha_c U) / 2, w the WENO5-Z value and w~ its mirror. upwind false (central rows): the row of f.
+template <int NV>
+static void rfRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double alpha,
+                   bool local, RowFunction fn, bool upwind, double g, typename LineGas<NV>::Eigen* e,
+                   Row rows[NV]) {
+  Row lr[2][NV];
+  splitRows<NV>(qs, fs, 0.0, fn, true, g, e, lr, true);
+  std::array<double, NV> lam[6];
+  double roe[NV], ac[NV];
+  int sgn[NV];
+  for (int m = 0; m < 6; ++m) RfChar<NV>::cellSpeeds(qs[m], g, lam[m].data());
+  RfChar<NV>::roeSpeeds(*e, roe);
+  RfChar<NV>::face(lam, roe, alpha, local, sgn, ac);
+  for (int c = 0; c < NV; ++c) {
+    if (!upwind || sgn[c] != 0) {
+      rows[c] = lr[!upwind || sgn[c] > 0 ? 0 : 1][c];
+      continue;
+    }
+    double vp[6], vm[6];
+    for (int m = 0; m < 6; ++m) {
+      double lf = 0.0, lu = 0.0;
+      for (int j = 0; j < NV; ++j) lf += e->L[NV * c + j] * fs[m][j], lu += e->L[NV * c + j] * qs[m][j];
+      vp[m] = 0.5 * (lf + ac[c] * lu);
+      vm[m] = 0.5 * (lf - ac[c] * lu);
+    }
+    rows[c] = {0.0, 1.0, 0.0, weno5Row(vp).r + mirrorRow(weno5Row, vm).r};
+  }
+}
+
 template <int NV>
 void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic,
                                       double alpha, V* h) {
@@ -138,7 +170,7 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     return;
   }
   if (scheme_->shock_row == weno5Row && scheme_->boundary_shock == weno5Row) { // the same rows, vectorised
-    weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic, g, h);
+    weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic, opt_.rf_char, g, h);
     return;
   }
   prepareLine(q, xm, alpha);
@@ -146,9 +178,16 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
     typename G::Eigen e;
+    V hc;
+    if (rfChar()) { // row path of rf-char: the rows of the chosen sides (explicit rows: b = 1)
+      Row rows[NV];
+      rfRows<NV>(q + k, f_.data() + k, alpha, opt_.local_lf, fn, true, g, &e, rows);
+      for (int c = 0; c < NV; ++c) hc[c] = rows[c].r / rows[c].b;
+      h[k] = G::mul(e.R, hc);
+      continue;
+    }
     Row rows[2][NV];
     splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows);
-    V hc;
     for (int c = 0; c < NV; ++c) hc[c] = rows[0][c].r / rows[0][c].b + rows[1][c].r / rows[1][c].b;
     h[k] = opt_.characteristic ? G::mul(e.R, hc) : hc;
   }
@@ -228,24 +267,27 @@ static void padeScalarRow(const typename LineGas<NV>::V* fs, RowFunction fn, int
   abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
 }
 
-// The same on a block line: diagonal blocks, one right-hand side per split flux. `out` is taken by value here
-// and below: a copy the row functions cannot reach stays in registers across their calls.
+// The same on a block line (and central closures with rf-char): diagonal blocks, one right-hand side per split
+// flux (one system, rf-char: of f).
+// `out` is taken by value here and below: a copy the row functions cannot reach stays in registers across their
+// calls.
 template <int NV>
 static void padeBlockRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
                          RowFunction fn, int k, CompactLineRows out) {
   constexpr int NN = NV * NV;
   for (int c = 0; c < NV; ++c) {
-    double r[2];
-    for (int s = 0; s < 2; ++s) {
+    Row row[2];
+    for (int s = 0; s < out.nsys; ++s) {
       double v[6];
-      for (int m = 0; m < 6; ++m) v[m] = 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
-      r[s] = fn(v).r;
+      for (int m = 0; m < 6; ++m)
+        v[m] = out.nsys == 1 ? fs[m][c] : 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
+      row[s] = fn(v);
     }
-    for (int s = 0; s < 2; ++s) {
-      out.A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
-      out.B[s][NN * k + (NV + 1) * c] = 1.0;
-      out.C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
-      out.d[s][NV * k + c] = r[s];
+    for (int s = 0; s < out.nsys; ++s) {
+      out.A[s][NN * k + (NV + 1) * c] = row[s].a;
+      out.B[s][NN * k + (NV + 1) * c] = row[s].b;
+      out.C[s][NN * k + (NV + 1) * c] = row[s].c;
+      out.d[s][NV * k + c] = row[s].r;
     }
   }
 }
@@ -311,6 +353,33 @@ static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename Li
   if (!out.blocks) out.abc[3 * k] = 0.0, out.abc[3 * k + 1] = 1.0, out.abc[3 * k + 2] = 0.0;
 }
 
+// rf-char row of a block line at face k (one system of h; rfRows): upwind for split rows (shock rows, WENO
+// closures), central rows (central closures) as rows of f.
+template <int NV>
+static void rfCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double alpha,
+                         bool local, RowFunction fn, bool upwind, double g, int k, CompactLineRows out) {
+  using G = LineGas<NV>;
+  constexpr int NN = NV * NV;
+  typename G::Eigen e;
+  Row rows[NV];
+  rfRows<NV>(qs, fs, alpha, local, fn, upwind, g, &e, rows);
+  bool explicit_row = true;
+  typename G::V rs;
+  for (int c = 0; c < NV; ++c) {
+    explicit_row = explicit_row && rows[c].a == 0.0 && rows[c].c == 0.0 && rows[c].b == 1.0;
+    rs[c] = rows[c].r;
+  }
+  const typename G::V dr = G::mul(e.R, rs);
+  if (explicit_row) zeroBlockRow<NV>(out.A[0], out.B[0], out.C[0], k);
+  for (int r = 0; r < NV; ++r) {
+    out.d[0][NV * k + r] = dr[r];
+    if (explicit_row)
+      out.B[0][NN * k + (NV + 1) * r] = 1.0;
+    else
+      blockRowEntries<NV>(e, rows, true, r, out.A[0] + NN * k, out.B[0] + NN * k, out.C[0] + NN * k);
+  }
+}
+
 template <int NV>
 void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
                                          bool periodic, double alpha, const char* shocks,
@@ -325,11 +394,15 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
                                     : (shock ? scheme_->shock_row : scheme_->smooth_row);
     if (out.blocks && !(shock && !boundary)) // rows that set only diagonals (Pade, explicit closures)
-      for (int s = 0; s < 2; ++s) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
+      for (int s = 0; s < out.nsys; ++s) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
     if (!shock && !boundary && !out.blocks)
       padeScalarRow<NV>(fs, fn, k, out.abc, out.rhs);
     else if (!shock && !boundary)
       padeBlockRow<NV>(qs, fs, a, fn, k, out);
+    else if (out.blocks && out.nsys == 1 && !shock) // central closure: the row of f, component-wise
+      padeBlockRow<NV>(qs, fs, a, fn, k, out);
+    else if (out.blocks && out.nsys == 1)
+      rfCompactRow<NV>(qs, fs, alpha, opt_.local_lf, fn, shock, opt_.gamma, k, out);
     else
       splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out);
   }
@@ -474,7 +547,8 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
   const int nb = (int)blocks_.size(), nface = xm + 1;
   int nranks = 1;
   MPI_Comm_size(comm, &nranks);
-  const double line_bytes = sizeof(double) * 2.0 * (double)(n + 1) / nranks * (3 * NN + NV);
+  const int ns = blockSystems();
+  const double line_bytes = sizeof(double) * ns * (double)(n + 1) / nranks * (3 * NN + NV);
   const int chunk = (int)std::max(1.0, std::min(1e9, std::floor((double)opt_.batch_bytes / line_bytes)));
   for (int c0 = 0; c0 < nb; c0 += chunk) {
     const int cn = std::min(chunk, nb - c0);
@@ -482,51 +556,53 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
     StageScope stage; // until the end of this batch
     blockBatchSolve(comm, nown, periodic, xs, nface, cn);
     for (int ib = 0; ib < cn; ++ib) {
-      const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
-      const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
+      const double* x0 = &bx_[(size_t)(ns * ib) * nface * NV];
+      const double* x1 = &bx_[(size_t)(ns * ib + ns - 1) * nface * NV];
       V* hl = h + (size_t)blocks_[c0 + ib] * nface;
       for (int k = 0; k < nface; ++k)
-        for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
+        for (int c = 0; c < NV; ++c) hl[k][c] = ns == 1 ? x0[NV * k + c] : x0[NV * k + c] + x1[NV * k + c];
     }
   }
 }
 
-// Rows of the block lines blocks_[c0 .. c0 + cn - 1] into bA_, bB_, bC_, bd_ (systems 2 ib and 2 ib + 1: the
-// f+ and f- systems of line blocks_[c0 + ib]).
+// Rows of the block lines blocks_[c0 .. c0 + cn - 1] into bA_, bB_, bC_, bd_ (Lax-Friedrichs: systems 2 ib and
+// 2 ib + 1, the f+ and f- systems of line blocks_[c0 + ib]; rf-char: system ib, that of h).
 template <int NV>
 void DirectionSweep<NV>::blockBatchRows(const V* q, long long n, long long xs, int xm, int nown,
                                         bool periodic, double alpha, int c0, int cn) {
   constexpr int NN = NV * NV;
-  const int ncell = xm + 2 * kGhost;
-  bA_.resize((size_t)2 * cn * nown * NN);
+  const int ncell = xm + 2 * kGhost, ns = blockSystems();
+  bA_.resize((size_t)ns * cn * nown * NN);
   bB_.resize(bA_.size());
   bC_.resize(bA_.size());
-  bd_.resize((size_t)2 * cn * nown * NV);
+  bd_.resize((size_t)ns * cn * nown * NV);
   for (int ib = 0; ib < cn; ++ib) {
-    const CompactLineRows out = {
-        true,
-        nullptr,
-        nullptr,
-        {&bA_[(size_t)(2 * ib) * nown * NN], &bA_[(size_t)(2 * ib + 1) * nown * NN]},
-        {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]},
-        {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]},
-        {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]}};
+    const size_t s0 = (size_t)ns * ib, s1 = s0 + ns - 1;
+    const CompactLineRows out = {true,
+                                 nullptr,
+                                 nullptr,
+                                 {&bA_[s0 * nown * NN], &bA_[s1 * nown * NN]},
+                                 {&bB_[s0 * nown * NN], &bB_[s1 * nown * NN]},
+                                 {&bC_[s0 * nown * NN], &bC_[s1 * nown * NN]},
+                                 {&bd_[s0 * nown * NV], &bd_[s1 * nown * NV]},
+                                 ns};
     const int l = blocks_[c0 + ib];
     lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown], out);
   }
 }
 
-// Solves the 2 cn block systems of a batch (blockBatchRows) into bx_.
+// Solves the blockSystems() cn block systems of a batch (blockBatchRows) into bx_.
 template <int NV>
 void DirectionSweep<NV>::blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface,
                                          int cn) {
   constexpr int NN = NV * NV;
-  bx_.resize((size_t)2 * cn * nface * NV);
+  const int nsys = blockSystems() * cn;
+  bx_.resize((size_t)nsys * nface * NV);
   if (!opt_.gather_lines)
-    lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs, nface,
+    lines_.solve(comm, NV, nsys, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs, nface,
                  bx_.data());
   else if constexpr (NV == 3) // comparison path (1D): each system gathered to every rank
-    for (int m = 0; m < 2 * cn; ++m) {
+    for (int m = 0; m < nsys; ++m) {
       const size_t o = (size_t)m * nown * NN;
       gather_.solve(comm, NV, nown, &bA_[o], &bB_[o], &bC_[o], &bd_[(size_t)m * nown * NV], periodic, xs,
                     nface, &bx_[(size_t)m * nface * NV]);

@@ -19,6 +19,9 @@ struct LineOptions {
   double gamma = 1.4;
   bool characteristic = true;    // false: component-wise rows
   bool local_lf = true;          // false: global Lax-Friedrichs alpha
+  // rf-char upwinding of the characteristic fields (rf_char.hpp; characteristic rows only): Lax-Friedrichs only
+  // for the fields whose speed changes sign at a face. false: Lax-Friedrichs splitting of every field.
+  bool rf_char = true;
   double shock_threshold = 0.02; // ENO-Pade sensor: amplitude test (Jameson phi)
   double shock_ppw = 8.0;        // ENO-Pade sensor: resolution test, points per wavelength (0: off)
   bool positivity = true;

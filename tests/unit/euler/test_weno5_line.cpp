@@ -69,7 +69,7 @@ TYPED_TEST(Weno5LineTest, FluxesEqualTheRowByRowSchemeBitwise) {
   for (bool local : {true, false})
     for (bool characteristic : {true, false}) {
       std::vector<typename G::V> h(nface);
-      line.faceFluxes(q.data(), nface, 2.5, local, characteristic, kGamma, h.data());
+      line.faceFluxes(q.data(), nface, 2.5, local, characteristic, false, kGamma, h.data());
       for (int k = 0; k < nface; ++k) {
         double a = 2.5;
         if (local) {
