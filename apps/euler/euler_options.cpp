@@ -73,6 +73,7 @@ PetscErrorCode readChoices(MPI_Comm comm, Options* o) {
              PETSC_ERR_ARG_OUTOFRANGE, "Invalid -axis %s: x, y%s", o->axis.c_str(),
              o->dim == 3 ? " or z" : "");
   o->implicit = isImplicit(o->time);
+  o->upwinding = findScheme(o->scheme)->rf_char_default ? "rf-char" : "llf";
   PetscFunctionReturn(0);
 }
 
@@ -141,8 +142,8 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                                "Characteristic-wise reconstruction (false: component-wise)", "",
                                o->characteristic, &o->characteristic, nullptr));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-upwinding",
-                                 "Flux upwinding of the flux-split schemes (rf-char: explicit default, llf: "
-                                 "implicit default; muscl2 upwinds by its HLLC solver)",
+                                 "Flux upwinding of the flux-split schemes (default: rf-char for crweno5 and "
+                                 "weno5, llf for enopade6 and implicit steps; muscl2 upwinds by HLLC)",
                                  kUpwindings, &o->upwinding));
   PetscCall(suite::optionsBool(PetscOptionsObject, "-local_lf",
                                "Local Lax-Friedrichs splitting (false: global; implicit default)", "",

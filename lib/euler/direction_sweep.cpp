@@ -100,7 +100,7 @@ template <int NV> void DirectionSweep<NV>::prepareLine(const V* q, int xm, doubl
 }
 
 // Characteristic (or component-wise) rows of the split fluxes at face k: rows[0][c] for f+ (left-biased),
-// rows[1][c] for f- (right-biased). unsplit: the left- and right-biased rows of f itself.
+// rows[1][c] for f- (right-biased). unsplit (rf-char): the left- and right-biased rows of f itself.
 template <int NV>
 static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
                       RowFunction fn, bool characteristic, double g, typename LineGas<NV>::Eigen* e,
@@ -129,34 +129,26 @@ static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<
   }
 }
 
-// rf-char rows of face k (rf_char.hpp), characteristic: per field the left-biased row of l_c f (speeds > 0),
-// the right-biased one (< 0), else the explicit Lax-Friedrichs row b = 1, r = w(l_c f+) + w~(l_c f-), f+- =
-// (f +- alpha_c U) / 2, w the WENO5-Z value and w~ its mirror. upwind false (central rows): the row of f.
+// The rf-char field signs and Lax-Friedrichs speeds of the face between cells 2 and 3 of qs[0..5] (rf_char.hpp).
 template <int NV>
-static void rfRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double alpha,
-                   bool local, RowFunction fn, bool upwind, double g, typename LineGas<NV>::Eigen* e,
-                   Row rows[NV]) {
-  Row lr[2][NV];
-  splitRows<NV>(qs, fs, 0.0, fn, true, g, e, lr, true);
+static void rfSigns(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::Eigen& e, double alpha,
+                    bool local, double g, int sgn[NV], double ac[NV]) {
   std::array<double, NV> lam[6];
-  double roe[NV], ac[NV];
-  int sgn[NV];
+  double roe[NV];
   for (int m = 0; m < 6; ++m) RfChar<NV>::cellSpeeds(qs[m], g, lam[m].data());
-  RfChar<NV>::roeSpeeds(*e, roe);
+  RfChar<NV>::roeSpeeds(e, roe);
   RfChar<NV>::face(lam, roe, alpha, local, sgn, ac);
-  for (int c = 0; c < NV; ++c) {
-    if (!upwind || sgn[c] != 0) {
-      rows[c] = lr[!upwind || sgn[c] > 0 ? 0 : 1][c];
-      continue;
-    }
-    double vp[6], vm[6];
-    for (int m = 0; m < 6; ++m) {
-      double lf = 0.0, lu = 0.0;
-      for (int j = 0; j < NV; ++j) lf += e->L[NV * c + j] * fs[m][j], lu += e->L[NV * c + j] * qs[m][j];
-      vp[m] = 0.5 * (lf + ac[c] * lu);
-      vm[m] = 0.5 * (lf - ac[c] * lu);
-    }
-    rows[c] = {0.0, 1.0, 0.0, weno5Row(vp).r + mirrorRow(weno5Row, vm).r};
+}
+
+// l_c (f +- a U) / 2 of the six cells of qs, fs: the split characteristic flux of field c.
+template <int NV>
+static void splitField(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs,
+                       const typename LineGas<NV>::Eigen& e, int c, double a, double vp[6], double vm[6]) {
+  for (int m = 0; m < 6; ++m) {
+    double lf = 0.0, lu = 0.0;
+    for (int j = 0; j < NV; ++j) lf += e.L[NV * c + j] * fs[m][j], lu += e.L[NV * c + j] * qs[m][j];
+    vp[m] = 0.5 * (lf + a * lu);
+    vm[m] = 0.5 * (lf - a * lu);
   }
 }
 
@@ -178,17 +170,23 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
     typename G::Eigen e;
-    V hc;
-    if (rfChar()) { // row path of rf-char: the rows of the chosen sides (explicit rows: b = 1)
-      Row rows[NV];
-      rfRows<NV>(q + k, f_.data() + k, alpha, opt_.local_lf, fn, true, g, &e, rows);
-      for (int c = 0; c < NV; ++c) hc[c] = rows[c].r / rows[c].b;
-      h[k] = G::mul(e.R, hc);
-      continue;
-    }
     Row rows[2][NV];
-    splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows);
+    splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows, rfChar());
+    V hc;
     for (int c = 0; c < NV; ++c) hc[c] = rows[0][c].r / rows[0][c].b + rows[1][c].r / rows[1][c].b;
+    if (rfChar()) { // rf-char: the upwind row of l_c f, or the split rows where the sign changes
+      int sgn[NV];
+      double ac[NV];
+      rfSigns<NV>(q + k, e, alpha, opt_.local_lf, g, sgn, ac);
+      for (int c = 0; c < NV; ++c) {
+        hc[c] = sgn[c] > 0 ? rows[0][c].r / rows[0][c].b : rows[1][c].r / rows[1][c].b;
+        if (sgn[c] != 0) continue;
+        double vp[6], vm[6];
+        splitField<NV>(q + k, f_.data() + k, e, c, ac[c], vp, vm);
+        const Row rp = fn(vp), rm = mirrorRow(fn, vm);
+        hc[c] = rp.r / rp.b + rm.r / rm.b;
+      }
+    }
     h[k] = opt_.characteristic ? G::mul(e.R, hc) : hc;
   }
 }
@@ -267,27 +265,24 @@ static void padeScalarRow(const typename LineGas<NV>::V* fs, RowFunction fn, int
   abc[3 * k] = 1.0 / 3.0, abc[3 * k + 1] = 1.0, abc[3 * k + 2] = 1.0 / 3.0;
 }
 
-// The same on a block line (and central closures with rf-char): diagonal blocks, one right-hand side per split
-// flux (one system, rf-char: of f).
-// `out` is taken by value here and below: a copy the row functions cannot reach stays in registers across their
-// calls.
+// The same on a block line: diagonal blocks, one right-hand side per split flux. `out` is taken by value here
+// and below: a copy the row functions cannot reach stays in registers across their calls.
 template <int NV>
 static void padeBlockRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                         RowFunction fn, int k, CompactLineRows out) {
+                         RowFunction fn, int k, CompactLineRows out, bool unsplit) {
   constexpr int NN = NV * NV;
   for (int c = 0; c < NV; ++c) {
-    Row row[2];
-    for (int s = 0; s < out.nsys; ++s) {
+    double r[2];
+    for (int s = 0; s < 2; ++s) {
       double v[6];
-      for (int m = 0; m < 6; ++m)
-        v[m] = out.nsys == 1 ? fs[m][c] : 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
-      row[s] = fn(v);
+      for (int m = 0; m < 6; ++m) v[m] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
+      r[s] = fn(v).r;
     }
-    for (int s = 0; s < out.nsys; ++s) {
-      out.A[s][NN * k + (NV + 1) * c] = row[s].a;
-      out.B[s][NN * k + (NV + 1) * c] = row[s].b;
-      out.C[s][NN * k + (NV + 1) * c] = row[s].c;
-      out.d[s][NV * k + c] = row[s].r;
+    for (int s = 0; s < 2; ++s) {
+      out.A[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+      out.B[s][NN * k + (NV + 1) * c] = 1.0;
+      out.C[s][NN * k + (NV + 1) * c] = 1.0 / 3.0;
+      out.d[s][NV * k + c] = r[s];
     }
   }
 }
@@ -319,12 +314,13 @@ static void blockRowEntries(const typename LineGas<NV>::Eigen& e, const Row* row
 // when `characteristic`. On a scalar line only explicit rows may reach here.
 template <int NV>
 static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out) {
+                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out,
+                            bool unsplit) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
   typename G::Eigen e;
   Row rows[2][NV];
-  splitRows<NV>(qs, fs, a, fn, characteristic, g, &e, rows);
+  splitRows<NV>(qs, fs, a, fn, characteristic, g, &e, rows, unsplit);
   bool explicit_row = true;
   for (int s = 0; s < 2; ++s)
     for (int c = 0; c < NV; ++c)
@@ -353,38 +349,12 @@ static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename Li
   if (!out.blocks) out.abc[3 * k] = 0.0, out.abc[3 * k + 1] = 1.0, out.abc[3 * k + 2] = 0.0;
 }
 
-// rf-char row of a block line at face k (one system of h; rfRows): upwind for split rows (shock rows, WENO
-// closures), central rows (central closures) as rows of f.
-template <int NV>
-static void rfCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double alpha,
-                         bool local, RowFunction fn, bool upwind, double g, int k, CompactLineRows out) {
-  using G = LineGas<NV>;
-  constexpr int NN = NV * NV;
-  typename G::Eigen e;
-  Row rows[NV];
-  rfRows<NV>(qs, fs, alpha, local, fn, upwind, g, &e, rows);
-  bool explicit_row = true;
-  typename G::V rs;
-  for (int c = 0; c < NV; ++c) {
-    explicit_row = explicit_row && rows[c].a == 0.0 && rows[c].c == 0.0 && rows[c].b == 1.0;
-    rs[c] = rows[c].r;
-  }
-  const typename G::V dr = G::mul(e.R, rs);
-  if (explicit_row) zeroBlockRow<NV>(out.A[0], out.B[0], out.C[0], k);
-  for (int r = 0; r < NV; ++r) {
-    out.d[0][NV * k + r] = dr[r];
-    if (explicit_row)
-      out.B[0][NN * k + (NV + 1) * r] = 1.0;
-    else
-      blockRowEntries<NV>(e, rows, true, r, out.A[0] + NN * k, out.B[0] + NN * k, out.C[0] + NN * k);
-  }
-}
-
 template <int NV>
 void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
                                          bool periodic, double alpha, const char* shocks,
                                          CompactLineRows out) {
   prepareLine(q, xm, alpha);
+  const bool unsplit = out.blocks && rfChar(); // rf-char: the two systems of f (rfCombine picks per field)
   for (int k = 0; k < nown; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const V* qs = q + k;
@@ -394,17 +364,13 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     const RowFunction fn = boundary ? (shock ? scheme_->boundary_shock : scheme_->boundary_smooth)
                                     : (shock ? scheme_->shock_row : scheme_->smooth_row);
     if (out.blocks && !(shock && !boundary)) // rows that set only diagonals (Pade, explicit closures)
-      for (int s = 0; s < out.nsys; ++s) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
+      for (int s = 0; s < 2; ++s) zeroBlockRow<NV>(out.A[s], out.B[s], out.C[s], k);
     if (!shock && !boundary && !out.blocks)
       padeScalarRow<NV>(fs, fn, k, out.abc, out.rhs);
     else if (!shock && !boundary)
-      padeBlockRow<NV>(qs, fs, a, fn, k, out);
-    else if (out.blocks && out.nsys == 1 && !shock) // central closure: the row of f, component-wise
-      padeBlockRow<NV>(qs, fs, a, fn, k, out);
-    else if (out.blocks && out.nsys == 1)
-      rfCompactRow<NV>(qs, fs, alpha, opt_.local_lf, fn, shock, opt_.gamma, k, out);
+      padeBlockRow<NV>(qs, fs, a, fn, k, out, unsplit);
     else
-      splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out);
+      splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out, unsplit);
   }
 }
 
@@ -547,8 +513,7 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
   const int nb = (int)blocks_.size(), nface = xm + 1;
   int nranks = 1;
   MPI_Comm_size(comm, &nranks);
-  const int ns = blockSystems();
-  const double line_bytes = sizeof(double) * ns * (double)(n + 1) / nranks * (3 * NN + NV);
+  const double line_bytes = sizeof(double) * 2.0 * (double)(n + 1) / nranks * (3 * NN + NV);
   const int chunk = (int)std::max(1.0, std::min(1e9, std::floor((double)opt_.batch_bytes / line_bytes)));
   for (int c0 = 0; c0 < nb; c0 += chunk) {
     const int cn = std::min(chunk, nb - c0);
@@ -556,53 +521,115 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
     StageScope stage; // until the end of this batch
     blockBatchSolve(comm, nown, periodic, xs, nface, cn);
     for (int ib = 0; ib < cn; ++ib) {
-      const double* x0 = &bx_[(size_t)(ns * ib) * nface * NV];
-      const double* x1 = &bx_[(size_t)(ns * ib + ns - 1) * nface * NV];
-      V* hl = h + (size_t)blocks_[c0 + ib] * nface;
+      const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
+      const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
+      const int l = blocks_[c0 + ib];
+      V* hl = h + (size_t)l * nface;
+      if (rfChar()) {
+        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, nown, periodic, alpha,
+                  &shock_[(size_t)l * nown], x0, x1, hl);
+        continue;
+      }
       for (int k = 0; k < nface; ++k)
-        for (int c = 0; c < NV; ++c) hl[k][c] = ns == 1 ? x0[NV * k + c] : x0[NV * k + c] + x1[NV * k + c];
+        for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
     }
   }
 }
 
-// Rows of the block lines blocks_[c0 .. c0 + cn - 1] into bA_, bB_, bC_, bd_ (Lax-Friedrichs: systems 2 ib and
-// 2 ib + 1, the f+ and f- systems of line blocks_[c0 + ib]; rf-char: system ib, that of h).
+// rf-char face flux from the left- and right-biased compact solutions x0, x1 (conserved space) of the face
+// between cells 2 and 3 of qs[0..5]: per characteristic field l_c x0 (speeds > 0), l_c x1 (< 0), else
+// (l_c x0 + l_c x1) / 2 plus, when `dissipate`, the Lax-Friedrichs term alpha_c (w(l_c U) - w~(l_c U)) / 2, w
+// and w~ the explicit WENO5-Z left and right values (the compact systems carry f only).
+template <int NV>
+static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, const double* x0, const double* x1,
+                                          bool dissipate, double alpha, bool local, double g) {
+  using G = LineGas<NV>;
+  const typename G::Eigen e = G::roe(qs[2], qs[3], g);
+  int sgn[NV];
+  double ac[NV];
+  rfSigns<NV>(qs, e, alpha, local, g, sgn, ac);
+  typename G::V X0, X1, hc;
+  for (int c = 0; c < NV; ++c) X0[c] = x0[c], X1[c] = x1[c];
+  const typename G::V y0 = G::mul(e.L, X0), y1 = G::mul(e.L, X1);
+  for (int c = 0; c < NV; ++c) {
+    hc[c] = sgn[c] > 0 ? y0[c] : sgn[c] < 0 ? y1[c] : 0.5 * (y0[c] + y1[c]);
+    if (sgn[c] != 0 || !dissipate) continue;
+    double lu[6];
+    for (int m = 0; m < 6; ++m) {
+      lu[m] = 0.0;
+      for (int j = 0; j < NV; ++j) lu[m] += e.L[NV * c + j] * qs[m][j];
+    }
+    const double uL = weno5ZValue(lu[0], lu[1], lu[2], lu[3], lu[4]);
+    const double uR = weno5ZValue(lu[5], lu[4], lu[3], lu[2], lu[1]);
+    hc[c] += 0.5 * ac[c] * (uL - uR);
+  }
+  return G::mul(e.R, hc);
+}
+
+// rf-char face fluxes h[0 .. xm] of one block line (q: its cells; shocks: its owned rows' shock flags) from the
+// solutions x0, x1 of its systems (the left- and right-biased rows of f): Lax-Friedrichs dissipation for the
+// fields of mixed sign at the split rows (shock rows, WENO closures) only; at Pade rows and central closures
+// h = (x0 + x1) / 2 (both are central there, and the Pade relations hold for the mean whatever the neighbours
+// are). The face past the owned rows (the next rank's first) is classified by the sensor on the same cells, as
+// its owner does.
+template <int NV>
+void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic,
+                                   double alpha, const char* shocks, const double* x0, const double* x1, V* h) {
+  for (int k = 0; k <= xm; ++k) {
+    bool split = !scheme_->hybrid;
+    if (scheme_->hybrid && !boundaryFace(periodic, xs + k, n)) {
+      if (k < nown) {
+        split = shocks[k] != 0;
+      } else {
+        double rho[6], p[6];
+        for (int m = 0; m < 6; ++m) rho[m] = q[k + m][0], p[m] = LineGas<NV>::pressure(q[k + m], opt_.gamma);
+        split = enoPadeShockRow(rho, p, opt_.shock_threshold, theta_);
+      }
+    }
+    if (!split) {
+      for (int c = 0; c < NV; ++c) h[k][c] = 0.5 * (x0[NV * k + c] + x1[NV * k + c]);
+      continue;
+    }
+    h[k] = rfFaceFlux<NV>(q + k, x0 + NV * k, x1 + NV * k, true, alpha, opt_.local_lf, opt_.gamma);
+  }
+}
+
+// Rows of the block lines blocks_[c0 .. c0 + cn - 1] into bA_, bB_, bC_, bd_ (systems 2 ib and 2 ib + 1: the
+// f+ and f- systems of line blocks_[c0 + ib]).
 template <int NV>
 void DirectionSweep<NV>::blockBatchRows(const V* q, long long n, long long xs, int xm, int nown,
                                         bool periodic, double alpha, int c0, int cn) {
   constexpr int NN = NV * NV;
-  const int ncell = xm + 2 * kGhost, ns = blockSystems();
-  bA_.resize((size_t)ns * cn * nown * NN);
+  const int ncell = xm + 2 * kGhost;
+  bA_.resize((size_t)2 * cn * nown * NN);
   bB_.resize(bA_.size());
   bC_.resize(bA_.size());
-  bd_.resize((size_t)ns * cn * nown * NV);
+  bd_.resize((size_t)2 * cn * nown * NV);
   for (int ib = 0; ib < cn; ++ib) {
-    const size_t s0 = (size_t)ns * ib, s1 = s0 + ns - 1;
-    const CompactLineRows out = {true,
-                                 nullptr,
-                                 nullptr,
-                                 {&bA_[s0 * nown * NN], &bA_[s1 * nown * NN]},
-                                 {&bB_[s0 * nown * NN], &bB_[s1 * nown * NN]},
-                                 {&bC_[s0 * nown * NN], &bC_[s1 * nown * NN]},
-                                 {&bd_[s0 * nown * NV], &bd_[s1 * nown * NV]},
-                                 ns};
+    const CompactLineRows out = {
+        true,
+        nullptr,
+        nullptr,
+        {&bA_[(size_t)(2 * ib) * nown * NN], &bA_[(size_t)(2 * ib + 1) * nown * NN]},
+        {&bB_[(size_t)(2 * ib) * nown * NN], &bB_[(size_t)(2 * ib + 1) * nown * NN]},
+        {&bC_[(size_t)(2 * ib) * nown * NN], &bC_[(size_t)(2 * ib + 1) * nown * NN]},
+        {&bd_[(size_t)(2 * ib) * nown * NV], &bd_[(size_t)(2 * ib + 1) * nown * NV]}};
     const int l = blocks_[c0 + ib];
     lineCompactRows(q + (size_t)l * ncell, n, xs, xm, nown, periodic, alpha, &shock_[(size_t)l * nown], out);
   }
 }
 
-// Solves the blockSystems() cn block systems of a batch (blockBatchRows) into bx_.
+// Solves the 2 cn block systems of a batch (blockBatchRows) into bx_.
 template <int NV>
 void DirectionSweep<NV>::blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface,
                                          int cn) {
   constexpr int NN = NV * NV;
-  const int nsys = blockSystems() * cn;
-  bx_.resize((size_t)nsys * nface * NV);
+  bx_.resize((size_t)2 * cn * nface * NV);
   if (!opt_.gather_lines)
-    lines_.solve(comm, NV, nsys, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs, nface,
+    lines_.solve(comm, NV, 2 * cn, nown, bA_.data(), bB_.data(), bC_.data(), bd_.data(), periodic, xs, nface,
                  bx_.data());
   else if constexpr (NV == 3) // comparison path (1D): each system gathered to every rank
-    for (int m = 0; m < nsys; ++m) {
+    for (int m = 0; m < 2 * cn; ++m) {
       const size_t o = (size_t)m * nown * NN;
       gather_.solve(comm, NV, nown, &bA_[o], &bB_[o], &bC_[o], &bd_[(size_t)m * nown * NV], periodic, xs,
                     nface, &bx_[(size_t)m * nface * NV]);

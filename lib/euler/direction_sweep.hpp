@@ -1,21 +1,10 @@
 // Interface fluxes of all grid lines of one direction (1D: the one line; 2D/3D: the scheme applied direction by
 // direction) for the conservative finite-difference form dU_j/dt = -(h_{j+1/2} - h_{j-1/2}) / dx:
-// rf-char upwinding (rf_char.hpp; default) or Lax-Friedrichs flux splitting (line_options.hpp),
-// characteristic-wise rows with the direction's Roe eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows
-// of the scheme registry, the Hu-Adams-Shu positivity limiter (below), and for compact schemes one batched,
-// exact, distributed solve of every line of the direction (SubstructuredBlockLines): lines whose rows are all
-// Pade (or explicit) rows take the scalar solve with NV right-hand sides, the others NV x NV block systems: two
-// with Lax-Friedrichs splitting (split fluxes f+ and f-, h = h+ + h-), one with rf-char.
-//
-// rf-char on compact lines: one block system of h itself, whose row for field k at a split (CRWENO) row is
-// the left-biased compact row of l_k f where the field's speeds are > 0, the right-biased one where they are
-// < 0, and where their sign differs the explicit WENO5-Z Lax-Friedrichs row l_k h = w+(l_k f+) + w-(l_k f-)
-// (f+- = (f +- alpha_k U) / 2); Pade rows and central closures are rows of f, unchanged. Every row of the system
-// then approximates the interpolant of the same flux f, so the coupling of a row to its neighbours' unknowns is
-// consistent whatever rows those are. (HyPar instead solves the left- and right-biased systems of f and of U and
-// picks per face afterwards; in a hybrid line picking after the solves breaks the Pade relations next to the
-// shock rows, since a Pade row's neighbour is then neither system's unknown: measured, Sod N = 800 enopade6 L1
-// 1.7e-3 that way against 5e-4 with the single system.) Lines split over
+// Lax-Friedrichs flux splitting (line_options.hpp), characteristic-wise rows with the direction's Roe
+// eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry, the Hu-Adams-Shu
+// positivity limiter (below), and for compact schemes one batched, exact, distributed solve of every line of the
+// direction (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve
+// with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). Lines split over
 // several ranks are by default moved whole to one rank each (pencil transpose, LineTranspose: per batch of lines
 // two MPI_Alltoallv) and processed there serially, bitwise as on one rank; with LineOptions::transpose_lines
 // false (or fewer lines than ranks, as in 1D) the split lines are solved in place by substructuring: the
@@ -61,8 +50,7 @@
 namespace suite::euler {
 
 // One line's rows for the compact solve: scalar rows (blocks false: abc, rhs with NV right-hand sides) or the
-// nsys NV x NV block systems A[s], B[s], C[s], d[s]: with Lax-Friedrichs splitting those of the split fluxes f+
-// (s = 0) and f- (s = 1), with rf-char upwinding one system of h itself (s = 0; see rfCompactRow).
+// two NV x NV block systems A[s], B[s], C[s], d[s] of the split fluxes f+ (s = 0) and f- (s = 1).
 struct CompactLineRows {
   bool blocks;
   double* abc;
@@ -71,7 +59,6 @@ struct CompactLineRows {
   double* B[2];
   double* C[2];
   double* d[2];
-  int nsys = 2;
 };
 
 template <int NV> class DirectionSweep {
@@ -126,10 +113,11 @@ private:
   void blockBatchRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                       int c0, int cn);
   void blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface, int cn);
-  void limitFaces(const V* q, int nlines, int xm, double lambda, V* h);
-  // rf-char upwinding in effect (characteristic rows only); block lines then carry one system, not two.
+  void rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
+                 const char* shocks, const double* x0, const double* x1, V* h);
+  // rf-char upwinding in effect (characteristic rows only).
   bool rfChar() const { return opt_.rf_char && opt_.characteristic; }
-  int blockSystems() const { return rfChar() ? 1 : 2; }
+  void limitFaces(const V* q, int nlines, int xm, double lambda, V* h);
   void prepareLine(const V* q, int xm, double alpha_global);
 
   const SchemeInfo* scheme_;
