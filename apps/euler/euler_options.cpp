@@ -37,8 +37,9 @@ std::vector<suite::Choice> lineSolveChoices(int dim) {
 }
 
 const std::vector<suite::Choice> kUpwindings = {
-    {"rf-char", "each characteristic field upwinded by the sign of its Roe speed, local Lax-Friedrichs only where "
-                "it changes (HyPar's rf-char; -characteristic rows)"},
+    {"rf-char",
+     "each characteristic field upwinded by the sign of its Roe speed, local Lax-Friedrichs only where "
+     "it changes (HyPar's rf-char; -characteristic rows)"},
     {"llf", "local Lax-Friedrichs splitting of every field (-local_lf false: global)"}};
 
 const std::vector<suite::Choice> kAxes = {{"x", "along x"}, {"y", "along y"}, {"z", "along z (-dim 3)"}};

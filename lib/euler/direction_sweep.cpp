@@ -541,8 +541,9 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
 // (l_c x0 + l_c x1) / 2 plus, when `dissipate`, the Lax-Friedrichs term alpha_c (w(l_c U) - w~(l_c U)) / 2, w
 // and w~ the explicit WENO5-Z left and right values (the compact systems carry f only).
 template <int NV>
-static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, const double* x0, const double* x1,
-                                          bool dissipate, double alpha, bool local, double g) {
+static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, const double* x0,
+                                          const double* x1, bool dissipate, double alpha, bool local,
+                                          double g) {
   using G = LineGas<NV>;
   const typename G::Eigen e = G::roe(qs[2], qs[3], g);
   int sgn[NV];
@@ -574,7 +575,8 @@ static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, con
 // its owner does.
 template <int NV>
 void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic,
-                                   double alpha, const char* shocks, const double* x0, const double* x1, V* h) {
+                                   double alpha, const char* shocks, const double* x0, const double* x1,
+                                   V* h) {
   for (int k = 0; k <= xm; ++k) {
     bool split = !scheme_->hybrid;
     if (scheme_->hybrid && !boundaryFace(periodic, xs + k, n)) {

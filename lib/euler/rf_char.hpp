@@ -47,8 +47,8 @@ template <int NV> struct RfChar {
   }
   // Signs and Lax-Friedrichs speeds of the fields of the face between cells 2 and 3 of the six-cell stencil
   // lam[0..5] (cellSpeeds), roe: the face's roeSpeeds. local false: alpha_k = alpha_global.
-  static void face(const std::array<double, NV>* lam, const double roe[NV], double alpha_global, bool local, int sgn[NV],
-                   double alpha[NV]) {
+  static void face(const std::array<double, NV>* lam, const double roe[NV], double alpha_global, bool local,
+                   int sgn[NV], double alpha[NV]) {
     for (int k = 0; k < NV; ++k) {
       sgn[k] = sign(lam[2][k], roe[k], lam[3][k]);
       double a = std::abs(roe[k]);

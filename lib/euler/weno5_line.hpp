@@ -39,8 +39,8 @@ private:
   std::vector<double> qt_, ft_, speed_; // cell-major per component: qt_[j * ncell + m]
   std::vector<typename G::RoeState> roe_;
   std::vector<std::array<double, NV>> lam_; // rf: per cell the field speeds (RfChar::cellSpeeds)
-  std::vector<double> alpha_;            // per face: the Lax-Friedrichs speed
-  std::vector<typename G::Eigen> eigen_; // per face: the Roe eigenvectors
+  std::vector<double> alpha_;               // per face: the Lax-Friedrichs speed
+  std::vector<typename G::Eigen> eigen_;    // per face: the Roe eigenvectors
   std::vector<double> st_; // stencils: st_[((2 c + s) 5 + i) nface + k], element i of field c, sign s, face k
   std::vector<double> w_;  // WENO-Z values: w_[(2 c + s) nface + k]
 };
