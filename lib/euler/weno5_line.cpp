@@ -102,8 +102,10 @@ template <int NV> void Weno5Line<NV>::projectFaceRf(int k, int nface, double alp
       if (!G::leftZero(c, j)) {
         const double lcj = e.L[NV * c + j];
         const double* f = &ft_[(size_t)j * ncell_ + k];
+        for (int l = 0; l < 6; ++l) lf[l] += lcj * f[l];
+        if (sgn[c] != 0) continue; // l_c U only where the field is split
         const double* u = &qt_[(size_t)j * ncell_ + k];
-        for (int l = 0; l < 6; ++l) lf[l] += lcj * f[l], lu[l] += lcj * u[l];
+        for (int l = 0; l < 6; ++l) lu[l] += lcj * u[l];
       }
     double* sp = &st_[(size_t)(2 * c) * 5 * nface + k];
     double* sm = &st_[(size_t)(2 * c + 1) * 5 * nface + k];
