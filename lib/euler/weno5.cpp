@@ -1,4 +1,5 @@
-// Fifth-order WENO-Z reconstruction (Jiang & Shu 1996; Borges et al. 2008; Don & Borges 2013, p = 2).
+// Fifth-order WENO-Z reconstruction (Jiang & Shu 1996; Borges et al. 2008; explicit value p = 1, compact rows'
+// weights p = 2: see weno5.hpp).
 #include "euler/weno5.hpp"
 
 #include <cmath>
