@@ -1,8 +1,8 @@
 // Fifth-order compact-reconstruction WENO (CRWENO5) row with WENO-Z weights, the `crweno5` comparator and the
 // shock rows of `enopade6`. Reference: Ghosh & Baeder, SIAM J. Sci. Comput. 34 (2012) A1678, eqs. (13)-(17)
 // (three third-order compact candidates, optimal weights 1/5, 1/2, 3/10); weights: WENO-Z (Borges et al.
-// 2008) with p = 2 (weno5.hpp: why) computed from the Jiang-Shu indicators on f_{j-2} .. f_{j+2}, as in Ghosh
-// & Baeder's CRWENO5-Z variant. The row (omega = nonlinear weights):
+// 2008) with p = 2 computed from the Jiang-Shu indicators on f_{j-2} .. f_{j+2}, as in Ghosh & Baeder's
+// CRWENO5-Z variant. The row (omega = nonlinear weights):
 //   (2w1+w2)/3 h_{j-1/2} + (w1+2w2+2w3)/3 h_{j+1/2} + w3/3 h_{j+3/2} = w1/6 f_{j-1} + (5w1+5w2+w3)/6 f_j +
 //   (w2+5w3)/6 f_{j+1}
 // is not diagonally dominant when w1 > 1/2; linalg::BlockTridiagSolver handles such rows (verified, LU

@@ -1,5 +1,4 @@
-// Fifth-order WENO-Z reconstruction (Jiang & Shu 1996; Borges et al. 2008; explicit value p = 1, compact rows'
-// weights p = 2: see weno5.hpp).
+// Fifth-order WENO-Z reconstruction (Jiang & Shu 1996; Borges et al. 2008; Don & Borges 2013, p = 2).
 #include "euler/weno5.hpp"
 
 #include <cmath>

@@ -1,16 +1,9 @@
 // Fifth-order WENO-Z interface value (explicit, non-compact), the `weno5` comparator.
 // Reference: Jiang & Shu, J. Comput. Phys. 126 (1996) 202, eqs. (2.10)-(2.17) for candidates and smoothness
-// indicators; Borges, Carmona, Costa & Don, J. Comput. Phys. 227 (2008) 3191, eq. (28) for the Z weights;
-// epsilon = 1e-6 times the mean square of the stencil values (scale-invariant form of Ghosh & Baeder's 1e-6).
-// Exponent p: 1 (Borges et al.) in the explicit value weno5ZValue (the `weno5` scheme), 2 (Don & Borges,
-// J. Comput. Phys. 250 (2013) 347) in wenoZWeights (the compact CRWENO5 rows). Why (issue #18 item 3): p = 1
-// weights a candidate that crosses a jump less; on Sod / Lax at HyPar's settings (N = 200, rf-char) it lowers
-// WENO5's L1(rho) from 2.46e-3 to 2.22e-3 and from 8.94e-3 to 7.81e-3 (CRWENO5: 1.90e-3 to 1.72e-3, 7.48e-3 to
-// 6.55e-3), but in the compact rows it makes the block systems harder for the substructured solve (3D
-// explosion, enopade6, 1 vs 2 ranks: 4e-10 apart against <= 1e-12 with p = 2), so the compact rows keep p = 2.
-// Don & Borges show p = 1 loses fifth order at first-order critical points when epsilon is negligible against
-// the indicators; with the scale-relative epsilon here the measured order there is 5.3 (unit test
-// EulerReconstruction.Weno5ZIsFifthOrder).
+// indicators; Borges, Carmona, Costa & Don, J. Comput. Phys. 227 (2008) 3191, eq. (28) for the Z weights; p =
+// 2 as in Don & Borges, J. Comput. Phys. 250 (2013) 347, which keeps fifth order at first-order critical
+// points; epsilon = 1e-6 times the mean square of the stencil values (scale-invariant form of Ghosh &
+// Baeder's 1e-6).
 #pragma once
 
 #include "euler/row.hpp"
@@ -44,7 +37,7 @@ inline double weno5ZValue(double v0, double v1, double v2, double v3, double v4)
   const double tau = std::abs(b0 - b2);
   const double eps = kWenoEpsAbs + kWenoEpsRel / 5.0 * (v0 * v0 + v1 * v1 + v2 * v2 + v3 * v3 + v4 * v4);
   const double q0 = tau / (b0 + eps), q1 = tau / (b1 + eps), q2 = tau / (b2 + eps);
-  const double a0 = 0.1 * (1.0 + q0), a1 = 0.6 * (1.0 + q1), a2 = 0.3 * (1.0 + q2);
+  const double a0 = 0.1 * (1.0 + q0 * q0), a1 = 0.6 * (1.0 + q1 * q1), a2 = 0.3 * (1.0 + q2 * q2);
   const double c0 = 2.0 * v0 - 7.0 * v1 + 11.0 * v2, c1 = -v1 + 5.0 * v2 + 2.0 * v3;
   const double c2 = 2.0 * v2 + 5.0 * v3 - v4;
   return (a0 * c0 + a1 * c1 + a2 * c2) / (6.0 * (a0 + a1 + a2));
