@@ -1,5 +1,6 @@
 // Options and counters of the line schemes (DirectionSweep), shared by the 1D and 2D/3D Euler runs:
-// rf-char upwinding (rf_char.hpp) or Lax-Friedrichs flux splitting f+- = (f +- alpha U)/2 (local alpha: max |u|+c over the row's stencil; global:
+// rf-char upwinding (rf_char.hpp) or Lax-Friedrichs flux splitting f+- = (f +- alpha U)/2 (local alpha:
+// max |u|+c over the row's stencil; global:
 // over the direction; compact schemes always use the global alpha: a compact row couples h+- of its neighbours,
 // which must be split with the same alpha, otherwise the alpha U parts of f+ and f- no longer cancel and the
 // scheme is inconsistent — measured: Sod N = 200 L1(rho) 5.5e-3 with per-row alpha vs 2.4e-3 with the global

@@ -1,5 +1,6 @@
 // Face fluxes of one grid line for the `weno5` scheme (explicit fifth-order WENO-Z rows everywhere, weno5.hpp):
-// Lax-Friedrichs flux splitting or rf-char upwinding (rf_char.hpp), characteristic-wise (Roe eigenvectors of each face, gas_nd.hpp) or
+// Lax-Friedrichs flux splitting or rf-char upwinding (rf_char.hpp), characteristic-wise (Roe eigenvectors of
+// each face, gas_nd.hpp) or
 // component-wise, with the arithmetic of DirectionSweep's row-by-row path (bitwise the same fluxes), organised
 // for speed: per cell once the flux, |u| + c and the per-state part of the Roe average; per face once the
 // eigenvectors and the projection of the stencil's split fluxes (products with the structural zeros of L and R
