@@ -15,13 +15,14 @@ namespace euler_app {
 
 std::string EulerRun::checkpointTag() const {
   char tag[400];
-  std::snprintf(
-      tag, sizeof tag,
-      "%s:dim=%d:axis=%s:%s:%s:gamma=%.17g:char=%d:llf=%d:pos=%d:thr=%.17g:ppw=%.17g:cfl=%.17g:dt=%.17g:"
-      "filter=%.17g/%.17g",
-      opt_.problem.c_str(), dim(), opt_.axis.c_str(), opt_.scheme.c_str(), opt_.time.c_str(), problem_.gamma,
-      (int)opt_.characteristic, (int)opt_.local_lf, (int)opt_.positivity, opt_.shock_threshold,
-      opt_.shock_ppw, opt_.cfl, opt_.dt, opt_.filter_alpha, opt_.filter_time);
+  std::snprintf(tag, sizeof tag,
+                "%s:dim=%d:axis=%s:%s:%s:gamma=%.17g:char=%d:llf=%d:upw=%s:pos=%d:thr=%.17g:ppw=%.17g:cfl=%."
+                "17g:dt=%.17g:"
+                "filter=%.17g/%.17g",
+                opt_.problem.c_str(), dim(), opt_.axis.c_str(), opt_.scheme.c_str(), opt_.time.c_str(),
+                problem_.gamma, (int)opt_.characteristic, (int)opt_.local_lf, opt_.upwinding.c_str(),
+                (int)opt_.positivity, opt_.shock_threshold, opt_.shock_ppw, opt_.cfl, opt_.dt,
+                opt_.filter_alpha, opt_.filter_time);
   return tag;
 }
 

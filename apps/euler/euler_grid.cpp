@@ -134,6 +134,7 @@ PetscErrorCode EulerRun::setupSweep() {
   lo.gamma = problem_.gamma;
   lo.characteristic = opt_.characteristic;
   lo.local_lf = opt_.local_lf;
+  lo.rf_char = opt_.upwinding == "rf-char";
   lo.shock_threshold = opt_.shock_threshold;
   lo.shock_ppw = opt_.shock_ppw;
   lo.positivity = opt_.positivity;

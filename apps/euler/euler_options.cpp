@@ -36,6 +36,12 @@ std::vector<suite::Choice> lineSolveChoices(int dim) {
           {"substructured", "split lines solved in place (partition method); always when lines < ranks"}};
 }
 
+const std::vector<suite::Choice> kUpwindings = {
+    {"rf-char",
+     "each characteristic field upwinded by the sign of its Roe speed, local Lax-Friedrichs only where "
+     "it changes (HyPar's rf-char; -characteristic rows)"},
+    {"llf", "local Lax-Friedrichs splitting of every field (-local_lf false: global)"}};
+
 const std::vector<suite::Choice> kAxes = {{"x", "along x"}, {"y", "along y"}, {"z", "along z (-dim 3)"}};
 
 const std::vector<suite::Choice> kBoundaries = {{"periodic", "periodic (both ends)"},
@@ -68,6 +74,7 @@ PetscErrorCode readChoices(MPI_Comm comm, Options* o) {
              PETSC_ERR_ARG_OUTOFRANGE, "Invalid -axis %s: x, y%s", o->axis.c_str(),
              o->dim == 3 ? " or z" : "");
   o->implicit = isImplicit(o->time);
+  o->upwinding = findScheme(o->scheme)->rf_char_default ? "rf-char" : "llf";
   PetscFunctionReturn(0);
 }
 
@@ -88,7 +95,8 @@ PetscErrorCode createProblemOf(MPI_Comm comm, Options* o, Problem* line, Problem
   }
   // Implicit steps default to the global alpha: the local one (a max over the stencil) is not
   // differentiable, and Newton stalls on it at shocks (Sod N = 200, weno5, BDF2: stagnates at 1e-4 relative).
-  if (o->implicit) o->positivity = PETSC_FALSE, o->local_lf = PETSC_FALSE;
+  // rf-char switches fields between one-sided reconstructions: not differentiable either, so "llf" there too.
+  if (o->implicit) o->positivity = PETSC_FALSE, o->local_lf = PETSC_FALSE, o->upwinding = "llf";
   PetscFunctionReturn(0);
 }
 
@@ -134,6 +142,10 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscCall(suite::optionsBool(PetscOptionsObject, "-characteristic",
                                "Characteristic-wise reconstruction (false: component-wise)", "",
                                o->characteristic, &o->characteristic, nullptr));
+  PetscCall(suite::optionsChoice(PetscOptionsObject, "-upwinding",
+                                 "Flux upwinding of the flux-split schemes (default: rf-char for crweno5 and "
+                                 "weno5, llf for enopade6 and implicit steps; muscl2 upwinds by HLLC)",
+                                 kUpwindings, &o->upwinding));
   PetscCall(suite::optionsBool(PetscOptionsObject, "-local_lf",
                                "Local Lax-Friedrichs splitting (false: global; implicit default)", "",
                                o->local_lf, &o->local_lf, nullptr));

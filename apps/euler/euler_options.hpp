@@ -17,7 +17,8 @@ namespace euler_app {
 
 struct Options {
   int dim = 1;
-  std::string problem, scheme = "enopade6", time = "ssprk3", axis = "x", line_solve, output, reference;
+  std::string problem, scheme = "enopade6", time = "ssprk3", axis = "x", upwinding, line_solve, output,
+                       reference;
   PetscInt n[3] = {1, 1, 1}, snapshot_every = 0, max_steps = -1, spacetime_every = 0, scheme_spectrum = 0,
            line_batch_mb = 256, max_retries = 6;
   double t_final = 0.0, cfl = 0.4, dt = 0.0, shock_threshold = 0.02, shock_ppw = 8.0, filter_alpha = 0.5,

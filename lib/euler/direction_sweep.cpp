@@ -4,6 +4,7 @@
 
 #include "core/error_handler.hpp"
 #include "euler/enopade6.hpp"
+#include "euler/rf_char.hpp"
 #include "euler/weno5.hpp"
 
 #include <petsclog.h>
@@ -99,19 +100,19 @@ template <int NV> void DirectionSweep<NV>::prepareLine(const V* q, int xm, doubl
 }
 
 // Characteristic (or component-wise) rows of the split fluxes at face k: rows[0][c] for f+ (left-biased),
-// rows[1][c] for f- (right-biased).
+// rows[1][c] for f- (right-biased). unsplit (rf-char): the left- and right-biased rows of f itself.
 template <int NV>
 static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
                       RowFunction fn, bool characteristic, double g, typename LineGas<NV>::Eigen* e,
-                      Row rows[2][NV]) {
+                      Row rows[2][NV], bool unsplit = false) {
   using G = LineGas<NV>;
   if (characteristic) *e = G::roe(qs[2], qs[3], g);
   double wp[NV][6], wm[NV][6];
   for (int m = 0; m < 6; ++m) {
     typename G::V fp, fm;
     for (int c = 0; c < NV; ++c) {
-      fp[c] = 0.5 * (fs[m][c] + a * qs[m][c]);
-      fm[c] = 0.5 * (fs[m][c] - a * qs[m][c]);
+      fp[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] + a * qs[m][c]);
+      fm[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] - a * qs[m][c]);
     }
     if (characteristic) {
       fp = G::mul(e->L, fp);
@@ -128,6 +129,29 @@ static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<
   }
 }
 
+// The rf-char field signs and Lax-Friedrichs speeds of the face between cells 2 and 3 of qs[0..5] (rf_char.hpp).
+template <int NV>
+static void rfSigns(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::Eigen& e, double alpha,
+                    bool local, double g, int sgn[NV], double ac[NV]) {
+  std::array<double, NV> lam[6];
+  double roe[NV];
+  for (int m = 0; m < 6; ++m) RfChar<NV>::cellSpeeds(qs[m], g, lam[m].data());
+  RfChar<NV>::roeSpeeds(e, roe);
+  RfChar<NV>::face(lam, roe, alpha, local, sgn, ac);
+}
+
+// l_c (f +- a U) / 2 of the six cells of qs, fs: the split characteristic flux of field c.
+template <int NV>
+static void splitField(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs,
+                       const typename LineGas<NV>::Eigen& e, int c, double a, double vp[6], double vm[6]) {
+  for (int m = 0; m < 6; ++m) {
+    double lf = 0.0, lu = 0.0;
+    for (int j = 0; j < NV; ++j) lf += e.L[NV * c + j] * fs[m][j], lu += e.L[NV * c + j] * qs[m][j];
+    vp[m] = 0.5 * (lf + a * lu);
+    vm[m] = 0.5 * (lf - a * lu);
+  }
+}
+
 template <int NV>
 void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic,
                                       double alpha, V* h) {
@@ -138,7 +162,7 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     return;
   }
   if (scheme_->shock_row == weno5Row && scheme_->boundary_shock == weno5Row) { // the same rows, vectorised
-    weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic, g, h);
+    weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic, opt_.rf_char, g, h);
     return;
   }
   prepareLine(q, xm, alpha);
@@ -147,9 +171,22 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
     typename G::Eigen e;
     Row rows[2][NV];
-    splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows);
+    splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows, rfChar());
     V hc;
     for (int c = 0; c < NV; ++c) hc[c] = rows[0][c].r / rows[0][c].b + rows[1][c].r / rows[1][c].b;
+    if (rfChar()) { // rf-char: the upwind row of l_c f, or the split rows where the sign changes
+      int sgn[NV];
+      double ac[NV];
+      rfSigns<NV>(q + k, e, alpha, opt_.local_lf, g, sgn, ac);
+      for (int c = 0; c < NV; ++c) {
+        hc[c] = sgn[c] > 0 ? rows[0][c].r / rows[0][c].b : rows[1][c].r / rows[1][c].b;
+        if (sgn[c] != 0) continue;
+        double vp[6], vm[6];
+        splitField<NV>(q + k, f_.data() + k, e, c, ac[c], vp, vm);
+        const Row rp = fn(vp), rm = mirrorRow(fn, vm);
+        hc[c] = rp.r / rp.b + rm.r / rm.b;
+      }
+    }
     h[k] = opt_.characteristic ? G::mul(e.R, hc) : hc;
   }
 }
@@ -232,13 +269,13 @@ static void padeScalarRow(const typename LineGas<NV>::V* fs, RowFunction fn, int
 // and below: a copy the row functions cannot reach stays in registers across their calls.
 template <int NV>
 static void padeBlockRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                         RowFunction fn, int k, CompactLineRows out) {
+                         RowFunction fn, int k, CompactLineRows out, bool unsplit) {
   constexpr int NN = NV * NV;
   for (int c = 0; c < NV; ++c) {
     double r[2];
     for (int s = 0; s < 2; ++s) {
       double v[6];
-      for (int m = 0; m < 6; ++m) v[m] = 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
+      for (int m = 0; m < 6; ++m) v[m] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] + (s == 0 ? a : -a) * qs[m][c]);
       r[s] = fn(v).r;
     }
     for (int s = 0; s < 2; ++s) {
@@ -277,12 +314,13 @@ static void blockRowEntries(const typename LineGas<NV>::Eigen& e, const Row* row
 // when `characteristic`. On a scalar line only explicit rows may reach here.
 template <int NV>
 static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out) {
+                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out,
+                            bool unsplit) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
   typename G::Eigen e;
   Row rows[2][NV];
-  splitRows<NV>(qs, fs, a, fn, characteristic, g, &e, rows);
+  splitRows<NV>(qs, fs, a, fn, characteristic, g, &e, rows, unsplit);
   bool explicit_row = true;
   for (int s = 0; s < 2; ++s)
     for (int c = 0; c < NV; ++c)
@@ -316,6 +354,7 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
                                          bool periodic, double alpha, const char* shocks,
                                          CompactLineRows out) {
   prepareLine(q, xm, alpha);
+  const bool unsplit = out.blocks && rfChar(); // rf-char: the two systems of f (rfCombine picks per field)
   for (int k = 0; k < nown; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const V* qs = q + k;
@@ -329,9 +368,9 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
     if (!shock && !boundary && !out.blocks)
       padeScalarRow<NV>(fs, fn, k, out.abc, out.rhs);
     else if (!shock && !boundary)
-      padeBlockRow<NV>(qs, fs, a, fn, k, out);
+      padeBlockRow<NV>(qs, fs, a, fn, k, out, unsplit);
     else
-      splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out);
+      splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out, unsplit);
   }
 }
 
@@ -484,10 +523,76 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
     for (int ib = 0; ib < cn; ++ib) {
       const double* x0 = &bx_[(size_t)(2 * ib) * nface * NV];
       const double* x1 = &bx_[(size_t)(2 * ib + 1) * nface * NV];
-      V* hl = h + (size_t)blocks_[c0 + ib] * nface;
+      const int l = blocks_[c0 + ib];
+      V* hl = h + (size_t)l * nface;
+      if (rfChar()) {
+        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, nown, periodic, alpha,
+                  &shock_[(size_t)l * nown], x0, x1, hl);
+        continue;
+      }
       for (int k = 0; k < nface; ++k)
         for (int c = 0; c < NV; ++c) hl[k][c] = x0[NV * k + c] + x1[NV * k + c];
     }
+  }
+}
+
+// rf-char face flux from the left- and right-biased compact solutions x0, x1 (conserved space) of the face
+// between cells 2 and 3 of qs[0..5]: per characteristic field l_c x0 (speeds > 0), l_c x1 (< 0), else
+// (l_c x0 + l_c x1) / 2 plus, when `dissipate`, the Lax-Friedrichs term alpha_c (w(l_c U) - w~(l_c U)) / 2, w
+// and w~ the explicit WENO5-Z left and right values (the compact systems carry f only).
+template <int NV>
+static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, const double* x0,
+                                          const double* x1, bool dissipate, double alpha, bool local,
+                                          double g) {
+  using G = LineGas<NV>;
+  const typename G::Eigen e = G::roe(qs[2], qs[3], g);
+  int sgn[NV];
+  double ac[NV];
+  rfSigns<NV>(qs, e, alpha, local, g, sgn, ac);
+  typename G::V X0, X1, hc;
+  for (int c = 0; c < NV; ++c) X0[c] = x0[c], X1[c] = x1[c];
+  const typename G::V y0 = G::mul(e.L, X0), y1 = G::mul(e.L, X1);
+  for (int c = 0; c < NV; ++c) {
+    hc[c] = sgn[c] > 0 ? y0[c] : sgn[c] < 0 ? y1[c] : 0.5 * (y0[c] + y1[c]);
+    if (sgn[c] != 0 || !dissipate) continue;
+    double lu[6];
+    for (int m = 0; m < 6; ++m) {
+      lu[m] = 0.0;
+      for (int j = 0; j < NV; ++j) lu[m] += e.L[NV * c + j] * qs[m][j];
+    }
+    const double uL = weno5ZValue(lu[0], lu[1], lu[2], lu[3], lu[4]);
+    const double uR = weno5ZValue(lu[5], lu[4], lu[3], lu[2], lu[1]);
+    hc[c] += 0.5 * ac[c] * (uL - uR);
+  }
+  return G::mul(e.R, hc);
+}
+
+// rf-char face fluxes h[0 .. xm] of one block line (q: its cells; shocks: its owned rows' shock flags) from the
+// solutions x0, x1 of its systems (the left- and right-biased rows of f): Lax-Friedrichs dissipation for the
+// fields of mixed sign at the split rows (shock rows, WENO closures) only; at Pade rows and central closures
+// h = (x0 + x1) / 2 (both are central there, and the Pade relations hold for the mean whatever the neighbours
+// are). The face past the owned rows (the next rank's first) is classified by the sensor on the same cells, as
+// its owner does.
+template <int NV>
+void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic,
+                                   double alpha, const char* shocks, const double* x0, const double* x1,
+                                   V* h) {
+  for (int k = 0; k <= xm; ++k) {
+    bool split = !scheme_->hybrid;
+    if (scheme_->hybrid && !boundaryFace(periodic, xs + k, n)) {
+      if (k < nown) {
+        split = shocks[k] != 0;
+      } else {
+        double rho[6], p[6];
+        for (int m = 0; m < 6; ++m) rho[m] = q[k + m][0], p[m] = LineGas<NV>::pressure(q[k + m], opt_.gamma);
+        split = enoPadeShockRow(rho, p, opt_.shock_threshold, theta_);
+      }
+    }
+    if (!split) {
+      for (int c = 0; c < NV; ++c) h[k][c] = 0.5 * (x0[NV * k + c] + x1[NV * k + c]);
+      continue;
+    }
+    h[k] = rfFaceFlux<NV>(q + k, x0 + NV * k, x1 + NV * k, true, alpha, opt_.local_lf, opt_.gamma);
   }
 }
 

@@ -1,15 +1,26 @@
 // Interface fluxes of all grid lines of one direction (1D: the one line; 2D/3D: the scheme applied direction by
 // direction) for the conservative finite-difference form dU_j/dt = -(h_{j+1/2} - h_{j-1/2}) / dx:
-// Lax-Friedrichs flux splitting (line_options.hpp), characteristic-wise rows with the direction's Roe
-// eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry, the Hu-Adams-Shu
-// positivity limiter (below), and for compact schemes one batched, exact, distributed solve of every line of the
-// direction (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take the scalar solve
-// with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-). Lines split over
-// several ranks are by default moved whole to one rank each (pencil transpose, LineTranspose: per batch of lines
-// two MPI_Alltoallv) and processed there serially, bitwise as on one rank; with LineOptions::transpose_lines
+// Lax-Friedrichs flux splitting (line_options.hpp) or rf-char upwinding (rf_char.hpp), characteristic-wise rows
+// with the direction's Roe eigenvectors (gas_nd.hpp), the ENO-Pade / CRWENO / WENO rows of the scheme registry,
+// the Hu-Adams-Shu positivity limiter (below), and for compact schemes one batched, exact, distributed solve of
+// every line of the direction (SubstructuredBlockLines): lines whose rows are all Pade (or explicit) rows take
+// the scalar solve with NV right-hand sides, the others two NV x NV block systems (split fluxes f+ and f-).
+// Lines split over several ranks are by default moved whole to one rank each (pencil transpose, LineTranspose:
+// per batch of lines two MPI_Alltoallv) and processed there serially, bitwise as on one rank; with LineOptions::transpose_lines
 // false (or fewer lines than ranks, as in 1D) the split lines are solved in place by substructuring: the
 // block/scalar decision is reduced over the ranks that share a line (one Allreduce of the line flags), then per
 // batch one Allgather and one Allreduce. Either way the messages per call are O(1) in the number of lines.
+//
+// rf-char on block lines (HyPar's way, Ghosh & Baeder 2012 sec. 4): the two block systems carry the left- and the
+// right-biased rows of f itself (no splitting; Pade rows and central closures are the same in both), and after
+// the solves each face picks per characteristic field (rfCombine): l_k x_left where the field's speeds are > 0,
+// l_k x_right where they are < 0, else their mean plus the Lax-Friedrichs term alpha_k (u_L - u_R) / 2 with
+// explicit WENO5-Z values of l_k U (HyPar solves two more systems for U). Each system keeps rows of one bias
+// throughout, so it is as well conditioned and as exactly solved as the split ones. Two designs that do not work,
+// measured: feeding the pick into the split systems (an upwinded field's row carrying l_k f in the f+ system and
+// nothing in f-) makes a row's neighbours unknowns of another function, an O(1) inconsistency (Sod blows up);
+// one system of h with each field's row of its own bias mixes left- and right-biased rows in one block row,
+// which the block Thomas sweep does not solve accurately (3D explosion, 1 vs 2 ranks: 3e-5 apart).
 //
 // Positivity (Hu, Adams & Shu, J. Comput. Phys. 242 (2013) 169; Zhang & Shu, J. Comput. Phys. 229 (2010) 8918).
 // One forward-Euler stage U_j - sum_d lambda_d (h_{j+1/2} - h_{j-1/2}), lambda_d = dt/dx_d, is the convex
@@ -113,6 +124,10 @@ private:
   void blockBatchRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                       int c0, int cn);
   void blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface, int cn);
+  void rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
+                 const char* shocks, const double* x0, const double* x1, V* h);
+  // rf-char upwinding in effect (characteristic rows only).
+  bool rfChar() const { return opt_.rf_char && opt_.characteristic; }
   void limitFaces(const V* q, int nlines, int xm, double lambda, V* h);
   void prepareLine(const V* q, int xm, double alpha_global);
 

@@ -7,7 +7,9 @@
 // J. Comput. Phys. 192 (2003) 365.
 //
 // Variant implemented (and why): a row-wise hybrid. Shock rows are CRWENO5 rows (Ghosh & Baeder 2012) with
-// WENO-Z weights (p = 2), applied upwind to the split fluxes f+ and f- in characteristic variables; all other
+// WENO-Z weights (p = 2), applied upwind to the split fluxes f+ and f- in characteristic variables (by default;
+// -upwinding rf-char upwinds each field by its Roe speed instead, rf_char.hpp, which costs the hybrid accuracy
+// on Sod: its Pade rows next to the less dissipative shock rows shed more grid-scale waves); all other
 // rows are the Pade row, which is central, so f+ + f- = f and the smooth-flow scheme is the dissipation-free
 // sixth-order Pade scheme. CRWENO rows rather than Wang & Huang's original ENO-Pade stencils: they share the
 // tridiagonal structure, need no stencil selection (nonlinear weights instead), and WENO-Z weights keep fifth

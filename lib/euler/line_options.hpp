@@ -1,5 +1,6 @@
 // Options and counters of the line schemes (DirectionSweep), shared by the 1D and 2D/3D Euler runs:
-// Lax-Friedrichs flux splitting f+- = (f +- alpha U)/2 (local alpha: max |u|+c over the row's stencil; global:
+// rf-char upwinding (rf_char.hpp) or Lax-Friedrichs flux splitting f+- = (f +- alpha U)/2 (local alpha:
+// max |u|+c over the row's stencil; global:
 // over the direction; compact schemes always use the global alpha: a compact row couples h+- of its neighbours,
 // which must be split with the same alpha, otherwise the alpha U parts of f+ and f- no longer cancel and the
 // scheme is inconsistent — measured: Sod N = 200 L1(rho) 5.5e-3 with per-row alpha vs 2.4e-3 with the global
@@ -17,8 +18,12 @@ constexpr double kPositivityCfl = 0.5;
 
 struct LineOptions {
   double gamma = 1.4;
-  bool characteristic = true;    // false: component-wise rows
-  bool local_lf = true;          // false: global Lax-Friedrichs alpha
+  bool characteristic = true; // false: component-wise rows
+  bool local_lf = true;       // false: global Lax-Friedrichs alpha
+  // rf-char upwinding of the characteristic fields (rf_char.hpp; characteristic rows only): Lax-Friedrichs only
+  // for the fields whose speed changes sign at a face. false: Lax-Friedrichs splitting of every field. The
+  // Euler app's default comes from the scheme (SchemeInfo::rf_char_default).
+  bool rf_char = true;
   double shock_threshold = 0.02; // ENO-Pade sensor: amplitude test (Jameson phi)
   double shock_ppw = 8.0;        // ENO-Pade sensor: resolution test, points per wavelength (0: off)
   bool positivity = true;

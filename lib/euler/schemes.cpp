@@ -10,13 +10,13 @@ namespace suite::euler {
 namespace {
 const SchemeInfo kSchemes[] = {
     {"enopade6", "6th-order Pade core, CRWENO5-Z rows at discontinuities (ENO-Pade hybrid)", true, true,
-     false, padeRow, crweno5Row, central6Row, weno5Row, 6},
+     false, padeRow, crweno5Row, central6Row, weno5Row, 6, false},
     {"crweno5", "5th-order compact-reconstruction WENO-Z (Ghosh & Baeder 2012)", true, false, false,
-     crweno5Row, crweno5Row, weno5Row, weno5Row, 5},
+     crweno5Row, crweno5Row, weno5Row, weno5Row, 5, true},
     {"weno5", "5th-order WENO-Z, explicit (Jiang & Shu 1996; Borges et al. 2008)", false, false, false,
-     weno5Row, weno5Row, weno5Row, weno5Row, 5},
+     weno5Row, weno5Row, weno5Row, weno5Row, 5, true},
     {"muscl2", "2nd-order MUSCL (van Leer limiter) + HLLC", false, false, true, nullptr, nullptr, nullptr,
-     nullptr, 2},
+     nullptr, 2, true},
 };
 } // namespace
 

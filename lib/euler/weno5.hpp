@@ -3,7 +3,11 @@
 // indicators; Borges, Carmona, Costa & Don, J. Comput. Phys. 227 (2008) 3191, eq. (28) for the Z weights; p =
 // 2 as in Don & Borges, J. Comput. Phys. 250 (2013) 347, which keeps fifth order at first-order critical
 // points; epsilon = 1e-6 times the mean square of the stencil values (scale-invariant form of Ghosh &
-// Baeder's 1e-6).
+// Baeder's 1e-6). Measured alternative (issue #18 item 3), not taken: p = 1 (Borges et al.) lowers WENO5's
+// L1(rho) at HyPar's Sod / Lax settings (N = 200, rf-char) from 2.46e-3 to 2.22e-3 and 8.94e-3 to 7.81e-3 and
+// keeps order 5.3 at critical points here (scale-relative epsilon), but WENO5 without the positivity limiter
+// then fails LeBlanc at -cfl 0.4 (p = 2: completes), and in the CRWENO5 rows the substructured solve drifts
+// (3D explosion, 1 vs 2 ranks: 4e-10 apart).
 #pragma once
 
 #include "euler/row.hpp"

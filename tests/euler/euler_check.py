@@ -42,6 +42,27 @@ def sod():
     check(e <= 2.8e-3, f"Sod N=200 enopade6 L1(rho) = {e:.4e} <= 2.8e-3")
 
 
+def hypar():
+    """Issue #18 item 3: L1(rho) at HyPar's settings (cell-centred grid, fixed dt, SSP-RK3; Sod dt = 1e-3, t = 0.2;
+    Lax dt = 5e-4, t = 0.13; N = 200) against HyPar's figures (CRWENO5 with rf-char upwinding: Sod 1.86e-3, Lax
+    7.28e-3; WENO5: Sod 2.39e-3). Measured here (scripts/bench/euler-hypar-compare): crweno5 1.899e-3 / 7.479e-3,
+    weno5 2.458e-3 / 8.941e-3 (rf-char, their default), enopade6 2.401e-3 / 8.742e-3 (Lax-Friedrichs, its default).
+    Bounds: the measured values + ~2%. Not met: the issue's enopade6 targets (<= 1.86e-3 / 7.28e-3; rf-char makes
+    enopade6 worse on Sod: 3.09e-3), and crweno5 / weno5 stay 2-3% above HyPar's. Also asserted: rf-char beats
+    Lax-Friedrichs splitting for crweno5 and weno5 on both tubes."""
+    cases = [("sod", 1e-3, 0.2), ("lax", 5e-4, 0.13)]
+    bounds = {("crweno5", "sod"): 1.94e-3, ("crweno5", "lax"): 7.63e-3, ("weno5", "sod"): 2.51e-3,
+              ("weno5", "lax"): 9.12e-3, ("enopade6", "sod"): 2.45e-3, ("enopade6", "lax"): 8.92e-3}
+    for (scheme, problem), bound in bounds.items():
+        dt, tf = next((c[1], c[2]) for c in cases if c[0] == problem)
+        base = ["-problem", problem, "-nx", 200, "-dt", dt, "-t_final", tf, "-scheme", scheme, "-error", "-quiet"]
+        e = error(run(base))
+        check(e <= bound, f"{problem} N=200 fixed dt {scheme}: L1(rho) {e:.4e} <= {bound}")
+        if scheme != "enopade6":
+            e_llf = error(run(base + ["-upwinding", "llf"]))
+            check(e < 0.9 * e_llf, f"{problem} {scheme}: rf-char {e:.4e} < 0.9 x Lax-Friedrichs {e_llf:.4e}")
+
+
 def shu_osher():
     """Shu-Osher N=400 (enopade6) against an N=6400 WENO5 reference. The reference is data, not the code under
     test: with SUITE_REFERENCE_DIR set (scripts/test sets it, emptied, for both of its stages) it is computed once
@@ -69,14 +90,21 @@ def conservation():
 
 def ranks():
     with tempfile.TemporaryDirectory() as d:
-        for problem, scheme in [("sod", "enopade6"), ("density_wave", "crweno5"), ("blast", "weno5")]:
-            one = os.path.join(d, f"{problem}1.h5")
-            run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-output", one, "-quiet"])
+        # rf-char upwinding (crweno5, weno5 by default; enopade6 on request): the face pick after the compact
+        # solves at the face shared with the next rank (sod/crweno5, sod/enopade6 rf-char).
+        for problem, scheme, extra in [("sod", "enopade6", []), ("density_wave", "crweno5", []),
+                                       ("blast", "weno5", []), ("sod", "crweno5", []),
+                                       ("sod", "enopade6", ["-upwinding", "rf-char"])]:
+            one = os.path.join(d, f"{problem}1.h5" if not extra and scheme == "enopade6" else
+                               f"{problem}_{scheme}{len(extra)}_1.h5")
+            run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-output", one, "-quiet"]
+                + extra)
             out = run(["-problem", problem, "-scheme", scheme, "-nx", 120, "-max_steps", 60, "-reference", one,
-                       "-error", "-quiet"], np_=2)
+                       "-error", "-quiet"] + extra, np_=2)
             m = re.search(r"reference max relative difference (\S+)", out)
             v = float(m.group(1))
-            check(v <= 1e-12, f"{problem}/{scheme}: 1 vs 2 ranks max relative difference {v:.3e} <= 1e-12")
+            check(v <= 1e-12, f"{problem}/{scheme} {' '.join(extra)}: 1 vs 2 ranks max relative difference "
+                  f"{v:.3e} <= 1e-12")
         # 3 ranks, and the substructured solve against the gathered one at 2 ranks.
         for np_, extra in [(3, []), (2, ["-line_solve", "gather"])]:
             out = run(["-problem", "sod", "-nx", 120, "-max_steps", 60, "-reference", os.path.join(d, "sod1.h5"),

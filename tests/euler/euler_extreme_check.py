@@ -35,7 +35,9 @@ def positive_finite(path):
 
 
 # L1(rho) against the exact solution, LeBlanc N = 200 at t = 0.1 (measured at 1 and 2 ranks, see leblanc()).
-# Measured 2.586e-3, 2.587e-3, 2.717e-3, 2.266e-3 (the same at 1 and 2 ranks); bounds with ~15% margin.
+# Measured 2.586e-3, 2.587e-3, 2.717e-3, 2.266e-3 (the same at 1 and 2 ranks); bounds with ~15% margin. With
+# rf-char upwinding, the default of crweno5 and weno5 since issue #18 item 3, those two measure 2.919e-3 and
+# 2.985e-3 (rf-char is 10-13% less accurate than Lax-Friedrichs on this case; the bounds are kept, not loosened).
 LEBLANC_L1 = {"enopade6": 3.0e-3, "crweno5": 3.0e-3, "weno5": 3.1e-3, "muscl2": 2.6e-3}
 
 
@@ -56,8 +58,20 @@ def leblanc():
                 check(e <= bound, f"{scheme} {np_} rank(s): L1(rho) {e:.3e} <= {bound}")
                 counts.append(retries)
             check(counts[0] == counts[1], f"{scheme}: steps retried {counts[0]} at 1 and 2 ranks")
-            if scheme in ("enopade6", "crweno5"):  # step 1's stages reach CFL 0.60 and 0.70 from the initial 0.4
+            if scheme == "enopade6":  # step 1's stages reach CFL 0.60 from the initial 0.4
                 check(counts[0] >= 1, f"{scheme}: the retry is exercised ({counts[0]} step(s) retried)")
+        # crweno5 with Lax-Friedrichs splitting (its default before rf-char): step 1's stages reach CFL 0.70, so
+        # the retry is exercised at 1 and 2 ranks (with rf-char the stage speeds stay below the bound: no retry).
+        counts = []
+        for np_ in (1, 2):
+            h5 = os.path.join(d, f"crweno5_llf{np_}.h5")
+            out = run(LEBLANC + ["-scheme", "crweno5", "-upwinding", "llf", "-output", h5], np_)
+            ok, retries, rmin, pmin = positive_finite(h5)
+            check(ok and retries == retried(out), f"crweno5 -upwinding llf {np_} rank(s): positive, finite, "
+                  f"{retries} retried")
+            counts.append(retries)
+        check(counts[0] == counts[1] and counts[0] >= 1,
+              f"crweno5 -upwinding llf: the retry is exercised ({counts} step(s) retried at 1, 2 ranks)")
 
 
 def stage_retry():
