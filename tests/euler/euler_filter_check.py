@@ -18,7 +18,6 @@ import importlib.util
 import math
 import os
 import re
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -26,26 +25,9 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-BIN = os.environ.get("SUITE_BIN", "build/bin")
-MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
+from euler_harness import check, run
+
 SOURCE = Path(os.environ.get("SUITE_SOURCE", Path(__file__).resolve().parents[2]))
-
-
-def run(args, np_=1):
-    cmd = [MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler")] + [str(a) for a in args]
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900, env=env)
-    print("$ " + " ".join(cmd))
-    print(p.stdout[-2000:])
-    if p.returncode != 0:
-        raise SystemExit(f"FAIL: exit {p.returncode}")
-    return p.stdout
-
-
-def check(cond, msg):
-    print(("OK: " if cond else "FAIL: ") + msg)
-    if not cond:
-        raise SystemExit(1)
 
 
 def l1_error(out):
