@@ -10,15 +10,8 @@ import subprocess
 import sys
 import tempfile
 
-from euler_harness import BIN, MPIEXEC, check, run
+from euler_harness import BIN, MPIEXEC, check, error, run
 
-
-
-def error(out, var="rho", norm="L1"):
-    m = re.search(rf"error {var}: L1 (\S+) L2 (\S+) Linf (\S+)", out)
-    if not m:
-        raise SystemExit(f"FAIL: no error line for {var}")
-    return float(m.group({"L1": 1, "L2": 2, "Linf": 3}[norm]))
 
 
 def density_wave_order():

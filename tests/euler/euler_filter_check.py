@@ -25,23 +25,16 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from euler_harness import check, run
+from euler_harness import check, error, run
 
 SOURCE = Path(os.environ.get("SUITE_SOURCE", Path(__file__).resolve().parents[2]))
-
-
-def l1_error(out):
-    m = re.search(r"error rho: L1 (\S+)", out)
-    if not m:
-        raise SystemExit("FAIL: no error line")
-    return float(m.group(1))
 
 
 def density_wave_errors(extra):
     errs = []
     for n in (20, 40, 80, 160):
         dx = 2.0 / n
-        errs.append(l1_error(run(["-problem", "density_wave", "-nx", n, "-time", "rk4", "-dt", 0.25 * dx ** 1.5,
+        errs.append(error(run(["-problem", "density_wave", "-nx", n, "-time", "rk4", "-dt", 0.25 * dx ** 1.5,
                                   "-t_final", 0.5, "-error"] + extra)))
     return errs, [math.log2(errs[i - 1] / errs[i]) for i in range(1, len(errs))]
 

@@ -1,6 +1,7 @@
 """What every Euler test script shares: running build/bin/euler under mpiexec (output echoed, a non-zero exit a
 failure unless expected) and the OK/FAIL check line. SUITE_BIN and SUITE_MPIEXEC choose the binaries."""
 import os
+import re
 import subprocess
 
 BIN = os.environ.get("SUITE_BIN", "build/bin")
@@ -24,3 +25,11 @@ def check(cond, msg):
     print(("OK: " if cond else "FAIL: ") + msg)
     if not cond:
         raise SystemExit(1)
+
+
+def error(out, var="rho", norm="L1"):
+    """The norm of the error line `error VAR: L1 a L2 b Linf c` that -error prints."""
+    m = re.search(rf"error {var}: L1 (\S+) L2 (\S+) Linf (\S+)", out)
+    if not m:
+        raise SystemExit(f"FAIL: no error line for {var}")
+    return float(m.group({"L1": 1, "L2": 2, "Linf": 3}[norm]))

@@ -13,15 +13,8 @@ import tempfile
 import h5py
 import numpy as np
 
-from euler_harness import check, run
+from euler_harness import check, error, run
 
-
-
-def l1_error(out):
-    m = re.search(r"error rho: L1 (\S+) L2 (\S+) Linf (\S+)", out)
-    if not m:
-        raise SystemExit("FAIL: no error line")
-    return float(m.group(1))
 
 
 def fields(path):
@@ -47,7 +40,7 @@ def vortex_order():
         for n in ns:
             out = run(["-dim", 2, "-problem", "isentropic_vortex", "-nx", n, "-ny", n, "-time", "rk4", "-dt", 4e-3,
                        "-t_final", 0.5, "-error", "-quiet"] + extra)
-            errs.append(l1_error(out))
+            errs.append(error(out))
         o = orders(ns, errs)
         total = math.log(errs[0] / errs[-1]) / math.log(ns[-1] / ns[0])
         print(label, "errors", errs, "orders", o)
