@@ -17,7 +17,8 @@ using OrderingFn = std::vector<int> (*)(const Graph& g); // returns perm, perm[n
 
 std::vector<int> orderNatural(const Graph& g);
 // SPARSEPAK's GENRCM (FNROOT, RCM) with (rcm) or without (cm) its reversal of each component; the input order
-// (natural) where that has a smaller bandwidth or a smaller profile.
+// (natural) where that has a smaller bandwidth or a smaller profile. Neighbours of equal degree are taken in
+// adjacency order: by node number for sorted lists (graphOfMatrix and nodeGraph sort them).
 std::vector<int> orderCuthillMcKee(const Graph& g);
 std::vector<int> orderReverseCuthillMcKee(const Graph& g);
 std::vector<int> orderAmd(const Graph& g);
