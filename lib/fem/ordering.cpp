@@ -25,8 +25,10 @@ struct Entry {
 const Entry kOrderings[] = {
     {"natural", orderNatural, "the given node order (no permutation)"},
     {"cm", orderCuthillMcKee,
-     "Cuthill-McKee from a pseudo-peripheral node (natural if its profile is smaller)"},
-    {"rcm", orderReverseCuthillMcKee, "reverse Cuthill-McKee: bandwidth/profile reducing (same guard)"},
+     "Cuthill-McKee as SPARSEPAK's GENRCM before reversal (natural if its bandwidth or profile is smaller)"},
+    {"rcm", orderReverseCuthillMcKee,
+     "reverse Cuthill-McKee exactly as SPARSEPAK's GENRCM (George & Liu 1981): bandwidth/profile reducing "
+     "(same guard)"},
     {"amd", orderAmd, "approximate minimum degree (SuiteSparse AMD): fill reducing"},
     {"metis", orderMetis, "nested dissection (METIS_NodeND): fill reducing"},
     {"auto", orderAuto, "the one of rcm, amd and metis with the smallest symbolic nnz(L)"},

@@ -1,5 +1,5 @@
 // Fill/bandwidth reducing orderings of a symmetric graph, registry by name (one file each):
-// natural, cm, rcm (own, George & Liu 1981), amd (SuiteSparse), metis (METIS_NodeND), auto (min predicted
+// natural, cm, rcm (own, SPARSEPAK's GENRCM of George & Liu 1981), amd (SuiteSparse), metis (METIS_NodeND), auto (min predicted
 // nnz(L)).
 #pragma once
 
@@ -16,14 +16,17 @@ namespace suite::fem {
 using OrderingFn = std::vector<int> (*)(const Graph& g); // returns perm, perm[new] = old
 
 std::vector<int> orderNatural(const Graph& g);
-std::vector<int> orderCuthillMcKee(const Graph& g); // CM; returns natural if that has a smaller profile
-std::vector<int> orderReverseCuthillMcKee(const Graph& g); // RCM; same guard
+// SPARSEPAK's GENRCM (FNROOT, RCM) with (rcm) or without (cm) its reversal of each component; the input order
+// (natural) where that has a smaller bandwidth or a smaller profile. Neighbours of equal degree are taken in
+// adjacency order: by node number for sorted lists (graphOfMatrix and nodeGraph sort them).
+std::vector<int> orderCuthillMcKee(const Graph& g);
+std::vector<int> orderReverseCuthillMcKee(const Graph& g);
 std::vector<int> orderAmd(const Graph& g);
 std::vector<int> orderMetis(const Graph& g);
 std::vector<int> orderAuto(const Graph& g); // the one of rcm/amd/metis with the smallest symbolic nnz(L)
 
-// George & Liu's pseudo-peripheral node finder (SPARSEPAK FNROOT) in the component of root, restricted to
-// vertices with mask[v] != 0.
+// George & Liu's pseudo-peripheral node finder (SPARSEPAK FNROOT: the last candidate tried) in the component
+// of root, restricted to vertices with mask[v] != 0.
 int pseudoPeripheralNode(const Graph& g, int root, const std::vector<char>& mask);
 
 std::vector<std::string> orderingNames(); // natural cm rcm amd metis auto

@@ -1,13 +1,23 @@
-// Cuthill-McKee (Cuthill & McKee 1969) and reverse Cuthill-McKee (George 1971) orderings: breadth-first
-// search from a pseudo-peripheral node (George & Liu 1979, SPARSEPAK FNROOT/RCM; George & Liu 1981, ch. 4),
-// neighbours visited by increasing degree, each connected component in turn. Never worse than the input order
-// in profile.
-// Cost, one pass over the edges per search and no allocation inside the searches (work arrays once per call):
-// the first search of FNROOT is itself the Cuthill-McKee traversal from the start node (a CM order is a BFS:
-// same levels), which also accumulates the profiles of the CM, RCM and input orders on the way (the
-// never-worse guard needs no extra pass); the searches that only check a candidate root are plain BFS. A
-// typical mesh takes two passes (CM from the start node, BFS from the candidate: no more levels, keep the
-// start node) instead of three plus the guard's pass.
+// Cuthill-McKee (Cuthill & McKee 1969) and reverse Cuthill-McKee (George 1971) orderings exactly as SPARSEPAK's
+// GENRCM, FNROOT, ROOTLS, RCM and DEGREE compute them (George & Liu 1981, "Computer Solution of Large Sparse
+// Positive Definite Systems", ch. 4):
+//  - GENRCM: nodes 0..n-1 in input order; each node not yet numbered starts its component: FNROOT from it,
+//    then RCM from the root found, the component numbered after the earlier ones (and reversed on its own).
+//  - FNROOT: level structure (ROOTLS: breadth first, each level in discovery order, neighbours in adjacency
+//    order) of the root; unless it has one level or is a chain, the first node of minimum degree in its last
+//    level becomes the candidate; if the candidate's structure is deeper, repeat from it, else stop. The
+//    candidate is the root returned in both cases (SPARSEPAK overwrites ROOT before the test).
+//  - RCM: breadth first from the root, the unnumbered neighbours of each node appended in adjacency order,
+//    then sorted by increasing degree (linear insertion: stable, ties keep the adjacency order, which is by
+//    increasing node number since Graph's lists are sorted); the component's order reversed (CM: not).
+//  Degrees are within the component (DEGREE; diagonal excluded).
+// Guard: the input order is returned when the result has a larger bandwidth or a larger profile than it (of the
+// Harwell-Boeing matrices in ../shared/data/matrices, SPARSEPAK's RCM is worse than the input order on bcsstk04,
+// bcsstk06 and bcsstk09; tests/reorder/test_reorder_sparsepak.py checks the others against an independent
+// transcription of SPARSEPAK).
+// Cost: FNROOT's searches are plain breadth-first searches (a typical mesh: two or three), then one
+// Cuthill-McKee traversal from the root found, which also accumulates the profiles and bandwidths of the CM,
+// RCM and input orders (the guard needs no extra pass). No allocation inside the searches.
 #include "fem/ordering.hpp"
 
 #include <algorithm>
@@ -19,8 +29,9 @@ namespace {
 constexpr int kMasked = INT_MAX; // outside the subgraph (pseudoPeripheralNode's mask)
 
 struct Traversal {
-  int size = 0, nlev = 0, last_level = 0; // vertices, levels, start of the last level in the order
+  int size = 0; // vertices numbered
   long long prof_cm = 0, prof_rcm = 0, prof_nat = 0;
+  int bw_cm = 0, bw_rcm = 0, bw_nat = 0;
 };
 
 struct Work {
@@ -45,13 +56,21 @@ struct Work {
   }
 };
 
-// Cuthill-McKee traversal of the unvisited vertices reachable from root into out[0..size): BFS levels (a
-// level is what the expansion of the previous one appended), the new neighbours of a vertex appended by
-// increasing degree (stable: ties keep the adjacency order). Profiles on the way: row p of the CM order starts
-// at the smallest position among its neighbours, row n-1-p of the reversed order at the largest (all
-// neighbours are numbered once p is expanded; kReverse: this one, else the CM one), input row v at its
-// smallest neighbour id.
-template <bool kWithMask, bool kReverse> Traversal cmTraversal(const Graph& g, int root, Work& w, int* out) {
+// Adds row p of the orders (input vertex v, smallest neighbour id vmin; smallest/largest CM position among
+// its neighbours mn/mx, all numbered once p is expanded) to the profiles and bandwidths: CM row p starts at
+// mn, RCM row size-1-p at size-1-mx, input row v at vmin.
+template <bool kReverse> void addRow(Traversal& t, int p, int mn, int mx, int v, int vmin) {
+  if (kReverse)
+    t.prof_rcm += mx - p, t.bw_rcm = std::max(t.bw_rcm, mx - p);
+  else
+    t.prof_cm += p - mn, t.bw_cm = std::max(t.bw_cm, p - mn);
+  t.prof_nat += v - vmin, t.bw_nat = std::max(t.bw_nat, v - vmin);
+}
+
+// SPARSEPAK RCM before its reversal: Cuthill-McKee traversal of the unvisited vertices reachable from root
+// into out[0..size): breadth first, the new neighbours of a vertex appended by increasing degree (stable
+// insertion sort). Profiles on the way (addRow).
+template <bool kReverse> Traversal cmTraversal(const Graph& g, int root, Work& w, int* out) {
   w.newSearch();
   const int* xadj = g.xadj.data();
   const int* adj = g.adj.data();
@@ -63,60 +82,57 @@ template <bool kWithMask, bool kReverse> Traversal cmTraversal(const Graph& g, i
   int head = 0, tail = 0;
   out[tail++] = root;
   mark[root] = base;
-  while (head < tail) {
-    t.last_level = head;
-    ++t.nlev;
-    const int end = tail;
-    for (; head < end; ++head) {
-      const int v = out[head], p = head;
-      int mn = p, mx = p, vmin = v, cnt = 0;
-      for (int k = xadj[v], k1 = xadj[v + 1]; k < k1; ++k) {
-        const int u = adj[k];
-        const int m = mark[u];
-        if (kWithMask && m == kMasked) continue;
-        vmin = std::min(vmin, u);
-        if (m >= base) {
-          if (kReverse)
-            mx = std::max(mx, m - base);
-          else
-            mn = std::min(mn, m - base);
-        } else {
-          mark[u] = base;
-          nb[cnt++] = u;
-        }
+  for (; head < tail; ++head) {
+    const int v = out[head], p = head;
+    int mn = p, mx = p, vmin = v, cnt = 0;
+    for (int k = xadj[v], k1 = xadj[v + 1]; k < k1; ++k) {
+      const int u = adj[k];
+      const int m = mark[u];
+      vmin = std::min(vmin, u);
+      if (m >= base) {
+        if (kReverse)
+          mx = std::max(mx, m - base);
+        else
+          mn = std::min(mn, m - base);
+      } else {
+        mark[u] = base;
+        nb[cnt++] = u;
       }
-      for (int i = 1; i < cnt; ++i) { // stable insertion sort of the few new neighbours by degree
-        const int u = nb[i], du = deg[u];
-        int j = i;
-        for (; j > 0 && deg[nb[j - 1]] > du; --j) nb[j] = nb[j - 1];
-        nb[j] = u;
-      }
-      for (int i = 0; i < cnt; ++i) mark[nb[i]] = base + tail, out[tail++] = nb[i];
-      if (cnt > 0) mx = tail - 1;
-      if (kReverse)
-        t.prof_rcm += mx - p;
-      else
-        t.prof_cm += p - mn;
-      t.prof_nat += v - vmin;
     }
+    for (int i = 1; i < cnt; ++i) { // stable insertion sort of the few new neighbours by degree
+      const int u = nb[i], du = deg[u];
+      int j = i;
+      for (; j > 0 && deg[nb[j - 1]] > du; --j) nb[j] = nb[j - 1];
+      nb[j] = u;
+    }
+    for (int i = 0; i < cnt; ++i) mark[nb[i]] = base + tail, out[tail++] = nb[i];
+    if (cnt > 0) mx = tail - 1;
+    addRow<kReverse>(t, p, mn, mx, v, vmin);
   }
   t.size = tail;
   return t;
 }
 
-// Number of BFS levels from root over the unvisited (unmasked) vertices, stopping once it exceeds stop.
-int bfsLevels(const Graph& g, int root, Work& w, int stop) {
+struct Levels {
+  int nlev = 0, size = 0, last_level = 0; // levels, vertices, start of the last level in w.bfs
+};
+
+// SPARSEPAK ROOTLS: breadth-first search from root over the unvisited (unmasked) vertices into w.bfs, each
+// level in discovery order (adjacency order, no sorting).
+Levels rootedLevels(const Graph& g, int root, Work& w) {
   w.newSearch();
   const int* xadj = g.xadj.data();
   const int* adj = g.adj.data();
   int* mark = w.mark.data();
   int* q = w.bfs.data();
   const int base = w.base;
-  int head = 0, tail = 0, nlev = 0;
+  Levels ls;
+  int head = 0, tail = 0;
   q[tail++] = root;
   mark[root] = base;
-  while (head < tail && nlev <= stop) {
-    ++nlev;
+  while (head < tail) {
+    ls.last_level = head;
+    ++ls.nlev;
     for (const int end = tail; head < end; ++head) {
       const int v = q[head];
       for (int k = xadj[v], k1 = xadj[v + 1]; k < k1; ++k) {
@@ -125,7 +141,8 @@ int bfsLevels(const Graph& g, int root, Work& w, int stop) {
       }
     }
   }
-  return nlev;
+  ls.size = tail;
+  return ls;
 }
 
 // Degree of v within the subgraph (masked vertices excluded when a mask is in use).
@@ -136,55 +153,60 @@ int subDegree(const Graph& g, const Work& w, int v, bool masked) {
   return d;
 }
 
-// SPARSEPAK FNROOT: from root, move to a minimum-degree node of the last level while the number of levels
-// grows. Leaves the CM traversal from the root found in out (that traversal's data returned).
-Traversal findRootAndOrder(const Graph& g, int root, Work& w, bool masked, bool reverse, int* out) {
-  auto traverse = masked ? (reverse ? cmTraversal<true, true> : cmTraversal<true, false>)
-                         : (reverse ? cmTraversal<false, true> : cmTraversal<false, false>);
-  Traversal t = traverse(g, root, w, out);
-  while (t.nlev > 1 && t.nlev < t.size) {
-    int best = out[t.last_level], bestdeg = INT_MAX;
-    for (int q = t.last_level; q < t.size; ++q) {
-      const int d = subDegree(g, w, out[q], masked);
-      if (d < bestdeg) bestdeg = d, best = out[q];
+// SPARSEPAK FNROOT: from root, the first vertex of minimum degree in the last level of the level structure is
+// the candidate; repeat from it while its structure is deeper. Returns the last candidate (or root, when its
+// structure has one level or is a chain).
+int findRoot(const Graph& g, int root, Work& w, bool masked) {
+  Levels ls = rootedLevels(g, root, w);
+  if (ls.nlev == 1 || ls.nlev == ls.size) return root;
+  for (;;) {
+    int bestdeg = INT_MAX;
+    for (int q = ls.last_level; q < ls.size; ++q) {
+      const int d = subDegree(g, w, w.bfs[q], masked);
+      if (d < bestdeg) bestdeg = d, root = w.bfs[q];
     }
-    if (best == root || bfsLevels(g, best, w, t.nlev) <= t.nlev) break;
-    root = best;
-    t = traverse(g, root, w, out);
+    const Levels c = rootedLevels(g, root, w);
+    if (c.nlev <= ls.nlev || c.nlev >= c.size) return root;
+    ls = c;
   }
-  return t;
 }
 
 struct CmResult {
-  std::vector<int> order; // CM order, components one after the other
-  long long prof_cm = 0, prof_rcm = 0, prof_nat = 0;
+  std::vector<int> order; // components one after the other (each reversed if reverse)
+  long long prof = 0, prof_nat = 0;
+  int bw = 0, bw_nat = 0;
 };
 
-// CM order; the profiles of the CM order (reverse = false) or of the RCM order (reverse = true), and of the input.
+// SPARSEPAK GENRCM (reverse) or its Cuthill-McKee order; the profile and bandwidth of that order and of the
+// input order.
 CmResult cuthillMcKee(const Graph& g, bool reverse) {
   CmResult r;
   r.order.resize(g.n);
   if (g.n == 0) return r;
   Work w(g);
-  // The pseudo-peripheral search starts from a vertex of minimum degree (usually a corner of the mesh: fewer
-  // FNROOT iterations), then every other component from its first vertex.
-  int vmin = 0;
-  for (int v = 1; v < g.n; ++v)
-    if (w.deg[v] < w.deg[vmin]) vmin = v;
   std::vector<char> numbered; // only for graphs of several components
   int pos = 0;
-  for (int k = -1; k < g.n && pos < g.n; ++k) {
-    const int v = k < 0 ? vmin : k;
-    if (k >= 0 && numbered[v]) continue;
-    const Traversal t = findRootAndOrder(g, v, w, false, reverse, r.order.data() + pos);
+  for (int v = 0; v < g.n && pos < g.n; ++v) {
+    if (pos > 0 && numbered[v]) continue;
+    int* seg = r.order.data() + pos;
+    const int root = findRoot(g, v, w, false);
+    const Traversal t = reverse ? cmTraversal<true>(g, root, w, seg) : cmTraversal<false>(g, root, w, seg);
+    if (reverse) std::reverse(seg, seg + t.size);
     pos += t.size;
-    r.prof_cm += t.prof_cm, r.prof_rcm += t.prof_rcm, r.prof_nat += t.prof_nat;
+    r.prof += reverse ? t.prof_rcm : t.prof_cm, r.prof_nat += t.prof_nat;
+    r.bw = std::max(r.bw, reverse ? t.bw_rcm : t.bw_cm), r.bw_nat = std::max(r.bw_nat, t.bw_nat);
     if (pos < g.n) {
       if (numbered.empty()) numbered.assign(g.n, 0);
-      for (int i = pos - t.size; i < pos; ++i) numbered[r.order[i]] = 1;
+      for (int i = 0; i < t.size; ++i) numbered[seg[i]] = 1;
     }
   }
   return r;
+}
+
+// The order, or the input order where that has a smaller bandwidth or profile.
+std::vector<int> guarded(const Graph& g, CmResult&& r) {
+  if (r.prof > r.prof_nat || r.bw > r.bw_nat) return orderNatural(g);
+  return std::move(r.order);
 }
 
 } // namespace
@@ -193,22 +215,15 @@ int pseudoPeripheralNode(const Graph& g, int root, const std::vector<char>& mask
   Work w(g);
   for (int v = 0; v < g.n; ++v)
     if (!mask[v]) w.mark[v] = kMasked;
-  std::vector<int> order(g.n);
-  findRootAndOrder(g, root, w, true, true, order.data());
-  return order[0];
+  return findRoot(g, root, w, true);
 }
 
 std::vector<int> orderCuthillMcKee(const Graph& g) {
-  CmResult r = cuthillMcKee(g, false);
-  if (r.prof_cm > r.prof_nat) return orderNatural(g);
-  return std::move(r.order);
+  return guarded(g, cuthillMcKee(g, false));
 }
 
 std::vector<int> orderReverseCuthillMcKee(const Graph& g) {
-  CmResult r = cuthillMcKee(g, true);
-  if (r.prof_rcm > r.prof_nat) return orderNatural(g);
-  std::reverse(r.order.begin(), r.order.end());
-  return std::move(r.order);
+  return guarded(g, cuthillMcKee(g, true));
 }
 
 } // namespace suite::fem

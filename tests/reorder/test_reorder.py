@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""reorder on Harwell-Boeing matrices: every ordering is a permutation; RCM never has a larger profile than the
-input order and reduces the bandwidth of the CAN/BCSSTK matrices listed below; nnz(L) fits in the envelope;
-auto equals the smallest nnz(L) of rcm/amd/metis; AMD and METIS fill less than RCM on the 2D/3D FE matrices."""
+"""reorder on Harwell-Boeing matrices: every ordering is a permutation; RCM reduces the profile of the CAN/BCSSTK
+matrices listed below and never has a larger bandwidth (SPARSEPAK's RCM keeps bcsstk10's 37); nnz(L) fits in
+the envelope; auto equals the smallest nnz(L) of rcm/amd/metis; AMD and METIS fill less than RCM on the 2D/3D
+FE matrices."""
 import os
 import subprocess
 import sys
@@ -37,9 +38,10 @@ def main(exe, mdir):
             for k, v in g.items():
                 check(np.array_equal(np.sort(v["permutation"]), np.arange(n)), f"{name}/{k}: permutation of 0..{n-1}")
                 check(v["nnz_L"][0] <= v["profile"][0] + n, f"{name}/{k}: nnz(L) {v['nnz_L'][0]} <= profile + n")
-            check(g["rcm"]["profile"][0] <= g["natural"]["profile"][0], f"{name}: rcm profile <= natural")
-            check(g["rcm"]["bandwidth"][0] < g["natural"]["bandwidth"][0],
-                  f"{name}: rcm bandwidth {g['rcm']['bandwidth'][0]} < natural {g['natural']['bandwidth'][0]}")
+            check(g["rcm"]["profile"][0] < g["natural"]["profile"][0],
+                  f"{name}: rcm profile {g['rcm']['profile'][0]} < natural {g['natural']['profile'][0]}")
+            check(g["rcm"]["bandwidth"][0] <= g["natural"]["bandwidth"][0],
+                  f"{name}: rcm bandwidth {g['rcm']['bandwidth'][0]} <= natural {g['natural']['bandwidth'][0]}")
             best = min(g[k]["nnz_L"][0] for k in ("rcm", "amd", "metis"))
             check(g["auto"]["nnz_L"][0] == best, f"{name}: auto nnz(L) {g['auto']['nnz_L'][0]} = best {best}")
     print(f"{len(fails)} failure(s)")

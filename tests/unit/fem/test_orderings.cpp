@@ -1,5 +1,6 @@
 // Orderings and solvers: Boost's Cuthill-McKee example (bandwidth 8 -> 4), a shuffled beam mesh (RCM
-// bandwidth reduced >= 10x), RCM never worse than the input order, symbolic nnz(L) equal to CHOLMOD's
+// bandwidth reduced >= 10x), RCM never worse than the input order, RCM equal to SPARSEPAK's GENRCM (a small
+// case worked by hand; PETSc's translation of SPARSEPAK on shuffled meshes), symbolic nnz(L) equal to CHOLMOD's
 // analysis, auto no worse than the best of rcm/amd/metis, and skyline and CHOLMOD solutions agreeing on a
 // beam stiffness matrix.
 #include "fem_test_util.hpp"
@@ -8,6 +9,7 @@
 #include "fem/ordering.hpp"
 
 #include <gtest/gtest.h>
+#include <petscmat.h>
 
 #include <algorithm>
 #include <random>
@@ -49,7 +51,63 @@ Graph shuffledBeamGraph(int nx, int ny, int nz, unsigned seed) {
   nodeGraph(m, &g.xadj, &g.adj);
   return g;
 }
+// PETSc's MatGetOrdering "rcm" (its f2c translation of SPARSEPAK's GENRCM) on the graph's pattern.
+std::vector<int> petscSparsepakRcm(const Graph& g) {
+  Mat A;
+  std::vector<int> nnz(g.n);
+  for (int v = 0; v < g.n; ++v) nnz[v] = g.degree(v) + 1;
+  MatCreateSeqAIJ(PETSC_COMM_SELF, g.n, g.n, 0, nnz.data(), &A);
+  MatSetOption(A, MAT_USE_INODES, PETSC_FALSE); // order vertices, not inodes
+  for (int v = 0; v < g.n; ++v) {
+    MatSetValue(A, v, v, 1.0, INSERT_VALUES);
+    for (int k = g.xadj[v]; k < g.xadj[v + 1]; ++k) MatSetValue(A, v, g.adj[k], 1.0, INSERT_VALUES);
+  }
+  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+  IS row, col;
+  MatGetOrdering(A, MATORDERINGRCM, &row, &col);
+  const PetscInt* idx;
+  ISGetIndices(row, &idx);
+  std::vector<int> p(idx, idx + g.n);
+  ISRestoreIndices(row, &idx);
+  ISDestroy(&row);
+  ISDestroy(&col);
+  MatDestroy(&A);
+  return p;
+}
 } // namespace
+
+// SPARSEPAK by hand on a 4-cycle 0-1-2-3 and a path 4-5-6. GENRCM starts at node 0: levels {0}, {1, 3}, {2};
+// FNROOT's candidate 2 has no more levels and is the root returned; CM from 2 is 2, 1, 3 (equal degrees:
+// node order), 0. The path from 4 is a chain (root 4), CM 4, 5, 6. Each component is reversed on its own.
+TEST(FemOrdering, SparsepakGenrcmByHand) {
+  const Graph g = graphOfEdges(7, {{0, 1}, {1, 2}, {2, 3}, {0, 3}, {4, 5}, {5, 6}});
+  EXPECT_EQ(pseudoPeripheralNode(g, 0, std::vector<char>(7, 1)), 2);
+  EXPECT_EQ(orderReverseCuthillMcKee(g), (std::vector<int>{0, 3, 1, 2, 6, 5, 4}));
+  EXPECT_EQ(orderCuthillMcKee(g), (std::vector<int>{2, 1, 3, 0, 4, 5, 6}));
+}
+
+// Shuffled beams (one, and two interleaved with isolated vertices): the same permutation as PETSc's SPARSEPAK.
+TEST(FemOrdering, RcmEqualsPetscSparsepak) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Graph g = shuffledBeamGraph(12 + 3 * seed, 3, 2, seed);
+    EXPECT_EQ(orderReverseCuthillMcKee(g), petscSparsepakRcm(g)) << seed;
+  }
+  const Graph a = shuffledBeamGraph(9, 2, 2, 4), b = shuffledBeamGraph(7, 3, 2, 5);
+  std::vector<std::pair<int, int>> e;
+  for (int v = 0; v < a.n; ++v)
+    for (int k = a.xadj[v]; k < a.xadj[v + 1]; ++k) e.push_back({2 * v, 2 * a.adj[k]});
+  for (int v = 0; v < b.n; ++v)
+    for (int k = b.xadj[v]; k < b.xadj[v + 1]; ++k) e.push_back({2 * v + 1, 2 * b.adj[k] + 1});
+  std::vector<std::pair<int, int>> once;
+  for (auto [x, y] : e)
+    if (x < y) once.push_back({x, y});
+  const int n = 2 * std::max(a.n, b.n) + 3; // odd or even ids beyond the smaller graph and 3 more: isolated
+  const Graph g = graphOfEdges(n, once);
+  const auto p = orderReverseCuthillMcKee(g);
+  ASSERT_LT(profileOf(g, p), profileOf(g, orderNatural(g))); // not the guard's input order
+  EXPECT_EQ(p, petscSparsepakRcm(g));
+}
 
 // Boost Graph Library example/cuthill_mckee_ordering.cpp: 10 vertices, 14 edges; original bandwidth 8, RCM 4.
 TEST(FemOrdering, BoostExampleBandwidth) {
