@@ -1,0 +1,260 @@
+// rf-char face fluxes of one grid line for the `weno5` scheme (see weno5_line_rf.hpp), with the arithmetic of
+// the rf-char definition (LineGas::flux, RfChar::cellSpeeds, LineGas::roeState / roeInto, l_c f and l_c U summed in the order of the
+// components), organised as loops over the cells and faces of the line on structure-of-arrays data that the
+// compiler vectorises. An upwinded field (the sign of its speed the same at the face and its two cells, the
+// common case) needs ONE reconstruction, of l_c f over the five cells on its upwind side; only a field whose
+// sign changes needs the Lax-Friedrichs split l_c (f +- alpha_c U) / 2 and two (a scalar pass over those fields
+// appends the second stencils to the job list). Steps: per cell the flux, u, c and the per-state Roe average;
+// per face the Roe eigenvectors and the field signs; per field the projections l_c f of the face's six cells
+// (one loop over the faces, the upwind five kept); the split fields; the WENO-Z values of all jobs in one loop;
+// h = R h_c. References: as weno5_line.hpp and rf_char.hpp.
+#include "euler/weno5_line_rf.hpp"
+
+#include "euler/rf_char.hpp"
+#include "euler/weno5.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace suite::euler {
+
+namespace {
+// Slots of the per-cell data cs_: the flux (0 .. NV-1), then these (q: the state, NV slots).
+template <int NV> struct CellSlot {
+  static constexpr int u = NV, c = NV + 1, sr = NV + 2, srv = NV + 3, srH = 2 * NV + 1, q = 2 * NV + 2,
+                       count = 3 * NV + 2;
+};
+// Whether the split faces of a sign group are many enough to project l_c U at every face of the line (a loop the
+// compiler vectorises) rather than at each split face alone.
+inline bool denseSplit(int count, int nface) { return 8 * count > nface; }
+// Slots of the per-face data fs_: L (row-major, 0 .. NV NV - 1), then these; sgn + 0, 1, 2: the signs of the
+// fields u - c, u (all the middle fields), u + c as +1, -1 or 0 (RfChar::sign).
+template <int NV> struct FaceSlot {
+  static constexpr int u = NV * NV, c = u + 1, H = u + 2, v2 = u + 3, vt = u + 4, sgn = vt + NV - 3,
+                       count = sgn + 3;
+};
+// The sign slot of field c.
+template <int NV> constexpr int signGroup(int c) { return c == 0 ? 0 : c == NV - 1 ? 2 : 1; }
+} // namespace
+
+template <int NV>
+void Weno5RfLine<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_lf, double g, V* h) {
+  prepareCells(q, nface + 5, g);
+  faceEigen(nface, g);
+  const int jcap = 2 * NV * nface;
+  st_.resize((size_t)5 * jcap);
+  target_.resize((size_t)NV * nface);
+  for (int grp = 0; grp < 3; ++grp) groupAlpha(grp, nface, alpha, local_lf);
+  projectField<0>(nface); // the fields in turn (NV = 3, 4, 5)
+  projectField<1>(nface);
+  if constexpr (NV > 4) projectField<NV - 3>(nface);
+  if constexpr (NV > 3) projectField<NV - 2>(nface);
+  projectField<NV - 1>(nface);
+  compactSplitJobs(nface);
+  wenoValues(NV * nface + nsplit_);
+  combine(nface, h);
+}
+
+// Per cell: the flux (LineGas::flux), u and c (RfChar::cellSpeeds), the per-state Roe average (roeState).
+template <int NV> void Weno5RfLine<NV>::prepareCells(const V* q, int ncell, double g) {
+  using S = CellSlot<NV>;
+  ncell_ = ncell;
+  cs_.resize((size_t)S::count * ncell);
+  double* __restrict cs = cs_.data();
+  for (int m = 0; m < ncell; ++m) {
+    const double* x = q[m].data();
+    double s = x[1] * x[1];
+    for (int t = 2; t < NV - 1; ++t) s += x[t] * x[t];
+    const double rho = x[0], u = x[1] / rho, p = (g - 1.0) * (x[NV - 1] - 0.5 * s / rho), sr = std::sqrt(rho);
+    cs[m] = x[1];
+    cs[ncell + m] = x[1] * u + p;
+    for (int t = 2; t < NV - 1; ++t) cs[t * ncell + m] = x[t] * u;
+    cs[(NV - 1) * ncell + m] = (x[NV - 1] + p) * u;
+    cs[S::u * ncell + m] = u;
+    cs[S::c * ncell + m] = std::sqrt(std::abs(g * p / rho));
+    cs[S::sr * ncell + m] = sr;
+    for (int c = 0; c < NV - 2; ++c) cs[(S::srv + c) * ncell + m] = sr * x[c + 1] / rho;
+    cs[S::srH * ncell + m] = sr * ((x[NV - 1] + p) / rho);
+    for (int j = 0; j < NV; ++j) cs[(S::q + j) * ncell + m] = x[j];
+  }
+}
+
+// Per face k (cells k + 2, k + 3): LineGas::roeInto's L, the quantities of its R, and the field signs.
+template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
+  using S = CellSlot<NV>;
+  using F = FaceSlot<NV>;
+  const int nc = ncell_, last = NV - 1;
+  fs_.resize((size_t)F::count * nface);
+  const double* __restrict cs = cs_.data();
+  double* __restrict fs = fs_.data();
+  auto L = [fs, nface](int r, int col, int k) -> double& { return fs[(r * NV + col) * nface + k]; };
+  auto sign = [](double a, double b, double c) { return RfChar<NV>::sign(a, b, c) * 1.0; };
+  for (int k = 0; k < nface; ++k) {
+    const int a = k + 2, b = k + 3;
+    const double w = 1.0 / (cs[S::sr * nc + a] + cs[S::sr * nc + b]);
+    double vel[NV - 2];
+    for (int c = 0; c < NV - 2; ++c) vel[c] = (cs[(S::srv + c) * nc + a] + cs[(S::srv + c) * nc + b]) * w;
+    const double H = (cs[S::srH * nc + a] + cs[S::srH * nc + b]) * w, u = vel[0];
+    double v2 = 0.0;
+    for (int c = 0; c < NV - 2; ++c) v2 += vel[c] * vel[c];
+    const double c2 = std::max((g - 1.0) * (H - 0.5 * v2), 1e-300), c = std::sqrt(c2);
+    const double b1 = (g - 1.0) / c2, b2 = 0.5 * b1 * v2;
+    L(0, 0, k) = 0.5 * (b2 + u / c), L(0, 1, k) = -0.5 * (b1 * u + 1.0 / c), L(0, last, k) = 0.5 * b1;
+    L(1, 0, k) = 1.0 - b2, L(1, 1, k) = b1 * u, L(1, last, k) = -b1;
+    L(last, 0, k) = 0.5 * (b2 - u / c), L(last, 1, k) = -0.5 * (b1 * u - 1.0 / c), L(last, last, k) = 0.5 * b1;
+    for (int t = 2; t < last; ++t) {
+      L(0, t, k) = L(last, t, k) = -0.5 * b1 * vel[t - 1];
+      L(1, t, k) = b1 * vel[t - 1];
+      L(t, 0, k) = -vel[t - 1], L(t, t, k) = 1.0;
+      fs[(F::vt + t - 2) * nface + k] = vel[t - 1];
+    }
+    fs[F::u * nface + k] = u, fs[F::c * nface + k] = c, fs[F::H * nface + k] = H, fs[F::v2 * nface + k] = v2;
+    const double ua = cs[S::u * nc + a], ub = cs[S::u * nc + b], ca = cs[S::c * nc + a], cb = cs[S::c * nc + b];
+    fs[F::sgn * nface + k] = sign(ua - ca, u - c, ub - cb);
+    fs[(F::sgn + 1) * nface + k] = sign(ua, u, ub);
+    fs[(F::sgn + 2) * nface + k] = sign(ua + ca, u + c, ub + cb);
+  }
+}
+
+// The split faces of sign group grp (count gsplit_[grp]) and, if any, their Lax-Friedrichs speeds ac_ (RfChar::face:
+// alpha_c = (1 + 1e-12) max |lambda_c| over the face and its six cells; alpha when !local_lf).
+template <int NV> void Weno5RfLine<NV>::groupAlpha(int grp, int nface, double alpha, bool local_lf) {
+  using F = FaceSlot<NV>;
+  using S = CellSlot<NV>;
+  const double* __restrict sg = &fs_[(size_t)(F::sgn + grp) * nface];
+  int count = 0;
+  for (int k = 0; k < nface; ++k) count += sg[k] == 0.0;
+  gsplit_[grp] = count;
+  if (count == 0) return;
+  ac_.resize((size_t)3 * nface);
+  double* __restrict ac = &ac_[(size_t)grp * nface];
+  if (!local_lf) {
+    std::fill(ac, ac + nface, alpha);
+    return;
+  }
+  const int nc = ncell_;
+  auto speed = [grp](double u, double c) { return grp == 0 ? u - c : grp == 2 ? u + c : u; };
+  const double *u = &cs_[(size_t)S::u * nc], *c = &cs_[(size_t)S::c * nc];
+  const double *uf = &fs_[(size_t)F::u * nface], *cf = &fs_[(size_t)F::c * nface];
+  const bool dense = denseSplit(count, nface);
+  for (int k = 0; k < nface; ++k) {
+    if (!dense && sg[k] != 0.0) continue;
+    double a = std::abs(speed(uf[k], cf[k]));
+    for (int m = 0; m < 6; ++m) a = std::max(a, std::abs(speed(u[k + m], c[k + m])));
+    ac[k] = a * (1.0 + 1e-12);
+  }
+}
+
+// Field C: l_C f of the six cells of every face, its upwind five into the face's job c nface + k (f+ order for
+// sign > 0, mirrored for sign < 0); at the split faces l_C (f + alpha U) / 2 into that job and l_C (f - alpha U) / 2
+// (mirrored) into job (NV + C) nface + k (compactSplitJobs keeps those of the split faces): in the same loop
+// (l_C U of every face) when the group has many split faces, otherwise face by face.
+template <int NV> template <int C> void Weno5RfLine<NV>::projectField(int nface) {
+  using G = LineGas<NV>;
+  const int nc = ncell_, jcap = 2 * NV * nface, grp = signGroup<NV>(C);
+  const double* __restrict f = cs_.data();
+  const double* __restrict qs = &cs_[(size_t)CellSlot<NV>::q * nc];
+  const double* __restrict L = &fs_[(size_t)NV * C * nface];
+  const double* __restrict sg = &fs_[(size_t)(FaceSlot<NV>::sgn + grp) * nface];
+  const double* __restrict ac = gsplit_[grp] ? &ac_[(size_t)grp * nface] : nullptr;
+  double* __restrict st = &st_[(size_t)C * nface];
+  double* __restrict sm = &st_[(size_t)(NV + C) * nface];
+  // l_C f (and l_C U) of cells k .. k + 5
+  auto project = [&](int k, double* lf, double* lu, bool withU) {
+    for (int m = 0; m < 6; ++m) lf[m] = lu[m] = 0.0;
+    for (int j = 0; j < NV; ++j)
+      if (!G::leftZero(C, j)) {
+        const double l = L[j * nface + k];
+        for (int m = 0; m < 6; ++m) lf[m] += l * f[j * nc + k + m];
+        if (withU)
+          for (int m = 0; m < 6; ++m) lu[m] += l * qs[j * nc + k + m];
+      }
+  };
+  auto split = [&](int k, const double* lf, const double* lu) {
+    for (int i = 0; i < 5; ++i) {
+      st[(size_t)i * jcap + k] = 0.5 * (lf[i] + ac[k] * lu[i]);
+      sm[(size_t)i * jcap + k] = 0.5 * (lf[5 - i] - ac[k] * lu[5 - i]);
+    }
+  };
+  if (denseSplit(gsplit_[grp], nface)) {
+    for (int k = 0; k < nface; ++k) {
+      double lf[6], lu[6];
+      project(k, lf, lu, true);
+      const double s = sg[k], a = ac[k];
+      for (int i = 0; i < 5; ++i) {
+        const double p = 0.5 * (lf[i] + a * lu[i]);
+        st[(size_t)i * jcap + k] = s > 0.0 ? lf[i] : s < 0.0 ? lf[5 - i] : p;
+        sm[(size_t)i * jcap + k] = 0.5 * (lf[5 - i] - a * lu[5 - i]);
+      }
+    }
+    return;
+  }
+  for (int k = 0; k < nface; ++k) {
+    double lf[6], lu[6];
+    project(k, lf, lu, false);
+    const bool up = sg[k] >= 0.0;
+    for (int i = 0; i < 5; ++i) st[(size_t)i * jcap + k] = up ? lf[i] : lf[5 - i];
+  }
+  if (gsplit_[grp] == 0) return;
+  for (int k = 0; k < nface; ++k)
+    if (sg[k] == 0.0) {
+      double lf[6], lu[6];
+      project(k, lf, lu, true);
+      split(k, lf, lu);
+    }
+}
+
+// The f- jobs of the split (field, face) pairs moved to jobs NV nface, NV nface + 1, ... (nsplit_ of them;
+// target_: the job each adds to).
+template <int NV> void Weno5RfLine<NV>::compactSplitJobs(int nface) {
+  const size_t jcap = (size_t)2 * NV * nface;
+  nsplit_ = 0;
+  for (int c = 0; c < NV; ++c) {
+    const int grp = signGroup<NV>(c);
+    if (gsplit_[grp] == 0) continue;
+    const double* sg = &fs_[(size_t)(FaceSlot<NV>::sgn + grp) * nface];
+    for (int k = 0; k < nface; ++k) {
+      if (sg[k] != 0.0) continue;
+      const size_t from = (size_t)(NV + c) * nface + k, to = (size_t)NV * nface + nsplit_;
+      for (int i = 0; i < 5; ++i) st_[i * jcap + to] = st_[i * jcap + from];
+      target_[nsplit_++] = c * nface + k;
+    }
+  }
+}
+
+template <int NV> void Weno5RfLine<NV>::wenoValues(int njob) {
+  const size_t jcap = st_.size() / 5;
+  w_.resize(njob);
+  const double* __restrict v = st_.data();
+  double* __restrict w = w_.data();
+  for (int n = 0; n < njob; ++n)
+    w[n] = weno5ZValue(v[n], v[jcap + n], v[2 * jcap + n], v[3 * jcap + n], v[4 * jcap + n]);
+}
+
+// h = R h_c (LineGas::roeInto's R, its structural zeros skipped, summed in column order as combineFace).
+template <int NV> void Weno5RfLine<NV>::combine(int nface, V* h) {
+  using F = FaceSlot<NV>;
+  double* w = w_.data();
+  for (int s = 0; s < nsplit_; ++s) w[target_[s]] += w[NV * nface + s];
+  const double* fs = fs_.data();
+  const int last = NV - 1;
+  for (int k = 0; k < nface; ++k) {
+    double hc[NV], vt[NV];
+    for (int c = 0; c < NV; ++c) hc[c] = w[c * nface + k];
+    for (int t = 2; t < last; ++t) vt[t] = fs[(F::vt + t - 2) * nface + k];
+    const double u = fs[F::u * nface + k], c = fs[F::c * nface + k], H = fs[F::H * nface + k];
+    const double v2 = fs[F::v2 * nface + k];
+    h[k][0] = 0.0 + hc[0] + hc[1] + hc[last];
+    h[k][1] = 0.0 + (u - c) * hc[0] + u * hc[1] + (u + c) * hc[last];
+    for (int t = 2; t < last; ++t) h[k][t] = 0.0 + vt[t] * hc[0] + vt[t] * hc[1] + hc[t] + vt[t] * hc[last];
+    double e = 0.0 + (H - u * c) * hc[0] + 0.5 * v2 * hc[1];
+    for (int t = 2; t < last; ++t) e += vt[t] * hc[t];
+    h[k][last] = e + (H + u * c) * hc[last];
+  }
+}
+
+template class Weno5RfLine<3>;
+template class Weno5RfLine<4>;
+template class Weno5RfLine<5>;
+
+} // namespace suite::euler
