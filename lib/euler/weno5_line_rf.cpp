@@ -55,40 +55,54 @@ void Weno5RfLine<NV>::faceFluxes(const V* q, int nface, double alpha, bool local
   combine(nface, h);
 }
 
-// Per cell: the flux (LineGas::flux), u and c (RfChar::cellSpeeds), the per-state Roe average (roeState).
+// Per cell m of the cell-major states x (x[j ncell + m]) into cs: the flux (LineGas::flux), u and c
+// (RfChar::cellSpeeds), the per-state Roe average (LineGas::roeState).
+template <int NV>
+__attribute__((noinline)) void cellData(int ncell, double g, const double* __restrict x, double* __restrict cs) {
+  using S = CellSlot<NV>;
+#pragma GCC ivdep // the rows of cs are disjoint
+  for (int m = 0; m < ncell; ++m) {
+    auto q = [x, ncell, m](int j) { return x[j * ncell + m]; };
+    double s = q(1) * q(1);
+    for (int t = 2; t < NV - 1; ++t) s += q(t) * q(t);
+    const double rho = q(0), u = q(1) / rho, p = (g - 1.0) * (q(NV - 1) - 0.5 * s / rho), sr = std::sqrt(rho);
+    cs[m] = q(1);
+    cs[ncell + m] = q(1) * u + p;
+    for (int t = 2; t < NV - 1; ++t) cs[t * ncell + m] = q(t) * u;
+    cs[(NV - 1) * ncell + m] = (q(NV - 1) + p) * u;
+    cs[S::u * ncell + m] = u;
+    cs[S::c * ncell + m] = std::sqrt(std::abs(g * p / rho));
+    cs[S::sr * ncell + m] = sr;
+    for (int c = 0; c < NV - 2; ++c) cs[(S::srv + c) * ncell + m] = sr * q(c + 1) / rho;
+    cs[S::srH * ncell + m] = sr * ((q(NV - 1) + p) / rho);
+  }
+}
+
 template <int NV> void Weno5RfLine<NV>::prepareCells(const V* q, int ncell, double g) {
   using S = CellSlot<NV>;
   ncell_ = ncell;
   cs_.resize((size_t)S::count * ncell);
-  double* __restrict cs = cs_.data();
-  for (int m = 0; m < ncell; ++m) {
-    const double* x = q[m].data();
-    double s = x[1] * x[1];
-    for (int t = 2; t < NV - 1; ++t) s += x[t] * x[t];
-    const double rho = x[0], u = x[1] / rho, p = (g - 1.0) * (x[NV - 1] - 0.5 * s / rho), sr = std::sqrt(rho);
-    cs[m] = x[1];
-    cs[ncell + m] = x[1] * u + p;
-    for (int t = 2; t < NV - 1; ++t) cs[t * ncell + m] = x[t] * u;
-    cs[(NV - 1) * ncell + m] = (x[NV - 1] + p) * u;
-    cs[S::u * ncell + m] = u;
-    cs[S::c * ncell + m] = std::sqrt(std::abs(g * p / rho));
-    cs[S::sr * ncell + m] = sr;
-    for (int c = 0; c < NV - 2; ++c) cs[(S::srv + c) * ncell + m] = sr * x[c + 1] / rho;
-    cs[S::srH * ncell + m] = sr * ((x[NV - 1] + p) / rho);
-    for (int j = 0; j < NV; ++j) cs[(S::q + j) * ncell + m] = x[j];
-  }
+  double* x = &cs_[(size_t)S::q * ncell];
+  for (int m = 0; m < ncell; ++m)
+    for (int j = 0; j < NV; ++j) x[j * ncell + m] = q[m][j];
+  cellData<NV>(ncell, g, x, cs_.data());
 }
 
 // Per face k (cells k + 2, k + 3): LineGas::roeInto's L, the quantities of its R, and the field signs.
-template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
+template <int NV>
+__attribute__((noinline)) void faceData(int nface, int nc, double g, double c2min, const double* __restrict cs,
+                                        double* __restrict fs) {
   using S = CellSlot<NV>;
   using F = FaceSlot<NV>;
-  const int nc = ncell_, last = NV - 1;
-  fs_.resize((size_t)F::count * nface);
-  const double* __restrict cs = cs_.data();
-  double* __restrict fs = fs_.data();
+  const int last = NV - 1;
   auto L = [fs, nface](int r, int col, int k) -> double& { return fs[(r * NV + col) * nface + k]; };
-  auto sign = [](double a, double b, double c) { return RfChar<NV>::sign(a, b, c) * 1.0; };
+  // RfChar::sign without branches
+  auto sign = [](double a, double b, double c) {
+    auto pos = [](double x) { return x > 0.0 ? 1.0 : 0.0; };
+    auto neg = [](double x) { return x < 0.0 ? 1.0 : 0.0; };
+    return pos(a) * pos(b) * pos(c) - neg(a) * neg(b) * neg(c);
+  };
+#pragma GCC ivdep // the rows of fs are disjoint
   for (int k = 0; k < nface; ++k) {
     const int a = k + 2, b = k + 3;
     const double w = 1.0 / (cs[S::sr * nc + a] + cs[S::sr * nc + b]);
@@ -97,7 +111,7 @@ template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
     const double H = (cs[S::srH * nc + a] + cs[S::srH * nc + b]) * w, u = vel[0];
     double v2 = 0.0;
     for (int c = 0; c < NV - 2; ++c) v2 += vel[c] * vel[c];
-    const double c2 = std::max((g - 1.0) * (H - 0.5 * v2), 1e-300), c = std::sqrt(c2);
+    const double c2 = std::max((g - 1.0) * (H - 0.5 * v2), c2min), c = std::sqrt(c2);
     const double b1 = (g - 1.0) / c2, b2 = 0.5 * b1 * v2;
     L(0, 0, k) = 0.5 * (b2 + u / c), L(0, 1, k) = -0.5 * (b1 * u + 1.0 / c), L(0, last, k) = 0.5 * b1;
     L(1, 0, k) = 1.0 - b2, L(1, 1, k) = b1 * u, L(1, last, k) = -b1;
@@ -116,18 +130,32 @@ template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
   }
 }
 
-// The split faces of sign group grp (count gsplit_[grp]) and, if any, their Lax-Friedrichs speeds ac_ (RfChar::face:
-// alpha_c = (1 + 1e-12) max |lambda_c| over the face and its six cells; alpha when !local_lf).
+template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
+  fs_.resize((size_t)FaceSlot<NV>::count * nface);
+  // c2min: LineGas::roeInto's floor on c^2, an argument so that GCC does not specialise the loop for it (and vectorises)
+  faceData<NV>(nface, ncell_, g, 1e-300, cs_.data(), fs_.data());
+}
+
+// The split faces of sign group grp (count gsplit_[grp]) and, if any, their Lax-Friedrichs speeds (RfChar::face:
+// alpha_c = (1 + 1e-12) max |lambda_c| over the face and its six cells; alpha when !local_lf) into row 0 of the
+// group's ac_, and for splitStencils the weights of the split, left and right stencils into rows 1, 2, 3.
 template <int NV> void Weno5RfLine<NV>::groupAlpha(int grp, int nface, double alpha, bool local_lf) {
   using F = FaceSlot<NV>;
   using S = CellSlot<NV>;
-  const double* __restrict sg = &fs_[(size_t)(F::sgn + grp) * nface];
+  const double* sg = &fs_[(size_t)(F::sgn + grp) * nface];
   int count = 0;
   for (int k = 0; k < nface; ++k) count += sg[k] == 0.0;
   gsplit_[grp] = count;
   if (count == 0) return;
-  ac_.resize((size_t)3 * nface);
-  double* __restrict ac = &ac_[(size_t)grp * nface];
+  ac_.resize((size_t)12 * nface);
+  double* ac = &ac_[(size_t)4 * grp * nface];
+  const bool dense = denseSplit(count, nface);
+  if (dense)
+    for (int k = 0; k < nface; ++k) {
+      ac[nface + k] = sg[k] == 0.0 ? 0.5 : 0.0;
+      ac[2 * nface + k] = sg[k] > 0.0 ? 1.0 : 0.0;
+      ac[3 * nface + k] = sg[k] < 0.0 ? 1.0 : 0.0;
+    }
   if (!local_lf) {
     std::fill(ac, ac + nface, alpha);
     return;
@@ -136,7 +164,6 @@ template <int NV> void Weno5RfLine<NV>::groupAlpha(int grp, int nface, double al
   auto speed = [grp](double u, double c) { return grp == 0 ? u - c : grp == 2 ? u + c : u; };
   const double *u = &cs_[(size_t)S::u * nc], *c = &cs_[(size_t)S::c * nc];
   const double *uf = &fs_[(size_t)F::u * nface], *cf = &fs_[(size_t)F::c * nface];
-  const bool dense = denseSplit(count, nface);
   for (int k = 0; k < nface; ++k) {
     if (!dense && sg[k] != 0.0) continue;
     double a = std::abs(speed(uf[k], cf[k]));
@@ -145,63 +172,96 @@ template <int NV> void Weno5RfLine<NV>::groupAlpha(int grp, int nface, double al
   }
 }
 
-// Field C: l_C f of the six cells of every face, its upwind five into the face's job c nface + k (f+ order for
-// sign > 0, mirrored for sign < 0); at the split faces l_C (f + alpha U) / 2 into that job and l_C (f - alpha U) / 2
-// (mirrored) into job (NV + C) nface + k (compactSplitJobs keeps those of the split faces): in the same loop
-// (l_C U of every face) when the group has many split faces, otherwise face by face.
-template <int NV> template <int C> void Weno5RfLine<NV>::projectField(int nface) {
-  using G = LineGas<NV>;
-  const int nc = ncell_, jcap = 2 * NV * nface, grp = signGroup<NV>(C);
-  const double* __restrict f = cs_.data();
-  const double* __restrict qs = &cs_[(size_t)CellSlot<NV>::q * nc];
-  const double* __restrict L = &fs_[(size_t)NV * C * nface];
-  const double* __restrict sg = &fs_[(size_t)(FaceSlot<NV>::sgn + grp) * nface];
-  const double* __restrict ac = gsplit_[grp] ? &ac_[(size_t)grp * nface] : nullptr;
-  double* __restrict st = &st_[(size_t)C * nface];
-  double* __restrict sm = &st_[(size_t)(NV + C) * nface];
-  // l_C f (and l_C U) of cells k .. k + 5
-  auto project = [&](int k, double* lf, double* lu, bool withU) {
-    for (int m = 0; m < 6; ++m) lf[m] = lu[m] = 0.0;
-    for (int j = 0; j < NV; ++j)
-      if (!G::leftZero(C, j)) {
-        const double l = L[j * nface + k];
-        for (int m = 0; m < 6; ++m) lf[m] += l * f[j * nc + k + m];
-        if (withU)
-          for (int m = 0; m < 6; ++m) lu[m] += l * qs[j * nc + k + m];
-      }
-  };
-  auto split = [&](int k, const double* lf, const double* lu) {
-    for (int i = 0; i < 5; ++i) {
-      st[(size_t)i * jcap + k] = 0.5 * (lf[i] + ac[k] * lu[i]);
-      sm[(size_t)i * jcap + k] = 0.5 * (lf[5 - i] - ac[k] * lu[5 - i]);
+// l_C f (and, with U, l_C U) of cells k .. k + 5: L the face-major L of field C, f and qs the cell-major fluxes and
+// states.
+template <int NV, int C, bool U>
+inline void projectCells(const double* __restrict L, const double* __restrict f, const double* __restrict qs,
+                         int nface, int nc, int k, double* lf, double* lu) {
+#pragma GCC unroll 6
+  for (int m = 0; m < 6; ++m) lf[m] = lu[m] = 0.0;
+#pragma GCC unroll 5
+  for (int j = 0; j < NV; ++j)
+    if (!LineGas<NV>::leftZero(C, j)) {
+      const double l = L[j * nface + k];
+#pragma GCC unroll 6
+      for (int m = 0; m < 6; ++m) lf[m] += l * f[j * nc + k + m];
+      if (U)
+#pragma GCC unroll 6
+        for (int m = 0; m < 6; ++m) lu[m] += l * qs[j * nc + k + m];
     }
-  };
-  if (denseSplit(gsplit_[grp], nface)) {
-    for (int k = 0; k < nface; ++k) {
-      double lf[6], lu[6];
-      project(k, lf, lu, true);
-      const double s = sg[k], a = ac[k];
-      for (int i = 0; i < 5; ++i) {
-        const double p = 0.5 * (lf[i] + a * lu[i]);
-        st[(size_t)i * jcap + k] = s > 0.0 ? lf[i] : s < 0.0 ? lf[5 - i] : p;
-        sm[(size_t)i * jcap + k] = 0.5 * (lf[5 - i] - a * lu[5 - i]);
-      }
-    }
-    return;
-  }
+}
+
+// Field C at every face: l_C f of its six cells, the upwind five into row i of st (st[i jcap + k]: f+ order for
+// sign sg >= 0, mirrored for sign < 0).
+template <int NV, int C>
+__attribute__((noinline)) void upwindStencils(int nface, int nc, size_t jcap, const double* __restrict L, const double* __restrict f,
+                    const double* __restrict sg, double* __restrict st, double* __restrict spare) {
   for (int k = 0; k < nface; ++k) {
     double lf[6], lu[6];
-    project(k, lf, lu, false);
+    projectCells<NV, C, false>(L, f, nullptr, nface, nc, k, lf, lu);
     const bool up = sg[k] >= 0.0;
-    for (int i = 0; i < 5; ++i) st[(size_t)i * jcap + k] = up ? lf[i] : lf[5 - i];
+#pragma GCC unroll 5
+    for (int i = 0; i < 5; ++i) st[i * jcap + k] = up ? lf[i] : lf[5 - i];
+    spare[k] = up ? lf[5] : lf[0]; // unused: so that GCC computes both ends before the choice (and vectorises)
   }
+}
+
+// Field C at every face: l_C f and l_C U of the six cells; into row i of st ws l_C (f + alpha U) + wp (l_C f,
+// left-biased) + wn (l_C f, right-biased), into sm l_C (f - alpha U) / 2 mirrored, with the speeds alpha = ac[k]
+// and the weights (ws, wp, wn) = ac[nface + k], ac[2 nface + k], ac[3 nface + k] of groupAlpha: (1/2, 0, 0) at
+// the split faces, (0, 1, 0) or (0, 0, 1) at the upwinded ones (exact, and without the branches that GCC would
+// not vectorise).
+template <int NV, int C>
+__attribute__((noinline)) void splitStencils(int nface, int nc, size_t jcap, const double* __restrict L,
+                                             const double* __restrict f, const double* __restrict qs,
+                                             const double* __restrict ac, double* __restrict st,
+                                             double* __restrict sm) {
+#pragma GCC ivdep // the rows i jcap + k of st and sm are disjoint (jcap >= nface)
+  for (int k = 0; k < nface; ++k) {
+    double lf[6], lu[6];
+    projectCells<NV, C, true>(L, f, qs, nface, nc, k, lf, lu);
+    const double a = ac[k], ws = ac[nface + k], wp = ac[2 * nface + k], wn = ac[3 * nface + k];
+#pragma GCC unroll 5
+    for (int i = 0; i < 5; ++i) {
+      st[i * jcap + k] = ws * (lf[i] + a * lu[i]) + wp * lf[i] + wn * lf[5 - i];
+      sm[i * jcap + k] = 0.5 * (lf[5 - i] - a * lu[5 - i]);
+    }
+  }
+}
+
+// One split face k of field C (the group has few): as splitStencils.
+template <int NV, int C>
+void splitFace(int k, int nface, int nc, size_t jcap, const double* L, const double* f, const double* qs, double a,
+               double* st, double* sm) {
+  double lf[6], lu[6];
+  projectCells<NV, C, true>(L, f, qs, nface, nc, k, lf, lu);
+  for (int i = 0; i < 5; ++i) {
+    st[i * jcap + k] = 0.5 * (lf[i] + a * lu[i]);
+    sm[i * jcap + k] = 0.5 * (lf[5 - i] - a * lu[5 - i]);
+  }
+}
+
+// Field C: its upwind stencils into jobs C nface + k (f+ order for sign > 0, mirrored for sign < 0); at the
+// split faces l_C (f + alpha U) / 2 into that job and l_C (f - alpha U) / 2 (mirrored) into job (NV + C) nface
+// + k (compactSplitJobs keeps those of the split faces): in one loop (l_C U at every face) when the group has
+// many split faces, otherwise face by face.
+template <int NV> template <int C> void Weno5RfLine<NV>::projectField(int nface) {
+  const int nc = ncell_, grp = signGroup<NV>(C);
+  const size_t jcap = (size_t)2 * NV * nface;
+  const double* f = cs_.data();
+  const double* qs = &cs_[(size_t)CellSlot<NV>::q * nc];
+  const double* L = &fs_[(size_t)NV * C * nface];
+  const double* sg = &fs_[(size_t)(FaceSlot<NV>::sgn + grp) * nface];
+  double* st = &st_[(size_t)C * nface];
+  double* sm = &st_[(size_t)(NV + C) * nface];
+  if (denseSplit(gsplit_[grp], nface)) {
+    splitStencils<NV, C>(nface, nc, jcap, L, f, qs, &ac_[(size_t)4 * grp * nface], st, sm);
+    return;
+  }
+  upwindStencils<NV, C>(nface, nc, jcap, L, f, sg, st, sm);
   if (gsplit_[grp] == 0) return;
   for (int k = 0; k < nface; ++k)
-    if (sg[k] == 0.0) {
-      double lf[6], lu[6];
-      project(k, lf, lu, true);
-      split(k, lf, lu);
-    }
+    if (sg[k] == 0.0) splitFace<NV, C>(k, nface, nc, jcap, L, f, qs, ac_[(size_t)4 * grp * nface + k], st, sm);
 }
 
 // The f- jobs of the split (field, face) pairs moved to jobs NV nface, NV nface + 1, ... (nsplit_ of them;
