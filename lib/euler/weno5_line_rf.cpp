@@ -106,12 +106,6 @@ SUITE_KERNEL void faceData(int nface, int nc, double g, double c2min, const doub
   using F = FaceSlot<NV>;
   const int last = NV - 1;
   auto L = [fs, nface](int r, int col, int k) -> double& { return fs[(r * NV + col) * nface + k]; };
-  // RfChar::sign without branches
-  auto sign = [](double a, double b, double c) {
-    auto pos = [](double x) { return x > 0.0 ? 1.0 : 0.0; };
-    auto neg = [](double x) { return x < 0.0 ? 1.0 : 0.0; };
-    return pos(a) * pos(b) * pos(c) - neg(a) * neg(b) * neg(c);
-  };
 #pragma GCC ivdep // the rows of fs are disjoint
   for (int k = 0; k < nface; ++k) {
     const int a = k + 2, b = k + 3;
@@ -133,10 +127,26 @@ SUITE_KERNEL void faceData(int nface, int nc, double g, double c2min, const doub
       fs[(F::vt + t - 2) * nface + k] = vel[t - 1];
     }
     fs[F::u * nface + k] = u, fs[F::c * nface + k] = c, fs[F::H * nface + k] = H, fs[F::v2 * nface + k] = v2;
-    const double ua = cs[S::u * nc + a], ub = cs[S::u * nc + b], ca = cs[S::c * nc + a], cb = cs[S::c * nc + b];
-    fs[F::sgn * nface + k] = sign(ua - ca, u - c, ub - cb);
-    fs[(F::sgn + 1) * nface + k] = sign(ua, u, ub);
-    fs[(F::sgn + 2) * nface + k] = sign(ua + ca, u + c, ub + cb);
+  }
+}
+
+// The signs (RfChar::sign, without branches) of the fields u - c, u, u + c at each face (faceData's u, c) and its
+// two cells.
+template <int NV> SUITE_KERNEL void faceSigns(int nface, int nc, const double* __restrict cs, double* __restrict fs) {
+  using S = CellSlot<NV>;
+  using F = FaceSlot<NV>;
+  auto sign = [](double a, double b, double c) {
+    const bool pos = (a > 0.0) & (b > 0.0) & (c > 0.0), neg = (a < 0.0) & (b < 0.0) & (c < 0.0);
+    const double p = pos ? 1.0 : 0.0, n = neg ? 1.0 : 0.0;
+    return p - n;
+  };
+  const double *uc = &cs[S::u * nc + 2], *cc = &cs[S::c * nc + 2], *uf = &fs[F::u * nface], *cf = &fs[F::c * nface];
+  double* __restrict sg = &fs[F::sgn * nface];
+#pragma GCC ivdep // the rows of sg are disjoint from each other and from uf, cf
+  for (int k = 0; k < nface; ++k) {
+    sg[k] = sign(uc[k] - cc[k], uf[k] - cf[k], uc[k + 1] - cc[k + 1]);
+    sg[nface + k] = sign(uc[k], uf[k], uc[k + 1]);
+    sg[2 * nface + k] = sign(uc[k] + cc[k], uf[k] + cf[k], uc[k + 1] + cc[k + 1]);
   }
 }
 
@@ -144,6 +154,7 @@ template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
   fs_.resize((size_t)FaceSlot<NV>::count * nface);
   // c2min: LineGas::roeInto's floor on c^2, an argument so that GCC does not specialise the loop for it (and vectorises)
   faceData<NV>(nface, ncell_, g, 1e-300, cs_.data(), fs_.data());
+  faceSigns<NV>(nface, ncell_, cs_.data(), fs_.data());
 }
 
 // The split faces of sign group grp (count gsplit_[grp]) and, if any, their Lax-Friedrichs speeds (RfChar::face:
