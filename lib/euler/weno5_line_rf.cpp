@@ -55,13 +55,14 @@ void Weno5RfLine<NV>::faceFluxes(const V* q, int nface, double alpha, bool local
   st_.resize((size_t)5 * jcap);
   target_.resize((size_t)NV * nface);
   for (int grp = 0; grp < 3; ++grp) groupAlpha(grp, nface, alpha, local_lf);
+  ndense_ = nsplit_ = 0;
+  for (int c = 0; c < NV; ++c) block_[c] = denseSplit(gsplit_[signGroup<NV>(c)], nface) ? ndense_++ : -1;
   projectField<0>(nface); // the fields in turn (NV = 3, 4, 5)
   projectField<1>(nface);
   if constexpr (NV > 4) projectField<NV - 3>(nface);
   if constexpr (NV > 3) projectField<NV - 2>(nface);
   projectField<NV - 1>(nface);
-  compactSplitJobs(nface);
-  wenoValues(NV * nface + nsplit_);
+  wenoValues((NV + ndense_) * nface + nsplit_);
   combine(nface, h);
 }
 
@@ -250,7 +251,8 @@ SUITE_KERNEL void splitStencils(int nface, int nc, size_t jcap, const double* __
   }
 }
 
-// One split face k of field C (the group has few): as splitStencils.
+// One split face k of field C (the group has few): as splitStencils, the f+ stencil into st[i jcap + k], the
+// f- one into sm[i jcap].
 template <int NV, int C>
 void splitFace(int k, int nface, int nc, size_t jcap, const double* L, const double* f, const double* qs, double a,
                double* st, double* sm) {
@@ -258,14 +260,14 @@ void splitFace(int k, int nface, int nc, size_t jcap, const double* L, const dou
   projectCells<NV, C, true>(L, f, qs, nface, nc, k, lf, lu);
   for (int i = 0; i < 5; ++i) {
     st[i * jcap + k] = 0.5 * (lf[i] + a * lu[i]);
-    sm[i * jcap + k] = 0.5 * (lf[5 - i] - a * lu[5 - i]);
+    sm[i * jcap] = 0.5 * (lf[5 - i] - a * lu[5 - i]);
   }
 }
 
 // Field C: its upwind stencils into jobs C nface + k (f+ order for sign > 0, mirrored for sign < 0); at the
-// split faces l_C (f + alpha U) / 2 into that job and l_C (f - alpha U) / 2 (mirrored) into job (NV + C) nface
-// + k (compactSplitJobs keeps those of the split faces): in one loop (l_C U at every face) when the group has
-// many split faces, otherwise face by face.
+// split faces l_C (f + alpha U) / 2 into that job and l_C (f - alpha U) / 2 (mirrored) into a job of its own:
+// when the group has many split faces in one loop (l_C U at every face) into the field's block of jobs
+// (NV + block_[C]) nface + k, otherwise face by face into the next job of the tail (target_: the job it adds to).
 template <int NV> template <int C> void Weno5RfLine<NV>::projectField(int nface) {
   const int nc = ncell_, grp = signGroup<NV>(C);
   const size_t jcap = (size_t)2 * NV * nface;
@@ -274,33 +276,20 @@ template <int NV> template <int C> void Weno5RfLine<NV>::projectField(int nface)
   const double* L = &fs_[(size_t)NV * C * nface];
   const double* sg = &fs_[(size_t)(FaceSlot<NV>::sgn + grp) * nface];
   double* st = &st_[(size_t)C * nface];
-  double* sm = &st_[(size_t)(NV + C) * nface];
-  if (denseSplit(gsplit_[grp], nface)) {
+  if (block_[C] >= 0) {
+    double* sm = &st_[(size_t)(NV + block_[C]) * nface];
     splitStencils<NV, C>(nface, nc, jcap, L, f, qs, &ac_[(size_t)4 * grp * nface], st, sm);
     return;
   }
-  upwindStencils<NV, C>(nface, nc, jcap, L, f, sg, st, sm);
+  spare_.resize(nface);
+  upwindStencils<NV, C>(nface, nc, jcap, L, f, sg, st, spare_.data());
   if (gsplit_[grp] == 0) return;
   for (int k = 0; k < nface; ++k)
-    if (sg[k] == 0.0) splitFace<NV, C>(k, nface, nc, jcap, L, f, qs, ac_[(size_t)4 * grp * nface + k], st, sm);
-}
-
-// The f- jobs of the split (field, face) pairs moved to jobs NV nface, NV nface + 1, ... (nsplit_ of them;
-// target_: the job each adds to).
-template <int NV> void Weno5RfLine<NV>::compactSplitJobs(int nface) {
-  const size_t jcap = (size_t)2 * NV * nface;
-  nsplit_ = 0;
-  for (int c = 0; c < NV; ++c) {
-    const int grp = signGroup<NV>(c);
-    if (gsplit_[grp] == 0) continue;
-    const double* sg = &fs_[(size_t)(FaceSlot<NV>::sgn + grp) * nface];
-    for (int k = 0; k < nface; ++k) {
-      if (sg[k] != 0.0) continue;
-      const size_t from = (size_t)(NV + c) * nface + k, to = (size_t)NV * nface + nsplit_;
-      for (int i = 0; i < 5; ++i) st_[i * jcap + to] = st_[i * jcap + from];
-      target_[nsplit_++] = c * nface + k;
+    if (sg[k] == 0.0) {
+      double* sm = &st_[(size_t)(NV + ndense_) * nface + nsplit_];
+      target_[nsplit_++] = C * nface + k;
+      splitFace<NV, C>(k, nface, nc, jcap, L, f, qs, ac_[(size_t)4 * grp * nface + k], st, sm);
     }
-  }
 }
 
 // w[n] = the WENO-Z value of job n (elements v[i jcap + n]), n < njob.
@@ -318,7 +307,13 @@ template <int NV> void Weno5RfLine<NV>::wenoValues(int njob) {
 template <int NV> void Weno5RfLine<NV>::combine(int nface, V* h) {
   using F = FaceSlot<NV>;
   double* w = w_.data();
-  for (int s = 0; s < nsplit_; ++s) w[target_[s]] += w[NV * nface + s];
+  for (int c = 0; c < NV; ++c) // the f- values of a field's block: weight 2 ws = 1 at the split faces, else 0
+    if (block_[c] >= 0) {
+      const double* ws = &ac_[(size_t)(4 * signGroup<NV>(c) + 1) * nface];
+      const double* wm = &w[(size_t)(NV + block_[c]) * nface];
+      for (int k = 0; k < nface; ++k) w[c * nface + k] += (2.0 * ws[k]) * wm[k];
+    }
+  for (int s = 0; s < nsplit_; ++s) w[target_[s]] += w[(NV + ndense_) * nface + s];
   const double* fs = fs_.data();
   const int last = NV - 1;
   for (int k = 0; k < nface; ++k) {

@@ -24,20 +24,21 @@ private:
   void faceEigen(int nface, double g);
   void groupAlpha(int grp, int nface, double alpha, bool local_lf);
   template <int C> void projectField(int nface);
-  void compactSplitJobs(int nface);
   void wenoValues(int njob);
   void combine(int nface, V* h);
 
-  int ncell_ = 0, nsplit_ = 0;
+  int ncell_ = 0, nsplit_ = 0, ndense_ = 0;
+  int block_[NV] = {};        // per field: its block of f- jobs (dense split), or -1
   int gsplit_[3] = {0, 0, 0}; // per sign group (fields u - c, u, u + c): the faces where it changes sign
   // Per cell (index m) cs_ = [flux f_j (NV), u, c, sqrt(rho), sqrt(rho) u_n.., sqrt(rho) H, U (NV)], cs_[i ncell
   // + m];
   // per face (index k) fs_ = [L (NV x NV; its structural zeros unset), u, c, H, v2, u_t.., sign of the fields
   // u - c, u, u + c], fs_[i nface + k]; the WENO jobs: per field c the upwind (or f+) stencil of face k is job
-  // c nface + k, then one job per split (field, face) for its f- stencil (target_: the job it adds to);
-  // st_[i jcap + n]: element i of job n, w_[n] its WENO-Z value.
+  // c nface + k, then the blocks of f- stencils of the fields with many split faces (block_), then one job per
+  // split (field, face) of the other fields (target_: the job it adds to); st_[i jcap + n]: element i of job n,
+  // w_[n] its WENO-Z value.
   // ac_[grp nface + k]: the Lax-Friedrichs speed of the split faces of sign group grp.
-  std::vector<double> cs_, fs_, st_, w_, ac_;
+  std::vector<double> cs_, fs_, st_, w_, ac_, spare_;
   std::vector<int> target_;
 };
 
