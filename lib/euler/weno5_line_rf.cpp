@@ -54,7 +54,9 @@ void Weno5RfLine<NV>::faceFluxes(const V* q, int nface, double alpha, bool local
   const int jcap = 2 * NV * nface;
   st_.resize((size_t)5 * jcap);
   target_.resize((size_t)NV * nface);
-  for (int grp = 0; grp < 3; ++grp) groupAlpha(grp, nface, alpha, local_lf);
+  groupAlpha<0>(nface, alpha, local_lf);
+  groupAlpha<1>(nface, alpha, local_lf);
+  groupAlpha<2>(nface, alpha, local_lf);
   ndense_ = nsplit_ = 0;
   for (int c = 0; c < NV; ++c) block_[c] = denseSplit(gsplit_[signGroup<NV>(c)], nface) ? ndense_++ : -1;
   projectField<0>(nface); // the fields in turn (NV = 3, 4, 5)
@@ -158,40 +160,63 @@ template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
   faceSigns<NV>(nface, ncell_, cs_.data(), fs_.data());
 }
 
-// The split faces of sign group grp (count gsplit_[grp]) and, if any, their Lax-Friedrichs speeds (RfChar::face:
-// alpha_c = (1 + 1e-12) max |lambda_c| over the face and its six cells; alpha when !local_lf) into row 0 of the
-// group's ac_, and for splitStencils the weights of the split, left and right stencils into rows 1, 2, 3.
-template <int NV> void Weno5RfLine<NV>::groupAlpha(int grp, int nface, double alpha, bool local_lf) {
+// The Lax-Friedrichs speed of sign group GRP at face k (RfChar::face: alpha_c = (1 + 1e-12) max |lambda_c| over
+// the face and its six cells), from the cells' u, c (uc, cc) and the face's (uf, cf).
+template <int GRP>
+inline double faceAlpha(int k, const double* uc, const double* cc, const double* uf, const double* cf) {
+  auto speed = [](double u, double c) { return GRP == 0 ? u - c : GRP == 2 ? u + c : u; };
+  double a = std::abs(speed(uf[k], cf[k]));
+#pragma GCC unroll 6
+  for (int m = 0; m < 6; ++m) a = std::max(a, std::abs(speed(uc[k + m], cc[k + m])));
+  return a * (1.0 + 1e-12);
+}
+
+// ac[k] = faceAlpha at every face.
+template <int GRP>
+SUITE_KERNEL void faceAlphas(int nface, const double* __restrict uc, const double* __restrict cc,
+                             const double* __restrict uf, const double* __restrict cf, double* __restrict ac) {
+  for (int k = 0; k < nface; ++k) ac[k] = faceAlpha<GRP>(k, uc, cc, uf, cf);
+}
+
+// The weights (ws, wp, wn) of splitStencils from the signs sg: (1/2, 0, 0) where 0, (0, 1, 0) where > 0, (0, 0, 1)
+// where < 0.
+SUITE_KERNEL void splitWeights(int nface, const double* __restrict sg, double* __restrict ws, double* __restrict wp,
+                               double* __restrict wn) {
+  for (int k = 0; k < nface; ++k) {
+    ws[k] = sg[k] == 0.0 ? 0.5 : 0.0;
+    wp[k] = sg[k] > 0.0 ? 1.0 : 0.0;
+    wn[k] = sg[k] < 0.0 ? 1.0 : 0.0;
+  }
+}
+
+// The split faces of sign group GRP (count gsplit_[GRP]) and, if any, their Lax-Friedrichs speeds (faceAlpha;
+// alpha when !local_lf) into row 0 of the group's ac_ (every face when the group is split densely, else the split
+// ones), and then the weights of splitStencils into rows 1, 2, 3.
+template <int NV> template <int GRP> void Weno5RfLine<NV>::groupAlpha(int nface, double alpha, bool local_lf) {
   using F = FaceSlot<NV>;
   using S = CellSlot<NV>;
-  const double* sg = &fs_[(size_t)(F::sgn + grp) * nface];
+  const double* sg = &fs_[(size_t)(F::sgn + GRP) * nface];
   int count = 0;
   for (int k = 0; k < nface; ++k) count += sg[k] == 0.0;
-  gsplit_[grp] = count;
+  gsplit_[GRP] = count;
   if (count == 0) return;
   ac_.resize((size_t)12 * nface);
-  double* ac = &ac_[(size_t)4 * grp * nface];
+  double* ac = &ac_[(size_t)4 * GRP * nface];
   const bool dense = denseSplit(count, nface);
-  if (dense)
-    for (int k = 0; k < nface; ++k) {
-      ac[nface + k] = sg[k] == 0.0 ? 0.5 : 0.0;
-      ac[2 * nface + k] = sg[k] > 0.0 ? 1.0 : 0.0;
-      ac[3 * nface + k] = sg[k] < 0.0 ? 1.0 : 0.0;
-    }
+  if (dense) splitWeights(nface, sg, ac + nface, ac + 2 * nface, ac + 3 * nface);
   if (!local_lf) {
     std::fill(ac, ac + nface, alpha);
     return;
   }
   const int nc = ncell_;
-  auto speed = [grp](double u, double c) { return grp == 0 ? u - c : grp == 2 ? u + c : u; };
-  const double *u = &cs_[(size_t)S::u * nc], *c = &cs_[(size_t)S::c * nc];
+  const double *uc = &cs_[(size_t)S::u * nc], *cc = &cs_[(size_t)S::c * nc];
   const double *uf = &fs_[(size_t)F::u * nface], *cf = &fs_[(size_t)F::c * nface];
-  for (int k = 0; k < nface; ++k) {
-    if (!dense && sg[k] != 0.0) continue;
-    double a = std::abs(speed(uf[k], cf[k]));
-    for (int m = 0; m < 6; ++m) a = std::max(a, std::abs(speed(u[k + m], c[k + m])));
-    ac[k] = a * (1.0 + 1e-12);
+  if (dense) {
+    faceAlphas<GRP>(nface, uc, cc, uf, cf, ac);
+    return;
   }
+  for (int k = 0; k < nface; ++k)
+    if (sg[k] == 0.0) ac[k] = faceAlpha<GRP>(k, uc, cc, uf, cf);
 }
 
 // l_C f (and, with U, l_C U) of cells k .. k + 5: L the face-major L of field C, f and qs the cell-major fluxes and
@@ -303,9 +328,31 @@ template <int NV> void Weno5RfLine<NV>::wenoValues(int njob) {
   wenoZValues(njob, st_.size() / 5, st_.data(), w_.data());
 }
 
-// h = R h_c (LineGas::roeInto's R, its structural zeros skipped, summed in column order as combineFace).
-template <int NV> void Weno5RfLine<NV>::combine(int nface, V* h) {
+// h[k NV + i] = (R h_c)_i at face k, h_c[c] = w[c nface + k] (LineGas::roeInto's R, its structural zeros
+// skipped, summed in column order as Weno5Line::combineFace).
+template <int NV>
+SUITE_KERNEL void rightEigenProduct(int nface, const double* __restrict w, const double* __restrict fs,
+                                    double* __restrict h) {
   using F = FaceSlot<NV>;
+  const int last = NV - 1;
+  for (int k = 0; k < nface; ++k) {
+    double hc[NV], vt[NV];
+    for (int c = 0; c < NV; ++c) hc[c] = w[c * nface + k];
+    for (int t = 2; t < last; ++t) vt[t] = fs[(F::vt + t - 2) * nface + k];
+    const double u = fs[F::u * nface + k], c = fs[F::c * nface + k], H = fs[F::H * nface + k];
+    const double v2 = fs[F::v2 * nface + k];
+    double* hk = h + (size_t)NV * k;
+    hk[0] = hc[0] + hc[1] + hc[last];
+    hk[1] = (u - c) * hc[0] + u * hc[1] + (u + c) * hc[last];
+    for (int t = 2; t < last; ++t) hk[t] = vt[t] * hc[0] + vt[t] * hc[1] + hc[t] + vt[t] * hc[last];
+    double e = (H - u * c) * hc[0] + 0.5 * v2 * hc[1];
+    for (int t = 2; t < last; ++t) e += vt[t] * hc[t];
+    hk[last] = e + (H + u * c) * hc[last];
+  }
+}
+
+// The f- values added to their jobs, then h = R h_c.
+template <int NV> void Weno5RfLine<NV>::combine(int nface, V* h) {
   double* w = w_.data();
   for (int c = 0; c < NV; ++c) // the f- values of a field's block: weight 2 ws = 1 at the split faces, else 0
     if (block_[c] >= 0) {
@@ -314,21 +361,7 @@ template <int NV> void Weno5RfLine<NV>::combine(int nface, V* h) {
       for (int k = 0; k < nface; ++k) w[c * nface + k] += (2.0 * ws[k]) * wm[k];
     }
   for (int s = 0; s < nsplit_; ++s) w[target_[s]] += w[(NV + ndense_) * nface + s];
-  const double* fs = fs_.data();
-  const int last = NV - 1;
-  for (int k = 0; k < nface; ++k) {
-    double hc[NV], vt[NV];
-    for (int c = 0; c < NV; ++c) hc[c] = w[c * nface + k];
-    for (int t = 2; t < last; ++t) vt[t] = fs[(F::vt + t - 2) * nface + k];
-    const double u = fs[F::u * nface + k], c = fs[F::c * nface + k], H = fs[F::H * nface + k];
-    const double v2 = fs[F::v2 * nface + k];
-    h[k][0] = 0.0 + hc[0] + hc[1] + hc[last];
-    h[k][1] = 0.0 + (u - c) * hc[0] + u * hc[1] + (u + c) * hc[last];
-    for (int t = 2; t < last; ++t) h[k][t] = 0.0 + vt[t] * hc[0] + vt[t] * hc[1] + hc[t] + vt[t] * hc[last];
-    double e = 0.0 + (H - u * c) * hc[0] + 0.5 * v2 * hc[1];
-    for (int t = 2; t < last; ++t) e += vt[t] * hc[t];
-    h[k][last] = e + (H + u * c) * hc[last];
-  }
+  rightEigenProduct<NV>(nface, w, fs_.data(), h[0].data());
 }
 
 template class Weno5RfLine<3>;

@@ -22,7 +22,7 @@ public:
 private:
   void prepareCells(const V* q, int ncell, double g);
   void faceEigen(int nface, double g);
-  void groupAlpha(int grp, int nface, double alpha, bool local_lf);
+  template <int GRP> void groupAlpha(int nface, double alpha, bool local_lf);
   template <int C> void projectField(int nface);
   void wenoValues(int njob);
   void combine(int nface, V* h);
