@@ -22,8 +22,7 @@ void Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_l
     for (int k = 0; k < nface; ++k) G::roeInto(roe_[k + 2], roe_[k + 3], g, &eigen_[k]);
   }
   st_.resize((size_t)2 * NV * 5 * nface);
-  for (int k = 0; k < nface; ++k)
-    projectFace(k, nface, characteristic);
+  for (int k = 0; k < nface; ++k) projectFace(k, nface, characteristic);
   wenoValues(nface);
   for (int k = 0; k < nface; ++k) combineFace(k, nface, characteristic, h);
 }

@@ -1,13 +1,14 @@
 // rf-char face fluxes of one grid line for the `weno5` scheme (see weno5_line_rf.hpp), with the arithmetic of
-// the rf-char definition (LineGas::flux, RfChar::cellSpeeds, LineGas::roeState / roeInto, l_c f and l_c U summed in the order of the
-// components), organised as loops over the cells and faces of the line on structure-of-arrays data that the
-// compiler vectorises. An upwinded field (the sign of its speed the same at the face and its two cells, the
-// common case) needs ONE reconstruction, of l_c f over the five cells on its upwind side; only a field whose
-// sign changes needs the Lax-Friedrichs split l_c (f +- alpha_c U) / 2 and two (a scalar pass over those fields
-// appends the second stencils to the job list). Steps: per cell the flux, u, c and the per-state Roe average;
-// per face the Roe eigenvectors and the field signs; per field the projections l_c f of the face's six cells
-// (one loop over the faces, the upwind five kept); the split fields; the WENO-Z values of all jobs in one loop;
-// h = R h_c. References: as weno5_line.hpp and rf_char.hpp.
+// the rf-char definition (LineGas::flux, RfChar::cellSpeeds, LineGas::roeState / roeInto, l_c f and l_c U
+// summed in the order of the components; bitwise the fluxes of that definition up to the sign of zeros),
+// organised as loops over the cells, faces and reconstructions ("jobs") of the line on structure-of-arrays
+// data, each a function of its own with restrict arguments that the compiler vectorises. An upwinded field
+// (the sign of its speed the same at the face and its two cells, the common case) needs ONE reconstruction,
+// of l_c f over the five cells on its upwind side; only a field whose sign changes needs the Lax-Friedrichs
+// split l_c (f +- alpha_c U) / 2 and two. Steps: per cell the flux, u, c and the per-state Roe average; per
+// face the Roe eigenvectors, the field signs and, where fields split, alpha_c; per field the projections l_c
+// f (and l_c U where it splits) of the face's six cells; the WENO-Z values of all jobs in one loop; h = R
+// h_c. References: as weno5_line.hpp and rf_char.hpp.
 #include "euler/weno5_line_rf.hpp"
 
 #include "euler/rf_char.hpp"
@@ -17,9 +18,9 @@
 #include <cmath>
 
 // The loops over the cells, faces and jobs of a line, out of line (so that their pointer arguments are
-// restrict) and, with GCC on x86-64, also compiled for AVX2, chosen at run time where the CPU has it (ifunc): the
-// same IEEE operations in the same order (AVX2 without FMA contraction), so the same results bitwise, on twice
-// as many faces per instruction as the baseline SSE2.
+// restrict) and, with GCC on x86-64, also compiled for AVX2, chosen at run time where the CPU has it (ifunc):
+// the same IEEE operations in the same order (AVX2 without FMA contraction), so the same results bitwise, on
+// twice as many faces per instruction as the baseline SSE2.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(SUITE_NO_AVX2_CLONES)
 #define SUITE_KERNEL __attribute__((noinline, target_clones("avx2", "default")))
 #else
@@ -34,9 +35,11 @@ template <int NV> struct CellSlot {
   static constexpr int u = NV, c = NV + 1, sr = NV + 2, srv = NV + 3, srH = 2 * NV + 1, q = 2 * NV + 2,
                        count = 3 * NV + 2;
 };
-// Whether the split faces of a sign group are many enough to project l_c U at every face of the line (a loop the
-// compiler vectorises) rather than at each split face alone.
-inline bool denseSplit(int count, int nface) { return 8 * count > nface; }
+// Whether the split faces of a sign group are many enough to project l_c U at every face of the line (a loop
+// the compiler vectorises) rather than at each split face alone.
+inline bool denseSplit(int count, int nface) {
+  return 8 * count > nface;
+}
 // Slots of the per-face data fs_: L (row-major, 0 .. NV NV - 1), then these; sgn + 0, 1, 2: the signs of the
 // fields u - c, u (all the middle fields), u + c as +1, -1 or 0 (RfChar::sign).
 template <int NV> struct FaceSlot {
@@ -44,7 +47,9 @@ template <int NV> struct FaceSlot {
                        count = sgn + 3;
 };
 // The sign slot of field c.
-template <int NV> constexpr int signGroup(int c) { return c == 0 ? 0 : c == NV - 1 ? 2 : 1; }
+template <int NV> constexpr int signGroup(int c) {
+  return c == 0 ? 0 : c == NV - 1 ? 2 : 1;
+}
 } // namespace
 
 template <int NV>
@@ -101,10 +106,10 @@ template <int NV> void Weno5RfLine<NV>::prepareCells(const V* q, int ncell, doub
   cellData<NV>(ncell, g, x, cs_.data());
 }
 
-// Per face k (cells k + 2, k + 3): LineGas::roeInto's L, the quantities of its R, and the field signs.
+// Per face k (cells k + 2, k + 3): LineGas::roeInto's L and the quantities of its R.
 template <int NV>
 SUITE_KERNEL void faceData(int nface, int nc, double g, double c2min, const double* __restrict cs,
-                                        double* __restrict fs) {
+                           double* __restrict fs) {
   using S = CellSlot<NV>;
   using F = FaceSlot<NV>;
   const int last = NV - 1;
@@ -122,7 +127,8 @@ SUITE_KERNEL void faceData(int nface, int nc, double g, double c2min, const doub
     const double b1 = (g - 1.0) / c2, b2 = 0.5 * b1 * v2;
     L(0, 0, k) = 0.5 * (b2 + u / c), L(0, 1, k) = -0.5 * (b1 * u + 1.0 / c), L(0, last, k) = 0.5 * b1;
     L(1, 0, k) = 1.0 - b2, L(1, 1, k) = b1 * u, L(1, last, k) = -b1;
-    L(last, 0, k) = 0.5 * (b2 - u / c), L(last, 1, k) = -0.5 * (b1 * u - 1.0 / c), L(last, last, k) = 0.5 * b1;
+    L(last, 0, k) = 0.5 * (b2 - u / c), L(last, 1, k) = -0.5 * (b1 * u - 1.0 / c);
+    L(last, last, k) = 0.5 * b1;
     for (int t = 2; t < last; ++t) {
       L(0, t, k) = L(last, t, k) = -0.5 * b1 * vel[t - 1];
       L(1, t, k) = b1 * vel[t - 1];
@@ -133,9 +139,10 @@ SUITE_KERNEL void faceData(int nface, int nc, double g, double c2min, const doub
   }
 }
 
-// The signs (RfChar::sign, without branches) of the fields u - c, u, u + c at each face (faceData's u, c) and its
-// two cells.
-template <int NV> SUITE_KERNEL void faceSigns(int nface, int nc, const double* __restrict cs, double* __restrict fs) {
+// The signs (RfChar::sign, without branches) of the fields u - c, u, u + c at each face (faceData's u, c) and
+// its two cells.
+template <int NV>
+SUITE_KERNEL void faceSigns(int nface, int nc, const double* __restrict cs, double* __restrict fs) {
   using S = CellSlot<NV>;
   using F = FaceSlot<NV>;
   auto sign = [](double a, double b, double c) {
@@ -143,7 +150,8 @@ template <int NV> SUITE_KERNEL void faceSigns(int nface, int nc, const double* _
     const double p = pos ? 1.0 : 0.0, n = neg ? 1.0 : 0.0;
     return p - n;
   };
-  const double *uc = &cs[S::u * nc + 2], *cc = &cs[S::c * nc + 2], *uf = &fs[F::u * nface], *cf = &fs[F::c * nface];
+  const double *uc = &cs[S::u * nc + 2], *cc = &cs[S::c * nc + 2], *uf = &fs[F::u * nface],
+               *cf = &fs[F::c * nface];
   double* __restrict sg = &fs[F::sgn * nface];
 #pragma GCC ivdep // the rows of sg are disjoint from each other and from uf, cf
   for (int k = 0; k < nface; ++k) {
@@ -155,13 +163,14 @@ template <int NV> SUITE_KERNEL void faceSigns(int nface, int nc, const double* _
 
 template <int NV> void Weno5RfLine<NV>::faceEigen(int nface, double g) {
   fs_.resize((size_t)FaceSlot<NV>::count * nface);
-  // c2min: LineGas::roeInto's floor on c^2, an argument so that GCC does not specialise the loop for it (and vectorises)
+  // c2min: LineGas::roeInto's floor on c^2, an argument so that GCC does not specialise the loop for it (and
+  // vectorises it)
   faceData<NV>(nface, ncell_, g, 1e-300, cs_.data(), fs_.data());
   faceSigns<NV>(nface, ncell_, cs_.data(), fs_.data());
 }
 
-// The Lax-Friedrichs speed of sign group GRP at face k (RfChar::face: alpha_c = (1 + 1e-12) max |lambda_c| over
-// the face and its six cells), from the cells' u, c (uc, cc) and the face's (uf, cf).
+// The Lax-Friedrichs speed of sign group GRP at face k (RfChar::face: alpha_c = (1 + 1e-12) max |lambda_c|
+// over the face and its six cells), from the cells' u, c (uc, cc) and the face's (uf, cf).
 template <int GRP>
 inline double faceAlpha(int k, const double* uc, const double* cc, const double* uf, const double* cf) {
   auto speed = [](double u, double c) { return GRP == 0 ? u - c : GRP == 2 ? u + c : u; };
@@ -174,14 +183,15 @@ inline double faceAlpha(int k, const double* uc, const double* cc, const double*
 // ac[k] = faceAlpha at every face.
 template <int GRP>
 SUITE_KERNEL void faceAlphas(int nface, const double* __restrict uc, const double* __restrict cc,
-                             const double* __restrict uf, const double* __restrict cf, double* __restrict ac) {
+                             const double* __restrict uf, const double* __restrict cf,
+                             double* __restrict ac) {
   for (int k = 0; k < nface; ++k) ac[k] = faceAlpha<GRP>(k, uc, cc, uf, cf);
 }
 
-// The weights (ws, wp, wn) of splitStencils from the signs sg: (1/2, 0, 0) where 0, (0, 1, 0) where > 0, (0, 0, 1)
-// where < 0.
-SUITE_KERNEL void splitWeights(int nface, const double* __restrict sg, double* __restrict ws, double* __restrict wp,
-                               double* __restrict wn) {
+// The weights (ws, wp, wn) of splitStencils from the signs sg: (1/2, 0, 0) where 0, (0, 1, 0) where > 0, (0,
+// 0, 1) where < 0.
+SUITE_KERNEL void splitWeights(int nface, const double* __restrict sg, double* __restrict ws,
+                               double* __restrict wp, double* __restrict wn) {
   for (int k = 0; k < nface; ++k) {
     ws[k] = sg[k] == 0.0 ? 0.5 : 0.0;
     wp[k] = sg[k] > 0.0 ? 1.0 : 0.0;
@@ -190,9 +200,11 @@ SUITE_KERNEL void splitWeights(int nface, const double* __restrict sg, double* _
 }
 
 // The split faces of sign group GRP (count gsplit_[GRP]) and, if any, their Lax-Friedrichs speeds (faceAlpha;
-// alpha when !local_lf) into row 0 of the group's ac_ (every face when the group is split densely, else the split
-// ones), and then the weights of splitStencils into rows 1, 2, 3.
-template <int NV> template <int GRP> void Weno5RfLine<NV>::groupAlpha(int nface, double alpha, bool local_lf) {
+// alpha when !local_lf) into row 0 of the group's ac_ (every face when the group is split densely, else the
+// split ones), and then the weights of splitStencils into rows 1, 2, 3.
+template <int NV>
+template <int GRP>
+void Weno5RfLine<NV>::groupAlpha(int nface, double alpha, bool local_lf) {
   using F = FaceSlot<NV>;
   using S = CellSlot<NV>;
   const double* sg = &fs_[(size_t)(F::sgn + GRP) * nface];
@@ -219,8 +231,8 @@ template <int NV> template <int GRP> void Weno5RfLine<NV>::groupAlpha(int nface,
     if (sg[k] == 0.0) ac[k] = faceAlpha<GRP>(k, uc, cc, uf, cf);
 }
 
-// l_C f (and, with U, l_C U) of cells k .. k + 5: L the face-major L of field C, f and qs the cell-major fluxes and
-// states.
+// l_C f (and, with U, l_C U) of cells k .. k + 5: L the face-major L of field C, f and qs the cell-major
+// fluxes and states.
 template <int NV, int C, bool U>
 inline void projectCells(const double* __restrict L, const double* __restrict f, const double* __restrict qs,
                          int nface, int nc, int k, double* lf, double* lu) {
@@ -238,31 +250,31 @@ inline void projectCells(const double* __restrict L, const double* __restrict f,
     }
 }
 
-// Field C at every face: l_C f of its six cells, the upwind five into row i of st (st[i jcap + k]: f+ order for
-// sign sg >= 0, mirrored for sign < 0).
+// Field C at every face: l_C f of its six cells, the upwind five into row i of st (st[i jcap + k]: f+ order
+// for sign sg >= 0, mirrored for sign < 0).
 template <int NV, int C>
-SUITE_KERNEL void upwindStencils(int nface, int nc, size_t jcap, const double* __restrict L, const double* __restrict f,
-                    const double* __restrict sg, double* __restrict st, double* __restrict spare) {
+SUITE_KERNEL void upwindStencils(int nface, int nc, size_t jcap, const double* __restrict L,
+                                 const double* __restrict f, const double* __restrict sg,
+                                 double* __restrict st, double* __restrict spare) {
   for (int k = 0; k < nface; ++k) {
     double lf[6], lu[6];
     projectCells<NV, C, false>(L, f, nullptr, nface, nc, k, lf, lu);
     const bool up = sg[k] >= 0.0;
 #pragma GCC unroll 5
     for (int i = 0; i < 5; ++i) st[i * jcap + k] = up ? lf[i] : lf[5 - i];
-    spare[k] = up ? lf[5] : lf[0]; // unused: so that GCC computes both ends before the choice (and vectorises)
+    spare[k] = up ? lf[5] : lf[0]; // unused: so that GCC computes both ends before the choice and vectorises
   }
 }
 
 // Field C at every face: l_C f and l_C U of the six cells; into row i of st ws l_C (f + alpha U) + wp (l_C f,
-// left-biased) + wn (l_C f, right-biased), into sm l_C (f - alpha U) / 2 mirrored, with the speeds alpha = ac[k]
-// and the weights (ws, wp, wn) = ac[nface + k], ac[2 nface + k], ac[3 nface + k] of groupAlpha: (1/2, 0, 0) at
-// the split faces, (0, 1, 0) or (0, 0, 1) at the upwinded ones (exact, and without the branches that GCC would
-// not vectorise).
+// left-biased) + wn (l_C f, right-biased), into sm l_C (f - alpha U) / 2 mirrored, with the speeds alpha =
+// ac[k] and the weights (ws, wp, wn) = ac[nface + k], ac[2 nface + k], ac[3 nface + k] of groupAlpha: (1/2,
+// 0, 0) at the split faces, (0, 1, 0) or (0, 0, 1) at the upwinded ones (exact, and without the branches that
+// GCC would not vectorise).
 template <int NV, int C>
 SUITE_KERNEL void splitStencils(int nface, int nc, size_t jcap, const double* __restrict L,
-                                             const double* __restrict f, const double* __restrict qs,
-                                             const double* __restrict ac, double* __restrict st,
-                                             double* __restrict sm) {
+                                const double* __restrict f, const double* __restrict qs,
+                                const double* __restrict ac, double* __restrict st, double* __restrict sm) {
 #pragma GCC ivdep // the rows i jcap + k of st and sm are disjoint (jcap >= nface)
   for (int k = 0; k < nface; ++k) {
     double lf[6], lu[6];
@@ -279,8 +291,8 @@ SUITE_KERNEL void splitStencils(int nface, int nc, size_t jcap, const double* __
 // One split face k of field C (the group has few): as splitStencils, the f+ stencil into st[i jcap + k], the
 // f- one into sm[i jcap].
 template <int NV, int C>
-void splitFace(int k, int nface, int nc, size_t jcap, const double* L, const double* f, const double* qs, double a,
-               double* st, double* sm) {
+void splitFace(int k, int nface, int nc, size_t jcap, const double* L, const double* f, const double* qs,
+               double a, double* st, double* sm) {
   double lf[6], lu[6];
   projectCells<NV, C, true>(L, f, qs, nface, nc, k, lf, lu);
   for (int i = 0; i < 5; ++i) {
@@ -291,8 +303,8 @@ void splitFace(int k, int nface, int nc, size_t jcap, const double* L, const dou
 
 // Field C: its upwind stencils into jobs C nface + k (f+ order for sign > 0, mirrored for sign < 0); at the
 // split faces l_C (f + alpha U) / 2 into that job and l_C (f - alpha U) / 2 (mirrored) into a job of its own:
-// when the group has many split faces in one loop (l_C U at every face) into the field's block of jobs
-// (NV + block_[C]) nface + k, otherwise face by face into the next job of the tail (target_: the job it adds to).
+// when the group has many split faces in one loop (l_C U at every face) into the field's block of jobs (NV +
+// block_[C]) nface + k, otherwise face by face into the next job of the tail (target_: the job it adds to).
 template <int NV> template <int C> void Weno5RfLine<NV>::projectField(int nface) {
   const int nc = ncell_, grp = signGroup<NV>(C);
   const size_t jcap = (size_t)2 * NV * nface;
@@ -329,7 +341,7 @@ template <int NV> void Weno5RfLine<NV>::wenoValues(int njob) {
 }
 
 // h[k NV + i] = (R h_c)_i at face k, h_c[c] = w[c nface + k] (LineGas::roeInto's R, its structural zeros
-// skipped, summed in column order as Weno5Line::combineFace).
+// skipped, summed in column order as LineGas::mul).
 template <int NV>
 SUITE_KERNEL void rightEigenProduct(int nface, const double* __restrict w, const double* __restrict fs,
                                     double* __restrict h) {
