@@ -1,7 +1,6 @@
 // Face fluxes of one grid line for the `weno5` scheme (see weno5_line.hpp).
 #include "euler/weno5_line.hpp"
 
-#include "euler/rf_char.hpp"
 #include "euler/weno5.hpp"
 
 #include <algorithm>
@@ -11,12 +10,11 @@ namespace suite::euler {
 template <int NV>
 void Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_lf, bool characteristic,
                                bool rf, double g, V* h) {
-  rf = rf && characteristic;
-  prepareCells(q, nface + 5, local_lf, characteristic, g);
-  if (rf) {
-    lam_.resize(nface + 5);
-    for (int m = 0; m < nface + 5; ++m) RfChar<NV>::cellSpeeds(q[m], g, lam_[m].data());
+  if (rf && characteristic) {
+    rf_.faceFluxes(q, nface, alpha, local_lf, g, h);
+    return;
   }
+  prepareCells(q, nface + 5, local_lf, characteristic, g);
   alpha_.resize(nface);
   for (int k = 0; k < nface; ++k) alpha_[k] = faceAlpha(k, alpha, local_lf);
   if (characteristic) { // a loop of its own: the square roots and divisions of neighbouring faces overlap
@@ -24,11 +22,7 @@ void Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_l
     for (int k = 0; k < nface; ++k) G::roeInto(roe_[k + 2], roe_[k + 3], g, &eigen_[k]);
   }
   st_.resize((size_t)2 * NV * 5 * nface);
-  for (int k = 0; k < nface; ++k)
-    if (rf)
-      projectFaceRf(k, nface, alpha, local_lf);
-    else
-      projectFace(k, nface, characteristic);
+  for (int k = 0; k < nface; ++k) projectFace(k, nface, characteristic);
   wenoValues(nface);
   for (int k = 0; k < nface; ++k) combineFace(k, nface, characteristic, h);
 }
@@ -84,37 +78,6 @@ template <int NV> void Weno5Line<NV>::projectFace(int k, int nface, bool charact
     double* sp = &st_[(size_t)(2 * c) * 5 * nface + k];
     double* sm = &st_[(size_t)(2 * c + 1) * 5 * nface + k];
     for (int i = 0; i < 5; ++i) sp[(size_t)i * nface] = y[i], sm[(size_t)i * nface] = y[9 - i];
-  }
-}
-
-// rf-char (rf_char.hpp): per field c, the projections l_c f and l_c U of cells k .. k + 5; an upwinded field
-// puts l_c f into the stencil of its side and zeros into the other (whose WENO value is then 0), a field of
-// mixed sign the split l_c (f +- alpha_c U) / 2 into both.
-template <int NV> void Weno5Line<NV>::projectFaceRf(int k, int nface, double alpha, bool local_lf) {
-  const typename G::Eigen& e = eigen_[k];
-  double roe[NV], ac[NV];
-  int sgn[NV];
-  RfChar<NV>::roeSpeeds(e, roe);
-  RfChar<NV>::face(&lam_[k], roe, alpha, local_lf, sgn, ac);
-  for (int c = 0; c < NV; ++c) {
-    double lf[6] = {0, 0, 0, 0, 0, 0}, lu[6] = {0, 0, 0, 0, 0, 0};
-    for (int j = 0; j < NV; ++j)
-      if (!G::leftZero(c, j)) {
-        const double lcj = e.L[NV * c + j];
-        const double* f = &ft_[(size_t)j * ncell_ + k];
-        for (int l = 0; l < 6; ++l) lf[l] += lcj * f[l];
-        if (sgn[c] != 0) continue; // l_c U only where the field is split
-        const double* u = &qt_[(size_t)j * ncell_ + k];
-        for (int l = 0; l < 6; ++l) lu[l] += lcj * u[l];
-      }
-    double* sp = &st_[(size_t)(2 * c) * 5 * nface + k];
-    double* sm = &st_[(size_t)(2 * c + 1) * 5 * nface + k];
-    const double a = sgn[c] == 0 ? ac[c] : 0.0, wp = sgn[c] >= 0 ? (sgn[c] ? 1.0 : 0.5) : 0.0;
-    const double wm = sgn[c] <= 0 ? (sgn[c] ? 1.0 : 0.5) : 0.0;
-    for (int i = 0; i < 5; ++i) {
-      sp[(size_t)i * nface] = wp * (lf[i] + a * lu[i]);
-      sm[(size_t)i * nface] = wm * (lf[5 - i] - a * lu[5 - i]);
-    }
   }
 }
 

@@ -1,6 +1,6 @@
-// Face fluxes of one grid line for the `weno5` scheme (explicit fifth-order WENO-Z rows everywhere, weno5.hpp):
-// Lax-Friedrichs flux splitting or rf-char upwinding (rf_char.hpp), characteristic-wise (Roe eigenvectors of
-// each face, gas_nd.hpp) or
+// Face fluxes of one grid line for the `weno5` scheme (explicit fifth-order WENO-Z rows everywhere, weno5.hpp).
+// rf-char upwinding (rf_char.hpp, the default; characteristic-wise) goes to Weno5RfLine (weno5_line_rf.hpp).
+// Here Lax-Friedrichs flux splitting, characteristic-wise (Roe eigenvectors of each face, gas_nd.hpp) or
 // component-wise, with the arithmetic of DirectionSweep's row-by-row path (bitwise the same fluxes), organised
 // for speed: per cell once the flux, |u| + c and the per-state part of the Roe average; per face once the
 // eigenvectors and the projection of the stencil's split fluxes (products with the structural zeros of L and R
@@ -11,6 +11,7 @@
 #pragma once
 
 #include "euler/gas_nd.hpp"
+#include "euler/weno5_line_rf.hpp"
 
 #include <array>
 #include <vector>
@@ -32,18 +33,17 @@ private:
   void prepareCells(const V* q, int ncell, bool local_lf, bool characteristic, double g);
   double faceAlpha(int k, double alpha, bool local_lf) const;
   void projectFace(int k, int nface, bool characteristic);
-  void projectFaceRf(int k, int nface, double alpha, bool local_lf);
   void wenoValues(int nface);
   void combineFace(int k, int nface, bool characteristic, V* h) const;
 
   int ncell_ = 0;
   std::vector<double> qt_, ft_, speed_; // cell-major per component: qt_[j * ncell + m]
   std::vector<typename G::RoeState> roe_;
-  std::vector<std::array<double, NV>> lam_; // rf: per cell the field speeds (RfChar::cellSpeeds)
-  std::vector<double> alpha_;               // per face: the Lax-Friedrichs speed
-  std::vector<typename G::Eigen> eigen_;    // per face: the Roe eigenvectors
+  std::vector<double> alpha_;            // per face: the Lax-Friedrichs speed
+  std::vector<typename G::Eigen> eigen_; // per face: the Roe eigenvectors
   std::vector<double> st_; // stencils: st_[((2 c + s) 5 + i) nface + k], element i of field c, sign s, face k
   std::vector<double> w_;  // WENO-Z values: w_[(2 c + s) nface + k]
+  Weno5RfLine<NV> rf_;     // rf-char lines
 };
 
 extern template class Weno5Line<3>;

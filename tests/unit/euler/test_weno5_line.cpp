@@ -111,8 +111,10 @@ TYPED_TEST(Weno5LineTest, RoeIntoReusedStorageEqualsRoeAndKeepsTheStructuralZero
 }
 
 namespace {
-// rf-char face flux between cells k + 2 and k + 3 by its definition (rf_char.hpp), local alpha per field.
-template <int NV> typename LineGas<NV>::V rfReference(const typename LineGas<NV>::V* q, int* mixed) {
+// rf-char face flux between cells k + 2 and k + 3 by its definition (rf_char.hpp): local alpha per field, or
+// alpha_global when it is > 0.
+template <int NV>
+typename LineGas<NV>::V rfReference(const typename LineGas<NV>::V* q, int* mixed, double alpha_global = 0.0) {
   using G = LineGas<NV>;
   const typename G::Eigen e = G::roe(q[2], q[3], kGamma);
   double lam[6][NV], roe[NV];
@@ -127,7 +129,7 @@ template <int NV> typename LineGas<NV>::V rfReference(const typename LineGas<NV>
       for (int j = 0; j < NV; ++j) lf[m] += e.L[NV * c + j] * f[j], lu[m] += e.L[NV * c + j] * q[m][j];
       a = std::max(a, std::abs(lam[m][c]));
     }
-    a *= 1.0 + 1e-12;
+    a = alpha_global > 0.0 ? alpha_global : a * (1.0 + 1e-12);
     const bool pos = lam[2][c] > 0 && roe[c] > 0 && lam[3][c] > 0,
                neg = lam[2][c] < 0 && roe[c] < 0 && lam[3][c] < 0;
     double vp[6], vm[6];
@@ -157,9 +159,46 @@ TYPED_TEST(Weno5LineTest, RfCharFluxesEqualTheirDefinition) {
   int mixed = 0;
   for (int k = 0; k < nface; ++k) {
     const typename G::V ref = rfReference<NV>(q.data() + k, &mixed);
-    for (int c = 0; c < NV; ++c)
-      EXPECT_NEAR(h[k][c], ref[c], 1e-13 * (1.0 + std::abs(ref[c]))) << "face " << k << " component " << c;
+    for (int c = 0; c < NV; ++c) EXPECT_EQ(h[k][c], ref[c]) << "face " << k << " component " << c;
   }
   EXPECT_GT(mixed, 0); // the Lax-Friedrichs branch is exercised
   EXPECT_LT(mixed, NV * nface);
+}
+
+namespace {
+// A line of n cells with u_n = 0 on its first half (gas at rest, pressure and density waves: the fields of speed
+// u split at every face there) and u_n rising from 0.5 to 1.7 on the second (u_n - c changes sign once: a few
+// split faces of that field).
+template <int NV> std::vector<typename LineGas<NV>::V> restAndFlowLine(int n) {
+  std::vector<typename LineGas<NV>::V> q(n);
+  for (int m = 0; m < n; ++m) {
+    const double x = (m + 0.5) / n;
+    double w[NV];
+    w[0] = 1.0 + 0.3 * std::sin(7.0 * x);
+    for (int c = 1; c < NV - 1; ++c) w[c] = m < n / 2 ? 0.0 : (c == 1 ? 0.5 + 2.4 * (x - 0.5) : 0.2 * c);
+    w[NV - 1] = 1.0 + 0.5 * std::cos(5.0 * x);
+    q[m] = LineGas<NV>::fromPrim(w, kGamma);
+  }
+  return q;
+}
+} // namespace
+
+// The kernel's two ways with split fields (weno5_line_rf.hpp: in one loop where a line has many, face by face
+// where few) and the global alpha: the fluxes of the definition, bitwise (AVX2 or SSE2, whichever this CPU runs).
+TYPED_TEST(Weno5LineTest, RfCharDenseAndSparseSplitsAndGlobalAlphaEqualTheDefinitionBitwise) {
+  constexpr int NV = TypeParam::value;
+  using G = LineGas<NV>;
+  const int nface = 64;
+  const auto q = restAndFlowLine<NV>(nface + 5);
+  Weno5Line<NV> line;
+  std::vector<typename G::V> h(nface);
+  for (double alpha : {0.0, 3.0}) { // 0: local alpha
+    line.faceFluxes(q.data(), nface, alpha, alpha == 0.0, true, true, kGamma, h.data());
+    int mixed = 0;
+    for (int k = 0; k < nface; ++k) {
+      const typename G::V ref = rfReference<NV>(q.data() + k, &mixed, alpha);
+      for (int c = 0; c < NV; ++c) EXPECT_EQ(h[k][c], ref[c]) << "face " << k << " component " << c;
+    }
+    EXPECT_GT(mixed, (NV - 2) * nface / 2 - 4); // the fields of speed u at rest
+  }
 }
