@@ -1,13 +1,18 @@
-// Fifth-order WENO-Z interface value (explicit, non-compact), the `weno5` comparator.
-// Reference: Jiang & Shu, J. Comput. Phys. 126 (1996) 202, eqs. (2.10)-(2.17) for candidates and smoothness
-// indicators; Borges, Carmona, Costa & Don, J. Comput. Phys. 227 (2008) 3191, eq. (28) for the Z weights; p =
-// 2 as in Don & Borges, J. Comput. Phys. 250 (2013) 347, which keeps fifth order at first-order critical
-// points; epsilon = 1e-6 times the mean square of the stencil values (scale-invariant form of Ghosh &
-// Baeder's 1e-6). Measured alternative (issue #18 item 3), not taken: p = 1 (Borges et al.) lowers WENO5's
-// L1(rho) at HyPar's Sod / Lax settings (N = 200, rf-char) from 2.46e-3 to 2.22e-3 and 8.94e-3 to 7.81e-3 and
-// keeps order 5.3 at critical points here (scale-relative epsilon), but WENO5 without the positivity limiter
-// then fails LeBlanc at -cfl 0.4 (p = 2: completes), and in the CRWENO5 rows the substructured solve drifts
-// (3D explosion, 1 vs 2 ranks: 4e-10 apart).
+// Fifth-order WENO-Z interface value (explicit, non-compact), the `weno5` comparator, and the WENO-Z weights of
+// the CRWENO5 rows (crweno5.hpp). Reference: Jiang & Shu, J. Comput. Phys. 126 (1996) 202, eqs. (2.10)-(2.17)
+// for candidates and smoothness indicators; Borges, Carmona, Costa & Don, J. Comput. Phys. 227 (2008) 3191,
+// eq. (28) for the Z weights alpha_k = d_k (1 + (tau / (beta_k + eps))^p); epsilon = 1e-6 times the mean
+// square of the stencil values (scale-invariant form of Ghosh & Baeder's 1e-6).
+// The exponent p (issue #18 item 3, measured at HyPar's Sod / Lax settings, rf-char):
+//  - explicit values (weno5ZValue: the `weno5` scheme, the WENO5 closures of the compact schemes, the
+//    Lax-Friedrichs term of their rf-char faces): p = 1, Borges et al.'s original, less dissipative at
+//    discontinuities: WENO5 L1(rho) Sod N = 200 2.46e-3 -> 2.22e-3 (HyPar's WENO5 2.39e-3), Lax 8.94e-3 ->
+//    7.81e-3; order 5.3 at critical points here (scale-relative epsilon). Without the positivity limiter it
+//    fails LeBlanc at -cfl 0.4 (p = 2 completes); the limiter is on by default and covers it.
+//  - CRWENO5 rows (wenoZWeights): p = 2 (Don & Borges, J. Comput. Phys. 250 (2013) 347). p = 1 lowers
+//    crweno5's errors below HyPar's too (Sod 200 1.90e-3 -> 1.72e-3), but its weights then pass round-off
+//    differences on to the tridiagonal systems: with -line_solve substructured (not bitwise across ranks)
+//    the 3D explosion at 24^3 differs by 1e-11 between 1 and 2 ranks after 8 steps instead of < 1e-12.
 #pragma once
 
 #include "euler/row.hpp"
@@ -41,7 +46,7 @@ inline double weno5ZValue(double v0, double v1, double v2, double v3, double v4)
   const double tau = std::abs(b0 - b2);
   const double eps = kWenoEpsAbs + kWenoEpsRel / 5.0 * (v0 * v0 + v1 * v1 + v2 * v2 + v3 * v3 + v4 * v4);
   const double q0 = tau / (b0 + eps), q1 = tau / (b1 + eps), q2 = tau / (b2 + eps);
-  const double a0 = 0.1 * (1.0 + q0 * q0), a1 = 0.6 * (1.0 + q1 * q1), a2 = 0.3 * (1.0 + q2 * q2);
+  const double a0 = 0.1 * (1.0 + q0), a1 = 0.6 * (1.0 + q1), a2 = 0.3 * (1.0 + q2);
   const double c0 = 2.0 * v0 - 7.0 * v1 + 11.0 * v2, c1 = -v1 + 5.0 * v2 + 2.0 * v3;
   const double c2 = 2.0 * v2 + 5.0 * v3 - v4;
   return (a0 * c0 + a1 * c1 + a2 * c2) / (6.0 * (a0 + a1 + a2));
