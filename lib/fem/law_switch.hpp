@@ -12,8 +12,8 @@ enum class Fidelity { cheap = 0, accurate = 1 };
 
 struct LawSwitchPolicy {
   double target = 1e-2; // the error the run must stay below (> 0, finite)
-  double up = 0.5;      // switch to the accurate model when estimate > up * target
-  double down = 0.25;   // back to the cheap model when estimate < down * target
+  double up = 0.3;      // switch to the accurate model when estimate > up * target
+  double down = 0.1;    // back to the cheap model when estimate < down * target
   // The model for the next step given the current one and the estimated error of the cheap model now.
   Fidelity next(Fidelity current, double estimate) const;
   // True when the cheap model's result with this estimate must not be accepted (estimate > up * target).
