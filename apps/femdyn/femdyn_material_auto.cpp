@@ -106,18 +106,21 @@ PetscErrorCode FemdynDynamics::stepMaterialAuto(double dt, StepTimings* tm) {
   if (law_ == Fidelity::cheap) {
     const NewmarkState saved = s_;
     PetscCall(nm_.step(&s_, dt, tm));
+    run_.res_.law_factorizations[0] += tm->factorizations;
     PetscCall(linearLawError(&est));
     if (pol.cheapRejected(est)) {
       s_ = saved;
       PetscCall(projectState(run_.model_, run_.model_nl_));
       StepTimings lin = *tm;
       PetscCall(nm_nl_.step(&s_, dt, tm));
+      run_.res_.law_factorizations[1] += tm->factorizations;
       tm->assemble += lin.assemble, tm->factor += lin.factor, tm->solve += lin.solve;
       used = Fidelity::accurate;
       PetscCall(linearLawError(&est));
     }
   } else {
     PetscCall(nm_nl_.step(&s_, dt, tm));
+    run_.res_.law_factorizations[1] += tm->factorizations;
     PetscCall(linearLawError(&est));
   }
   law_ = pol.next(used, est);
@@ -175,6 +178,8 @@ PetscErrorCode FemdynRun::writeMaterialAuto(suite::H5Output& out) const {
   PetscCall(out.writeAttribute(g, "steps_nonlinear", res_.law_steps[1]));
   PetscCall(out.writeAttribute(g, "cpu_seconds_linear", res_.law_cpu[0]));
   PetscCall(out.writeAttribute(g, "cpu_seconds_nonlinear", res_.law_cpu[1]));
+  PetscCall(out.writeAttribute(g, "factorizations_linear", res_.law_factorizations[0]));
+  PetscCall(out.writeAttribute(g, "factorizations_nonlinear", res_.law_factorizations[1]));
   PetscFunctionReturn(0);
 }
 

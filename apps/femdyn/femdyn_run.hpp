@@ -83,6 +83,7 @@ struct Results {
   int law_switches = 0;
   double law_cpu[2] = {0, 0};
   int law_steps[2] = {0, 0};
+  int law_factorizations[2] = {0, 0}; // numeric factorisations of K_eff per law (linear: one per dt)
 };
 
 class FemdynRun {
