@@ -124,7 +124,8 @@ PetscErrorCode FemdynDynamics::stepMaterialAuto(double dt, StepTimings* tm) {
     PetscCall(linearLawError(&est));
   }
   law_ = pol.next(used, est);
-  if (used == Fidelity::accurate && law_ == Fidelity::cheap) PetscCall(projectState(run_.model_nl_, run_.model_));
+  if (used == Fidelity::accurate && law_ == Fidelity::cheap)
+    PetscCall(projectState(run_.model_nl_, run_.model_));
   recordLaw(used, est, suite::threadCpuSeconds() - t0);
   PetscFunctionReturn(0);
 }

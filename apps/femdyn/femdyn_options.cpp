@@ -162,7 +162,7 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCall(policy_.setFromOptions(comm, "femdyn"));
   PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_));
   PetscCall(solver_->setFromOptions(comm)); // -solver petsc: -ksp_type, -pc_type, ...
-  if (opt_.materialAuto()) { // the nonlinear law's own solver (same kind and options)
+  if (opt_.materialAuto()) {                // the nonlinear law's own solver (same kind and options)
     PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_nl_));
     PetscCall(solver_nl_->setFromOptions(comm));
   }

@@ -67,7 +67,8 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
   if (solver_nl_) { // -material auto: the nonlinear law's solver, same pattern and ordering
     solver_nl_->setNodeGraph(model_nl_.nodeGraphOf(), model_nl_.eq());
     PetscCall(solver_nl_->analyze(comm, model_nl_.pattern(), perm_));
-    if (solver_nl_->distributedAssembly()) model_nl_.ownElementsOfNodes(solver_nl_->nodePartition(), ctx_.rank());
+    if (solver_nl_->distributedAssembly())
+      model_nl_.ownElementsOfNodes(solver_nl_->nodePartition(), ctx_.rank());
   }
   res_.factor = solver_->stats();
   PetscFunctionReturn(0);
@@ -89,15 +90,14 @@ PetscErrorCode FemdynRun::setup() {
   addGravityLoad(model_, opt_.density, opt_.gravity, &f_ext_);
   PetscCall(orderAndAnalyze());
   res_.setup_time = suite::wallSeconds() - t0;
-  PetscCall(suite::logInfo(comm, ctx_.quiet(),
-                           "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
-                           "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",
-                           mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
-                           opt_.materialAuto() ? ("auto (linear/" + opt_.auto_law + ")").c_str()
-                                               : material_->name(),
-                           opt_.ordering.c_str(), 1e3 * res_.ordering_time,
-                           res_.metrics.bandwidth, res_.metrics.profile, res_.metrics.nnz_L,
-                           res_.metrics.flops, solver_->describe().c_str()));
+  PetscCall(suite::logInfo(
+      comm, ctx_.quiet(),
+      "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
+      "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",
+      mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
+      opt_.materialAuto() ? ("auto (linear/" + opt_.auto_law + ")").c_str() : material_->name(),
+      opt_.ordering.c_str(), 1e3 * res_.ordering_time, res_.metrics.bandwidth, res_.metrics.profile,
+      res_.metrics.nnz_L, res_.metrics.flops, solver_->describe().c_str()));
   PetscFunctionReturn(0);
 }
 

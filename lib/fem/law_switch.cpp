@@ -16,7 +16,8 @@ PetscErrorCode checkLawSwitchPolicy(MPI_Comm comm, const LawSwitchPolicy& p) {
   PetscCheck(std::isfinite(p.target) && p.target > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-target_error %g: must be a finite number > 0", p.target);
   PetscCheck(p.down > 0 && p.down < p.up && p.up <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "law switch thresholds -target_switch_down %g, -target_switch_up %g: need 0 < down < up <= 1", p.down, p.up);
+             "law switch thresholds -target_switch_down %g, -target_switch_up %g: need 0 < down < up <= 1",
+             p.down, p.up);
   PetscFunctionReturn(0);
 }
 

@@ -1,10 +1,9 @@
 // Geometric-nonlinearity estimate (see nonlinearity_estimate.hpp): H = sum_a u_a (x) dN_a/dX at every
 // quadrature point of the stiffness rule, ||1/2 H^T H||_F^2 and ||H||_F^2 integrated with the rule's weights.
 //
-// Why eta: for a rigid rotation by theta about z, H = R - I has ||H||_F^2 = 4 (1 - cos theta) ~ 2 theta^2 and
-// 1/2 H^T H = (I - sym(R)) restricted to the plane, ||.||_F ~ theta^2 / sqrt(2), so eta ~ theta / 2 wherever
-// rotation dominates the gradient (bending of slender bodies); where stretch dominates (1/2 H^T H ~ 1/2 eps^2)
-// eta ~ eps / 2. Either way eta is the size of the neglected quadratic kinematics relative to the kept linear
+// Why eta: for a rigid rotation by theta about z, H = R - I has ||H||_F^2 = 4 (1 - cos theta) and 1/2 H^T H =
+// (1 - cos theta) I on the rotation plane, so eta = sin(theta / 2) exactly (tests/unit/fem) wherever rotation
+// dominates the gradient (bending of slender bodies); for a uniaxial stretch e, eta = e / 2. Either way eta is the size of the neglected quadratic kinematics relative to the kept linear
 // part, and the linear law's displacement error along the load is second order in it (the displacement is odd
 // in the load, the error of linearised rotations is O(theta^2)).
 //

@@ -5,7 +5,7 @@
 //
 //   ratio eta = sqrt( int ||1/2 H^T H||_F^2 dV / int ||H||_F^2 dV )     (0 for u = 0)
 //
-// H includes the rotation (skew) part, so a large rigid rotation by theta gives eta ~ theta/2 even where
+// H includes the rotation (skew) part, so a rigid rotation by theta gives eta = sin(theta/2) even where
 // sym(H) is small -- the linear law's error is the error of linearised rotations, cos(theta) ~ 1 and
 // sin(theta) ~ theta, relative O(theta^2) on the displacement along the load. The relative error of the
 // linear law's displacement is estimated as linearLawError(eta) = 0.07 eta + 1.5 eta^2 (calibrated).
