@@ -70,8 +70,11 @@ void FemdynDynamics::record(const StepTimings& tm, double total, double cpu) {
   StepRecord r{};
   r.time = s_.t;
   r.assemble = tm.assemble, r.factor = tm.factor, r.solve = tm.solve, r.total = total, r.cpu = cpu;
-  r.kinetic = nm_.kineticEnergy(s_);
-  r.strain = nm_.strainEnergy(s_);
+  // -material auto: the energies of the law this step used (recordLaw ran first)
+  const auto& law = run_.res_.law;
+  Newmark& nm = !law.empty() && law.back() == static_cast<int>(Fidelity::accurate) ? nm_nl_ : nm_;
+  r.kinetic = nm.kineticEnergy(s_);
+  r.strain = nm.strainEnergy(s_);
   double w = 0;
   for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
   r.external = w;
