@@ -1,4 +1,5 @@
-"""FEM figures: femdyn energy / tip-deflection / per-step timing histories, haptic probe force history; Hz against DOF per ordering and solver
+"""FEM figures: femdyn energy / tip-deflection / per-step timing histories, haptic probe force history, the
+-material auto estimate with its switch points and target; Hz against DOF per ordering and solver
 (scripts/bench/fem-rate CSV); ordering metrics per matrix or mesh (scripts/bench/fem-orderings CSV)."""
 from __future__ import annotations
 
@@ -87,8 +88,52 @@ def plot_probe(h5path, outdir):
     return [str(png)]
 
 
+def read_material_auto(path):
+    """/material_auto of a femdyn -material auto run: (time, law, estimate, attrs); None without it."""
+    with h5py.File(path, "r") as f:
+        if "material_auto" not in f:
+            return None
+        g = f["material_auto"]
+        attrs = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in g.attrs.items()}
+        return f["steps/time"][...], g["law"][...], g["estimate"][...], attrs
+
+
+def plot_material_auto(h5path, outdir):
+    """Estimated relative error of the linear law against time, the law per step (shaded where nonlinear),
+    the switch points, the target E and the switch band (up * E, down * E); the tip deflection below."""
+    m = read_material_auto(h5path)
+    if m is None:
+        return []
+    t, law, est, a = m
+    s, _ = read_history(h5path)
+    plt = _plt()
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    E, nl = float(a["target"]), a.get("nonlinear_law", "nonlinear")
+    for ax in (a1, a2):
+        for i in np.flatnonzero(law[1:] == 1) + 1:
+            ax.axvspan(t[i - 1], t[i], color="tab:orange", alpha=0.15, lw=0)
+    a1.semilogy(t[1:], np.maximum(est[1:], 1e-300), "k-", lw=1, label="estimate (linear law's error)")
+    a1.axhline(E, color="tab:red", label=f"target E = {E:g}")
+    a1.axhline(float(a["switch_up"]) * E, color="tab:red", ls="--", lw=0.8, label="switch up")
+    a1.axhline(float(a["switch_down"]) * E, color="tab:blue", ls="--", lw=0.8, label="switch down")
+    sw = np.flatnonzero(np.diff(law) != 0) + 1
+    a1.plot(t[sw], np.maximum(est[sw], 1e-300), "o", color="tab:purple", ms=5, label="switch")
+    a1.set(ylabel="estimated relative error",
+           title=f"-material auto: linear / {nl} (shaded), {int(a['switches'])} switches")
+    a1.legend(fontsize=7, loc="lower right")
+    a2.plot(t, s["tip_deflection"], "k-", lw=1)
+    a2.plot(t[sw], s["tip_deflection"][sw], "o", color="tab:purple", ms=5)
+    a2.set(xlabel="t", ylabel="tip deflection (mean -u_y)")
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / f"femdyn_{Path(h5path).stem}_material_auto.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
 def default_plot(h5path, outdir):
-    return plot_history(h5path, outdir) + plot_probe(h5path, outdir)
+    return plot_history(h5path, outdir) + plot_probe(h5path, outdir) + plot_material_auto(h5path, outdir)
 
 
 def read_csv(path):
@@ -164,6 +209,8 @@ def _cli(fn):
 def register(sub):
     for name, fn, help_text in (
         ("fem-history", plot_history, "femdyn energy, tip deflection and step timings from an output file"),
+        ("fem-material-auto", plot_material_auto,
+         "femdyn -material auto: estimate against time with the switch points and the target"),
         ("fem-rate", plot_rate, "Hz against DOF per ordering and solver (scripts/bench/fem-rate CSV)"),
         ("fem-orderings", plot_orderings, "nnz(L) and profile per ordering (scripts/bench/fem-orderings CSV)"),
     ):

@@ -23,6 +23,7 @@ PetscErrorCode FemdynDynamics::setup() {
   const double rho = r.opt_.density;
   auto mass = r.opt_.mass == "lumped" ? r.model_.lumpedMass(rho) : r.model_.consistentMass(rho);
   const std::vector<double>& fe = r.f_ext_;
+  if (r.opt_.materialAuto()) PetscCall(setupMaterialAuto(mass));
   PetscCall(nm_.setup(r.ctx_.comm(), sys, r.solver_.get(), std::move(mass), r.opt_.newmark,
                       [&fe](double, double* f) { std::copy(fe.begin(), fe.end(), f); }));
   s_.u.assign(r.model_.numFree(), 0.0);
@@ -36,6 +37,7 @@ PetscErrorCode FemdynDynamics::start(PetscInt, double, bool restarted) {
   if (restarted) PetscFunctionReturn(0);
   PetscCall(nm_.initialize(&s_));
   record(StepTimings(), 0.0, 0.0);
+  if (run_.opt_.materialAuto()) recordLaw(Fidelity::cheap, 0.0, 0.0);
   PetscFunctionReturn(0);
 }
 
@@ -50,7 +52,10 @@ PetscErrorCode FemdynDynamics::advance(PetscInt, double, double dt, suite::StepO
   StepTimings tm;
   PetscFunctionBeginUser;
   const double ts = suite::wallSeconds(), tc = suite::threadCpuSeconds();
-  PetscCall(nm_.step(&s_, dt, &tm));
+  if (run_.opt_.materialAuto())
+    PetscCall(stepMaterialAuto(dt, &tm));
+  else
+    PetscCall(nm_.step(&s_, dt, &tm));
   const double dt_wall = suite::wallSeconds() - ts, dt_cpu = suite::threadCpuSeconds() - tc;
   stepping_ += dt_wall;
   stepping_cpu_ += dt_cpu;
@@ -65,8 +70,11 @@ void FemdynDynamics::record(const StepTimings& tm, double total, double cpu) {
   StepRecord r{};
   r.time = s_.t;
   r.assemble = tm.assemble, r.factor = tm.factor, r.solve = tm.solve, r.total = total, r.cpu = cpu;
-  r.kinetic = nm_.kineticEnergy(s_);
-  r.strain = nm_.strainEnergy(s_);
+  // -material auto: the energies of the law this step used (recordLaw ran first)
+  const auto& law = run_.res_.law;
+  Newmark& nm = !law.empty() && law.back() == static_cast<int>(Fidelity::accurate) ? nm_nl_ : nm_;
+  r.kinetic = nm.kineticEnergy(s_);
+  r.strain = nm.strainEnergy(s_);
   double w = 0;
   for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
   r.external = w;
@@ -110,6 +118,7 @@ PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
   run_.res_.u_full = run_.model_.fullVector(s_.u);
   PetscCall(logSummary(summary));
   if (probe_) PetscCall(probe_->logSummary());
+  if (run_.opt_.materialAuto()) PetscCall(logMaterialAuto());
   PetscCall(run_.writeOutput());
   PetscFunctionReturn(0);
 }

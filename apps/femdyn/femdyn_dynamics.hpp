@@ -29,12 +29,22 @@ public:
   PetscErrorCode writeFinal(const suite::LoopSummary& summary) override;
 
 private:
+  // -material auto (femdyn_material_auto.cpp): the nonlinear law's integrator on the same state, one step
+  // with the law the policy picks, the estimate and its record, the summary line.
+  PetscErrorCode setupMaterialAuto(const std::vector<double>& mass);
+  PetscErrorCode stepMaterialAuto(double dt, suite::fem::StepTimings* tm);
+  PetscErrorCode linearLawError(double* err) const;
+  PetscErrorCode projectState(suite::fem::ElasticModel& from, suite::fem::ElasticModel& to);
+  void recordLaw(suite::fem::Fidelity used, double estimate, double cpu);
+  PetscErrorCode logMaterialAuto() const;
   void record(const suite::fem::StepTimings& tm, double total, double cpu);
   PetscErrorCode logSummary(const suite::LoopSummary& summary) const;
   suite::CheckpointHeader checkpointHeader() const; // femdyn_checkpoint.cpp
 
   FemdynRun& run_;
   suite::fem::Newmark nm_;
+  suite::fem::Newmark nm_nl_; // -material auto: the nonlinear law (model_nl_, solver_nl_), same state s_
+  suite::fem::Fidelity law_ = suite::fem::Fidelity::cheap; // -material auto: the law of the next step
   suite::fem::NewmarkState s_;
   std::unique_ptr<suite::fem::HapticProbeObserver> probe_;
   double stepping_ = 0, stepping_cpu_ = 0; // wall and CPU seconds in the steps of this run

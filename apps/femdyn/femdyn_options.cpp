@@ -45,7 +45,20 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(suite::optionsIntArray(PetscOptionsObject, "-beam_cells", "Hexahedra nx,ny,nz", "",
                                    opt_.beam.cells.data(), &ncells, nullptr));
   PetscCall(o("-order", "Element order: 1 (P1) or 2 (P2)", &opt_.order));
-  PetscCall(o("-material", "Material", suite::fem::materialChoices(), &opt_.material));
+  auto materials = suite::fem::materialChoices();
+  materials.push_back({"auto", "the linear law while its estimated error is below -target_error, else "
+                               "-material_auto_law (per-step law in /material_auto)"});
+  PetscCall(o("-material", "Material", materials, &opt_.material));
+  PetscCall(o("-material_auto_law", "-material auto: the nonlinear law", suite::fem::materialChoices(),
+              &opt_.auto_law));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-target_error",
+                               "-material auto: bound E on max_t |tip(t) - tip_nonlinear(t)| / "
+                               "max_t |tip_nonlinear(t)| (tip: mean -u_y of the end face; same -dt)",
+                               "", opt_.law_policy.target, &opt_.law_policy.target, &opt_.target_set));
+  PetscCall(o("-target_switch_up", "-material auto: to the nonlinear law when the estimate > this * target",
+              &opt_.law_policy.up));
+  PetscCall(o("-target_switch_down", "-material auto: back to linear when the estimate < this * target",
+              &opt_.law_policy.down));
   PetscCall(o("-young", "Young's modulus E", &opt_.young));
   PetscCall(o("-poisson", "Poisson ratio nu", &opt_.poisson));
   PetscCall(o("-density", "Mass density", &opt_.density));
@@ -125,6 +138,7 @@ PetscErrorCode FemdynRun::checkOptions() const {
              "-output FILE.h5 is required");
   PetscCheck(opt_.rho_inf >= 0 && opt_.rho_inf <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-rho_inf %g: must be in [0, 1]", opt_.rho_inf);
+  PetscCall(checkMaterialAuto());
   PetscFunctionReturn(0);
 }
 
@@ -148,6 +162,10 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCall(policy_.setFromOptions(comm, "femdyn"));
   PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_));
   PetscCall(solver_->setFromOptions(comm)); // -solver petsc: -ksp_type, -pc_type, ...
+  if (opt_.materialAuto()) {                // the nonlinear law's own solver (same kind and options)
+    PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_nl_));
+    PetscCall(solver_nl_->setFromOptions(comm));
+  }
   PetscCall(checkOptions());
   auto& nm = opt_.newmark;
   nm.initial_jacobian = opt_.jacobian == "initial";

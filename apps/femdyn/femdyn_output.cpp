@@ -28,7 +28,7 @@ PetscErrorCode writeColumn(suite::H5Output& out, const std::vector<StepRecord>& 
 PetscErrorCode FemdynRun::writeRunAttributes(suite::H5Output& out) const {
   PetscFunctionBeginUser;
   PetscCall(out.writeAttribute("/", "mode", opt_.is_static ? "static" : "dynamic"));
-  PetscCall(out.writeAttribute("/", "material", material_->name()));
+  PetscCall(out.writeAttribute("/", "material", opt_.materialAuto() ? "auto" : material_->name()));
   PetscCall(out.writeAttribute("/", "ordering", opt_.ordering));
   PetscCall(out.writeAttribute("/", "solver", solver_->name()));
   PetscCall(out.writeAttribute("/", "element_order", (long long)mesh_.order()));
@@ -150,6 +150,7 @@ PetscErrorCode FemdynRun::writeOutput() const {
     PetscCall(writeSteps(out));
   }
   if (!res_.probe.sync_time.empty()) PetscCall(writeProbe(out));
+  if (!res_.law.empty()) PetscCall(writeMaterialAuto(out));
   PetscCall(writeSnapshots(out, &xsteps));
   PetscCall(out.commit(&ctx_));
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)mesh_.numNodes(), (ull)mesh_.numElems()};

@@ -6,6 +6,7 @@
 #include "core/run_context.hpp"
 #include "fem/beam_loads.hpp"
 #include "fem/haptic_probe.hpp"
+#include "fem/law_switch.hpp"
 #include "fem/linear_solver.hpp"
 #include "fem/newmark.hpp"
 #include "fem/ordering.hpp"
@@ -33,6 +34,12 @@ struct Options {
   suite::fem::NewmarkParams newmark;
   PetscBool is_static = PETSC_FALSE, probe = PETSC_FALSE;
   suite::fem::HapticProbeSettings probe_set; // -probe: a rigid point pressing (along -y) on a surface node
+  // -material auto (femdyn_material_auto.cpp): the linear law while the estimated error of the linear law is
+  // below the target, else -material_auto_law; -target_error E and the switch band of the policy.
+  std::string auto_law = "stvk";
+  suite::fem::LawSwitchPolicy law_policy;
+  PetscBool target_set = PETSC_FALSE;
+  bool materialAuto() const { return material == "auto"; }
 };
 
 struct StepRecord {
@@ -69,6 +76,14 @@ struct Results {
   std::vector<double> u_full;
   double tip_deflection = 0, tip_ux = 0; // static: mean -u_y and mean u_x over the tip-face nodes
   suite::fem::StaticResult stat;
+  // -material auto, per step record (step 0 first): the law used (0 linear, 1 -material_auto_law) and the
+  // estimated relative error of the linear law at the step's result; switches and CPU seconds per law.
+  std::vector<int> law;
+  std::vector<double> law_estimate;
+  int law_switches = 0;
+  double law_cpu[2] = {0, 0};
+  int law_steps[2] = {0, 0};
+  int law_factorizations[2] = {0, 0}; // numeric factorisations of K_eff per law (linear: one per dt)
 };
 
 class FemdynRun {
@@ -104,6 +119,9 @@ private:
   PetscErrorCode writeMesh(suite::H5Output& out) const;
   PetscErrorCode writeSteps(suite::H5Output& out) const;
   PetscErrorCode writeProbe(suite::H5Output& out) const;
+  // -material auto (femdyn_material_auto.cpp): the option checks and the output.
+  PetscErrorCode checkMaterialAuto() const;
+  PetscErrorCode writeMaterialAuto(suite::H5Output& out) const;
   PetscErrorCode writeSnapshots(suite::H5Output& out, std::vector<suite::XdmfTetStep>* xsteps) const;
 
   const suite::RunContext& ctx_;
@@ -114,6 +132,11 @@ private:
   std::unique_ptr<suite::fem::Material> material_;
   suite::fem::ElasticModel model_;
   std::unique_ptr<suite::fem::LinearSolver> solver_;
+  // -material auto: the nonlinear law on the same mesh with its own solver (the linear law's factorisation of
+  // K_eff stays in solver_ while the nonlinear law refactorises its tangent).
+  std::unique_ptr<suite::fem::Material> material_nl_;
+  suite::fem::ElasticModel model_nl_;
+  std::unique_ptr<suite::fem::LinearSolver> solver_nl_;
   std::vector<int> perm_;
   std::vector<double> f_ext_;
   std::vector<int> tip_nodes_;

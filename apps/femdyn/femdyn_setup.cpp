@@ -43,6 +43,7 @@ PetscErrorCode FemdynRun::clampAndSetupModel() {
       "Dirichlet set -dirichlet %s is empty (no mesh node on that plane): the static problem is singular",
       opt_.dirichlet.c_str());
   PetscCall(model_.setup(comm, mesh_, *material_, fixed));
+  if (material_nl_) PetscCall(model_nl_.setup(comm, mesh_, *material_nl_, fixed)); // -material auto
   PetscFunctionReturn(0);
 }
 
@@ -63,6 +64,12 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
     model_.ownElementsOfNodes(solver_->nodePartition(), ctx_.rank());
     partial_ = opt_.newmark.partial_sums = true;
   }
+  if (solver_nl_) { // -material auto: the nonlinear law's solver, same pattern and ordering
+    solver_nl_->setNodeGraph(model_nl_.nodeGraphOf(), model_nl_.eq());
+    PetscCall(solver_nl_->analyze(comm, model_nl_.pattern(), perm_));
+    if (solver_nl_->distributedAssembly())
+      model_nl_.ownElementsOfNodes(solver_nl_->nodePartition(), ctx_.rank());
+  }
   res_.factor = solver_->stats();
   PetscFunctionReturn(0);
 }
@@ -74,7 +81,8 @@ PetscErrorCode FemdynRun::setup() {
   PetscCall(suite::checkOutputWritable(comm, opt_.output, "output"));
   const double t0 = suite::wallSeconds();
   PetscCall(lameFromYoung(comm, opt_.young, opt_.poisson, &lame));
-  PetscCall(createMaterial(comm, opt_.material, lame, &material_));
+  PetscCall(createMaterial(comm, opt_.materialAuto() ? "linear" : opt_.material, lame, &material_));
+  if (opt_.materialAuto()) PetscCall(createMaterial(comm, opt_.auto_law, lame, &material_nl_));
   PetscCall(buildMesh());
   PetscCall(clampAndSetupModel());
   tip_nodes_ = tipNodes(mesh_); // the loads: total -tip_load along -y on the end face x = max, and gravity
@@ -82,13 +90,14 @@ PetscErrorCode FemdynRun::setup() {
   addGravityLoad(model_, opt_.density, opt_.gravity, &f_ext_);
   PetscCall(orderAndAnalyze());
   res_.setup_time = suite::wallSeconds() - t0;
-  PetscCall(suite::logInfo(comm, ctx_.quiet(),
-                           "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
-                           "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",
-                           mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
-                           material_->name(), opt_.ordering.c_str(), 1e3 * res_.ordering_time,
-                           res_.metrics.bandwidth, res_.metrics.profile, res_.metrics.nnz_L,
-                           res_.metrics.flops, solver_->describe().c_str()));
+  PetscCall(suite::logInfo(
+      comm, ctx_.quiet(),
+      "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
+      "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",
+      mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
+      opt_.materialAuto() ? ("auto (linear/" + opt_.auto_law + ")").c_str() : material_->name(),
+      opt_.ordering.c_str(), 1e3 * res_.ordering_time, res_.metrics.bandwidth, res_.metrics.profile,
+      res_.metrics.nnz_L, res_.metrics.flops, solver_->describe().c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -1,8 +1,10 @@
 // Sparse FEM elastodynamics on tetrahedral meshes: P1/P2, linear / St. Venant-Kirchhoff / corotational
-// material, Newmark or generalized-alpha + Newton, orderings natural|cm|rcm|amd|metis|auto, skyline, banded,
-// CHOLMOD or the distributed PETSc path (after Nilsson & Dieckmann, SIGRAD 2003). With skyline/banded/cholmod
-// the computation is serial and replicated on every rank; with -solver petsc each rank assembles its elements
-// of a METIS partition of the nodes into an MPIAIJ matrix solved with KSP (time-stepping state replicated).
+// material (-material auto: linear while its estimated error is below -target_error, else StVK),
+// Newmark or generalized-alpha + Newton, orderings natural|cm|rcm|amd|metis|auto, skyline, banded,
+// CHOLMOD or the distributed PETSc path (after Nilsson & Dieckmann, SIGRAD 2003). With
+// skyline/banded/cholmod the computation is serial and replicated on every rank; with -solver petsc each
+// rank assembles its elements of a METIS partition of the nodes into an MPIAIJ matrix solved with KSP
+// (time-stepping state replicated).
 // Checkpoints (-checkpoint_dir, -checkpoint_every, -restart latest) and stop requests (SIGTERM/SIGUSR1,
 // -max_walltime).
 //
@@ -15,6 +17,7 @@
 //   femdyn -material stvk -time_scheme generalized_alpha -rho_inf 0.5 -steps 50 -tip_load 1 -output ga.h5
 //   mpiexec -n 2 femdyn -static -tip_load 1 -beam_cells 20,2,2 -solver petsc -ksp_type cg -pc_type gamg -output p.h5
 //   femdyn -material stvk -steps 200 -tip_load 1 -checkpoint_dir ckpt -checkpoint_every 50 -output c.h5
+//   femdyn -material auto -target_error 1e-2 -tip_load 1 -beam_cells 20,2,2 -dt 0.2 -steps 100 -output auto.h5
 #include "femdyn_run.hpp"
 
 int main(int argc, char** argv) {

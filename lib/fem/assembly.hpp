@@ -34,6 +34,7 @@ public:
   const TetMesh& mesh() const { return *mesh_; }
   const Material& material() const { return *material_; }
   const Graph& nodeGraphOf() const { return node_graph_; }
+  const ElementGeometry& geometry() const { return geo_; } // stiffness rule's quadrature points
 
   // Full displacement (3N, fixed entries as given) -> free internal force f (nfree) and, if K != nullptr, the
   // tangent values in K->val (pattern()). Returns admissibility in res.bad_elem < 0.
@@ -62,6 +63,7 @@ public:
   // The elements whose first corner node this rank owns (node_part[node] = owning rank) as setOwnedElements.
   void ownElementsOfNodes(const std::vector<int>& node_part, int rank);
   bool partial() const { return !owned_.empty(); }
+  bool ownsElement(int e) const { return owned_.empty() || owned_[e]; }
 
   void scatterFree(const double* free, double* full) const;              // full[fixed] untouched
   std::vector<double> fullVector(const std::vector<double>& free) const; // fixed DOFs zero

@@ -45,3 +45,14 @@ def test_femdyn_probe_plot(tmp_path, run_suite):
         assert len(f["probe/haptic_force"]) == 10 * len(f["probe/sync_time"])
     assert main(["plot", str(out), "--outdir", str(tmp_path)]) == 0
     assert (tmp_path / "femdyn_probe_probe.png").stat().st_size > 1000
+
+
+def test_femdyn_material_auto_plot(tmp_path, run_suite):
+    out = tmp_path / "auto.h5"
+    run_suite("femdyn", "-material", "auto", "-target_error", 1e-2, "-tip_load", 1, "-beam_cells", "10,1,1",
+              "-dt", 0.2, "-steps", 40, "-output", out)
+    with h5py.File(out, "r") as f:
+        g = f["material_auto"]
+        assert len(g["law"]) == 41 and g.attrs["switches"] >= 1 and g["law"][-1] in (0, 1)
+    assert main(["fem-material-auto", str(out), "--outdir", str(tmp_path)]) == 0
+    assert (tmp_path / "femdyn_auto_material_auto.png").stat().st_size > 1000
