@@ -1,0 +1,80 @@
+"""Contact speed/accuracy front (scripts/bench/contact-front): time per step against the error of each run, this
+suite's accuracy modes beside MuJoCo's pyramidal and elliptic cones, one panel per scene. The error is the
+scene's own measure: the largest drift of a body at rest (stacks, pyramids, heap, sticking incline) or the
+sliding speed's error against the exact g (sin theta - mu cos theta) (sliding incline)."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+MARKERS = {"suite": "o", "mujoco": "s"}
+
+
+def read_front(path):
+    """Rows of a contact-front file as a list of dicts (strings decoded)."""
+    with h5py.File(path, "r") as f:
+        cols = {k: f[k][...] for k in f.keys()}
+    n = len(cols["scene"])
+    dec = lambda v: v.decode() if isinstance(v, bytes) else v  # noqa: E731
+    return [{k: dec(v[i]) for k, v in cols.items()} for i in range(n)]
+
+
+def run_error(r):
+    """The scene's error measure of one row (NaN when the run made no step)."""
+    if not r["completed"]:
+        return math.nan
+    if r["scene"] == "incline_slide":
+        return abs(r["speed"] - r["speed_exact"])
+    return r["drift"]
+
+
+def plot_front(path, outdir):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = read_front(path)
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    ncol = min(3, len(scenes))
+    nrow = math.ceil(len(scenes) / ncol)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.6 * nrow), squeeze=False)
+    for ax, scene in zip(axes.flat, scenes):
+        for r in (r for r in rows if r["scene"] == scene):
+            err = max(run_error(r), 1e-16)
+            if not np.isfinite(err):
+                continue
+            label = f"{r['code']} {r['mode'] or 'default'}"
+            if r["completed"] < r["steps"]:
+                label += f" ({r['completed']}/{r['steps']} steps)"
+            ax.loglog(1e3 * r["time_per_step"], err, MARKERS.get(r["code"], "x"), label=label)
+        ax.set_title(scene)
+        ax.set_xlabel("time per step (ms)")
+        ax.set_ylabel("speed error (m/s)" if scene == "incline_slide" else "drift (m)")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(scenes):]:
+        ax.axis("off")
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = str(Path(outdir) / "contact_front.png")
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [png]
+
+
+def register(sub):
+    p = sub.add_parser("contact-front", help="time per step against error, this suite's modes beside MuJoCo "
+                       "(scripts/bench/contact-front output)")
+    p.add_argument("file")
+    p.add_argument("--outdir", default="out")
+    p.set_defaults(func=lambda a: _report(plot_front(a.file, a.outdir)))
+
+
+def _report(pngs):
+    for png in pngs:
+        print(f"wrote {png}")
+    return 0
