@@ -19,6 +19,10 @@ const std::vector<std::string>& Portfolio::chainFor(const std::string& cls) cons
   return it == classes.end() ? none : chains[it - classes.begin()];
 }
 
+bool Portfolio::has(const std::string& cls) const {
+  return std::find(classes.begin(), classes.end(), cls) != classes.end();
+}
+
 std::string validatePortfolio(const Portfolio& t) {
   if (t.classes.size() != t.chains.size()) return "classes and chains differ in number";
   const std::vector<std::string> known = solverNames();
@@ -107,20 +111,32 @@ PetscErrorCode loadPortfolio(MPI_Comm comm, const std::string& path, Portfolio* 
   PetscFunctionReturn(0);
 }
 
+ProblemFeatures classifyFor(const Problem& p, const Portfolio& t) {
+  ProblemFeatures f = classifyCheap(p);
+  if (!f.matrix.empty()) return f;
+  const std::string yes = f.nameWith(f.ifDefinite()), no = f.nameWith(f.ifNotDefinite());
+  if (f.size != "small" && t.has(yes) && t.has(no) && t.chainFor(yes) != t.chainFor(no))
+    classifyByCholesky(p, &f);
+  else
+    f.matrix = t.has(no) && !t.has(yes) ? f.ifNotDefinite() : f.ifDefinite();
+  return f;
+}
+
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   AutoInfo local;
   AutoInfo& in = info ? *info : local;
   const double t0 = MPI_Wtime();
   timespec c0{}, c1{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
-  in.features = classify(p);
   const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();
+  in.features = classifyFor(p, t);
   in.chain = t.chainFor(in.features.name());
   if (in.chain.size() > static_cast<size_t>(kAutoMaxTried)) in.chain.resize(kAutoMaxTried);
   ChainOptions co;
   co.rel_tol = o.rel_tol;
   co.first_max_iterations = o.max_iterations;
   co.make = o.make;
+  co.timed = false; // timed here, once for the whole sequence
   Result r = solveWithChain(p, in.chain, co, &in.attempts);
   r.iterations = 0;
   r.pivots = 0;

@@ -19,13 +19,33 @@ const char* sizeOf(int n) {
   return n <= 32 ? "small" : n <= 256 ? "medium" : "large";
 }
 
-// Strictly row diagonally dominant with M_ii > 0.
-bool diagonallyDominant(const Mat& M) {
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    const double d = M(i, i);
-    if (!(d > 0) || !(M.row(i).cwiseAbs().sum() - d < d)) return false;
+// One pass over M: symmetry, density, positive diagonal, strict row dominance, 2 x 2 principal minors of the
+// symmetric part (necessary for positive definiteness).
+void scanMatrix(const Mat& M, ProblemFeatures* f) {
+  const Eigen::Index n = M.rows();
+  double scale = 0, asym = 0;
+  long long nnz = 0;
+  bool dd = true, minors = true, diag = true;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    diag = diag && M(j, j) > 0;
+    double off = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double a = M(i, j), at = M(j, i);
+      scale = std::max(scale, std::abs(a));
+      nnz += a != 0.0;
+      if (i == j) continue;
+      off += std::abs(at); // row j of M
+      asym = std::max(asym, std::abs(a - at));
+      const double s = 0.5 * (a + at);
+      minors = minors && M(i, i) * M(j, j) > s * s;
+    }
+    dd = dd && M(j, j) > 0 && off < M(j, j);
   }
-  return true;
+  f->symmetric = asym <= 1e-14 * scale;
+  f->density = n ? static_cast<double>(nnz) / (double(n) * double(n)) : 0.0;
+  f->diag_positive = n > 0 && diag;
+  f->diag_dominant = n > 0 && dd;
+  f->minors_ok = f->diag_positive && minors;
 }
 
 bool choleskySucceeds(const Mat& S) {
@@ -34,41 +54,36 @@ bool choleskySucceeds(const Mat& S) {
          llt.matrixLLT().diagonal().minCoeff() > 0;
 }
 
-void classifyMatrix(const Problem& p, ProblemFeatures* f) {
-  const double scale = p.M.cwiseAbs().maxCoeff();
-  f->symmetric = (p.M - p.M.transpose()).cwiseAbs().maxCoeff() <= 1e-14 * scale;
-  f->diag_positive = p.M.size() > 0 && p.M.diagonal().minCoeff() > 0;
-  f->diag_dominant = diagonallyDominant(p.M);
-  if (f->diag_dominant) {
-    f->matrix = "dd";
-    return;
-  }
-  if (!f->diag_positive && f->symmetric) { // M_ii <= 0: not positive definite, no factorisation needed
-    f->matrix = "sym";
-    return;
-  }
-  f->cholesky_ok = f->symmetric ? choleskySucceeds(p.M) : choleskySucceeds(0.5 * (p.M + p.M.transpose()));
-  f->matrix = f->symmetric ? (f->cholesky_ok ? "spd" : "sym") : (f->cholesky_ok ? "pd" : "gen");
-}
-
 } // namespace
 
-ProblemFeatures classify(const Problem& p) {
+ProblemFeatures classifyCheap(const Problem& p) {
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
   f.structure = structureOf(p);
   f.size = sizeOf(f.n);
-  f.density = f.n ? static_cast<double>((p.M.array() != 0.0).count()) / (double(f.n) * f.n) : 0.0;
   for (int i = 0; i < f.n; ++i) {
     f.finite_lower += std::isfinite(p.l[i]);
     f.finite_upper += std::isfinite(p.u[i]);
   }
-  if (f.n == 0) {
-    f.matrix = "gen";
-    return f;
-  }
-  classifyMatrix(p, &f);
+  scanMatrix(p.M, &f);
+  if (f.diag_dominant)
+    f.matrix = "dd";
+  else if (!f.minors_ok || f.n == 0)
+    f.matrix = f.ifNotDefinite();
+  return f;
+}
+
+void classifyByCholesky(const Problem& p, ProblemFeatures* f) {
+  if (!f->matrix.empty()) return;
+  f->cholesky_tried = true;
+  f->cholesky_ok = f->symmetric ? choleskySucceeds(p.M) : choleskySucceeds(0.5 * (p.M + p.M.transpose()));
+  f->matrix = f->cholesky_ok ? f->ifDefinite() : f->ifNotDefinite();
+}
+
+ProblemFeatures classify(const Problem& p) {
+  ProblemFeatures f = classifyCheap(p);
+  classifyByCholesky(p, &f);
   return f;
 }
 

@@ -35,6 +35,9 @@ struct SolverOptions {
   double omega = 1.0;              // PGS relaxation
   int block_size = 3;              // block PGS
   bool refine = true;              // final active-set refinement of a claimed solution (see solve())
+  // Fill Result::time / cpu_time. The thread CPU clock costs ~1 us a call (a system call), as much as a whole
+  // solve of a small problem: callers that time a sequence of solves themselves (solveAuto) turn it off.
+  bool timed = true;
 };
 
 struct Result {
@@ -102,6 +105,7 @@ struct ChainOptions {
   const Vec* scale = nullptr;
   double scaled_tol_factor = 1e-3;
   int refinements = 2; // active-set refinements of a finite answer on the original problem (kept if better)
+  bool timed = true;   // SolverOptions::timed of every attempt
   std::function<std::unique_ptr<Solver>(const std::string&)> make; // solver factory (empty: makeSolver)
 };
 
