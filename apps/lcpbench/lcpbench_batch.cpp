@@ -87,9 +87,7 @@ Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec) {
   ao.portfolio = &b.portfolio;
   AutoInfo info;
   const Result r = solveAuto(*p, ao, &info);
-  // The class recorded is the full classification (with the factorisation auto may have skipped), outside the
-  // timed solve: the benchmark's table is built per class.
-  rec[0] = problemClassIndex(classify(*p).name());
+  rec[0] = problemClassIndex(info.features.name());
   rec[1] = r.ok() ? registryIndex(info.solver) : -1.0;
   rec[2] = static_cast<double>(info.attempts.size());
   for (size_t j = 0; j < info.attempts.size() && j < static_cast<size_t>(kAutoMaxTried); ++j)

@@ -111,17 +111,6 @@ PetscErrorCode loadPortfolio(MPI_Comm comm, const std::string& path, Portfolio* 
   PetscFunctionReturn(0);
 }
 
-ProblemFeatures classifyFor(const Problem& p, const Portfolio& t) {
-  ProblemFeatures f = classifyCheap(p);
-  if (!f.matrix.empty()) return f;
-  const std::string yes = f.nameWith(f.ifDefinite()), no = f.nameWith(f.ifNotDefinite());
-  if (f.size != "small" && t.has(yes) && t.has(no) && t.chainFor(yes) != t.chainFor(no))
-    classifyByCholesky(p, &f);
-  else
-    f.matrix = t.has(no) && !t.has(yes) ? f.ifNotDefinite() : f.ifDefinite();
-  return f;
-}
-
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   AutoInfo local;
   AutoInfo& in = info ? *info : local;
@@ -129,7 +118,7 @@ Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   timespec c0{}, c1{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
   const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();
-  in.features = classifyFor(p, t);
+  in.features = classify(p);
   in.chain = t.chainFor(in.features.name());
   if (in.chain.size() > static_cast<size_t>(kAutoMaxTried)) in.chain.resize(kAutoMaxTried);
   ChainOptions co;

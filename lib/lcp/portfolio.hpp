@@ -59,14 +59,7 @@ struct AutoInfo {
   std::string solver;             // the solver whose answer was accepted, "" if none
 };
 
-// The class of p as the portfolio needs it: the O(n^2) features, and the Cholesky factorisation only when its
-// outcome changes the chain (both outcomes have their own, different chains in t) and n > 32 (below, the
-// factorisation costs a sizeable fraction of a whole solve: measured 0.3 of 1 us at n = 10). Otherwise an
-// undecided matrix type takes the outcome that has its own chain, else the definite one (the 2 x 2 minors
-// passed); a wrong guess costs at most a failed attempt, every answer being verified.
-ProblemFeatures classifyFor(const Problem& p, const Portfolio& t);
-
-// Classifies p (classifyFor), tries its class's chain (solveWithChain) and returns the first verified answer (Solved), or
+// Classifies p, tries its class's chain (solveWithChain) and returns the first verified answer (Solved), or
 // the last attempt's result (never Solved). Result::time / cpu_time cover classification and every attempt.
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info = nullptr);
 

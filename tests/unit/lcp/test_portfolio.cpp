@@ -41,7 +41,8 @@ TEST(ProblemClass, MatrixTypes) {
   EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-gen-small");    // symmetric part indefinite
   const ProblemFeatures f = classify(makeLcp(mat2(1, 1.5, -1.5, 1), q));
   EXPECT_FALSE(f.symmetric);
-  EXPECT_TRUE(f.cholesky_ok);
+  EXPECT_TRUE(f.minors_ok);
+  EXPECT_FALSE(f.cholesky_tried); // small: the 2 x 2 minors decide
   EXPECT_TRUE(f.diag_positive);
   EXPECT_FALSE(f.diag_dominant);
   EXPECT_DOUBLE_EQ(f.density, 1.0);
@@ -59,7 +60,9 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   EXPECT_EQ(classOf(generate("random_spd", gp, 1)), "lcp-spd-medium"); // 33: medium band
   gp.n = 257;
   gp.cond = 1e2;
-  EXPECT_EQ(classify(generate("random_spd", gp, 0)).size, "large");
+  const ProblemFeatures big = classify(generate("random_spd", gp, 0));
+  EXPECT_EQ(big.name(), "lcp-spd-large");
+  EXPECT_TRUE(big.cholesky_tried && big.cholesky_ok);
   // Murty's M = I + 2 strict lower triangle: symmetric part I + L + L^T with ones off the diagonal, singular
   gp.n = 8;
   EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-gen-small");
@@ -74,6 +77,25 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   EXPECT_EQ(classOf(box), "box-dd-small");
   EXPECT_DOUBLE_EQ(classify(box).density, 0.25);
   EXPECT_EQ(classify(box).finite_upper, 4);
+}
+
+// M = I + a (ones - I), a = -0.01: diagonal 1, every 2 x 2 minor 1 - a^2 > 0, not dominant (row sum of
+// |off-diagonal| (n - 1) |a| > 1), eigenvalue 1 + (n - 1) a < 0 for n > 101: indefinite.
+TEST(ProblemClass, CholeskyDecidesLargeOnly) {
+  auto m = [](int n) {
+    Mat M = Mat::Constant(n, n, -0.01);
+    M.diagonal().setOnes();
+    return makeLcp(M, Vec::Constant(n, -1.0));
+  };
+  const ProblemFeatures large = classify(m(300));
+  EXPECT_EQ(large.name(), "lcp-sym-large");
+  EXPECT_TRUE(large.minors_ok);
+  EXPECT_TRUE(large.cholesky_tried);
+  EXPECT_FALSE(large.cholesky_ok);
+  // Medium: the O(n^2) tests only, which cannot see this indefiniteness (documented limit of the class).
+  const ProblemFeatures medium = classify(m(200));
+  EXPECT_EQ(medium.name(), "lcp-spd-medium");
+  EXPECT_FALSE(medium.cholesky_tried);
 }
 
 TEST(Portfolio, ValidationNamesTheFault) {
