@@ -73,9 +73,9 @@ bool choleskySucceeds(const Mat& S) {
 }
 
 // Positive definite (symmetric part) as far as the tests of problem_class.hpp go.
-bool definite(const Problem& p, ProblemFeatures* f) {
+bool definite(const Problem& p, bool cholesky, ProblemFeatures* f) {
   f->minors_ok = f->diag_positive && minorsPositive(p.M, f->symmetric);
-  if (!f->minors_ok || f->size != "large") return f->minors_ok;
+  if (!f->minors_ok || !cholesky) return f->minors_ok;
   f->cholesky_tried = true;
   f->cholesky_ok = f->symmetric ? choleskySucceeds(p.M) : choleskySucceeds(0.5 * (p.M + p.M.transpose()));
   return f->cholesky_ok;
@@ -83,7 +83,7 @@ bool definite(const Problem& p, ProblemFeatures* f) {
 
 } // namespace
 
-ProblemFeatures classify(const Problem& p) {
+ProblemFeatures classify(const Problem& p, bool cholesky) {
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
@@ -99,7 +99,7 @@ ProblemFeatures classify(const Problem& p) {
     f.matrix = "dd";
     return f;
   }
-  const bool def = definite(p, &f);
+  const bool def = definite(p, cholesky, &f);
   f.matrix = f.symmetric ? (def ? "spd" : "sym") : (def ? "pd" : "gen");
   return f;
 }

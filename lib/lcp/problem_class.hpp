@@ -1,22 +1,20 @@
 // Cheap classification of an LCP / box LCP / MLCP for the solver portfolio (portfolio.hpp): structure
 // (standard LCP, box, MLCP), matrix type and size band. The classification must cost little next to the
-// fastest solver of the class (measured: bpp on a 300 x 300 box LCP in 80 us, a Cholesky factorisation of
-// the same matrix in ~1 ms), so it is O(n^2) except for large problems:
+// fastest solver of the class, so it is O(n^2) by default: measured on a 300 x 300 box LCP, bpp solves it in
+// 80 us and a Cholesky factorisation of M takes ~800 us (auto with the factorisation: 10.7 times the oracle).
 //
 // Matrix type, first that applies:
 //   dd      strictly row diagonally dominant with a positive diagonal (a P-matrix; PGS converges: Cottle,
 //           Pang & Stone 2009, 5.3)
-//   sym     symmetric (exactly), and a diagonal entry or a 2 x 2 principal minor <= 0 (not positive definite),
-//           or (large only) the Cholesky factorisation of M fails
-//   spd     symmetric, every diagonal entry and 2 x 2 principal minor > 0 (necessary for positive
-//           definiteness), and (large only) the Cholesky factorisation of M succeeds
-//   gen     nonsymmetric, a diagonal entry or a 2 x 2 principal minor of (M + M^T) / 2 <= 0 or (large only)
-//           its Cholesky factorisation fails (Lemke may ray-terminate, the Newton methods may stall)
+//   sym     symmetric (exactly) and not positive definite: a diagonal entry or a 2 x 2 principal minor <= 0,
+//           or (with the Cholesky test) the factorisation of M fails
+//   spd     symmetric otherwise: every diagonal entry and 2 x 2 principal minor > 0 (necessary for
+//           definiteness; with the Cholesky test: the factorisation succeeds, positive definite)
+//   gen     nonsymmetric, the same tests on (M + M^T) / 2 fail (Lemke may ray-terminate, the Newton methods
+//           may stall)
 //   pd      nonsymmetric otherwise (positive definite symmetric part, hence a P-matrix, CPS 2009, 3.1.6, when
 //           the factorisation confirmed it)
-// Size band: small n <= 32, medium n <= 256, large n > 256. The Cholesky test is attempted for large
-// problems only, where a wrong chain costs far more than the factorisation (a failed Newton run on n = 1000
-// took 16 s, the factorisation ~30 ms).
+// Size band: small n <= 32, medium n <= 256, large n > 256.
 // The class name is "<structure>-<matrix>-<size>", e.g. "box-spd-large".
 #pragma once
 
@@ -44,8 +42,9 @@ struct ProblemFeatures {
   std::string name() const { return structure + "-" + matrix + "-" + size; }
 };
 
-// The features and class of p (which must be valid, see validate()).
-ProblemFeatures classify(const Problem& p);
+// The features and class of p (which must be valid, see validate()). cholesky: decide definiteness by an
+// attempted Cholesky factorisation when the O(n^2) tests pass (off in the portfolio, see above).
+ProblemFeatures classify(const Problem& p, bool cholesky = false);
 
 // Every class name classify() can return, in a fixed order (the index used in lcpbench's output).
 const std::vector<std::string>& problemClassNames();

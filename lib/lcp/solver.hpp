@@ -112,6 +112,8 @@ struct ChainOptions {
 // Tries the named solvers in turn with solve() and returns the first answer whose natural-map residual on p
 // meets the acceptance rule, with status Solved even when the method reported another one (seen: Lemke
 // 'ray_termination' with residual 1e-14); when none does, the last attempt's result, never Solved.
+// A name "auto" stands for the built-in portfolio's chain of p's class (portfolio.hpp; the entry point of the
+// portfolio for the chain's users, e.g. the contact app's solver chains).
 // attempts (optional): every attempt in order.
 Result solveWithChain(const Problem& p, const std::vector<std::string>& names, const ChainOptions& o,
                       std::vector<Attempt>* attempts = nullptr);

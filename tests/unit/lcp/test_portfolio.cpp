@@ -60,9 +60,10 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   EXPECT_EQ(classOf(generate("random_spd", gp, 1)), "lcp-spd-medium"); // 33: medium band
   gp.n = 257;
   gp.cond = 1e2;
-  const ProblemFeatures big = classify(generate("random_spd", gp, 0));
+  const ProblemFeatures big = classify(generate("random_spd", gp, 0), true);
   EXPECT_EQ(big.name(), "lcp-spd-large");
   EXPECT_TRUE(big.cholesky_tried && big.cholesky_ok);
+  EXPECT_EQ(classify(generate("pmatrix", gp, 0), true).name(), "lcp-pd-large");
   // Murty's M = I + 2 strict lower triangle: symmetric part I + L + L^T with ones off the diagonal, singular
   gp.n = 8;
   EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-gen-small");
@@ -81,21 +82,21 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
 
 // M = I + a (ones - I), a = -0.01: diagonal 1, every 2 x 2 minor 1 - a^2 > 0, not dominant (row sum of
 // |off-diagonal| (n - 1) |a| > 1), eigenvalue 1 + (n - 1) a < 0 for n > 101: indefinite.
-TEST(ProblemClass, CholeskyDecidesLargeOnly) {
+TEST(ProblemClass, CholeskyTestSeesWhatTheMinorsMiss) {
   auto m = [](int n) {
     Mat M = Mat::Constant(n, n, -0.01);
     M.diagonal().setOnes();
     return makeLcp(M, Vec::Constant(n, -1.0));
   };
-  const ProblemFeatures large = classify(m(300));
-  EXPECT_EQ(large.name(), "lcp-sym-large");
-  EXPECT_TRUE(large.minors_ok);
-  EXPECT_TRUE(large.cholesky_tried);
-  EXPECT_FALSE(large.cholesky_ok);
-  // Medium: the O(n^2) tests only, which cannot see this indefiniteness (documented limit of the class).
-  const ProblemFeatures medium = classify(m(200));
-  EXPECT_EQ(medium.name(), "lcp-spd-medium");
-  EXPECT_FALSE(medium.cholesky_tried);
+  const ProblemFeatures chol = classify(m(300), true);
+  EXPECT_EQ(chol.name(), "lcp-sym-large");
+  EXPECT_TRUE(chol.minors_ok);
+  EXPECT_TRUE(chol.cholesky_tried);
+  EXPECT_FALSE(chol.cholesky_ok);
+  // The O(n^2) tests alone (the portfolio's) cannot see this indefiniteness (documented limit of the class).
+  const ProblemFeatures cheap = classify(m(200));
+  EXPECT_EQ(cheap.name(), "lcp-spd-medium");
+  EXPECT_FALSE(cheap.cholesky_tried);
 }
 
 TEST(Portfolio, ValidationNamesTheFault) {
@@ -195,7 +196,7 @@ TEST(Portfolio, BuiltinSolvesTheSiconosFilesSomeSolverSolves) {
   for (const std::string& f : files) {
     const Problem p = readSiconos(kSiconos + "/" + f);
     bool any = false;
-    for (const std::string& s : {"lemke", "keller", "cottle_dantzig", "murty", "bpp", "fb_newton",
+    for (const char* s : {"lemke", "keller", "cottle_dantzig", "murty", "bpp", "fb_newton",
                                  "smoothed_newton", "pgs"})
       any = any || solve(*makeSolver(s), p).ok();
     if (!any) continue;
@@ -205,4 +206,23 @@ TEST(Portfolio, BuiltinSolvesTheSiconosFilesSomeSolverSolves) {
     EXPECT_TRUE(r.ok()) << f << " (" << info.features.name() << "): " << describeAttempts(info.attempts);
   }
   EXPECT_EQ(solvable, static_cast<int>(files.size())); // every file is solved by some solver today
+}
+
+// solveWithChain's "auto" (the entry point for the chain's users): the built-in chain of the class, then the
+// other names not already in it.
+TEST(Portfolio, AutoInAChainExpandsToTheBuiltinChain) {
+  GeneratorParams gp;
+  gp.n = 12;
+  const Problem p = generate("random_box", gp, 1);
+  const std::vector<std::string>& chain = builtinPortfolio().chainFor(classify(p).name());
+  ASSERT_FALSE(chain.empty());
+  std::vector<Attempt> att;
+  const Result r = solveWithChain(p, {"auto"}, ChainOptions{}, &att);
+  ASSERT_TRUE(r.ok()) << describeAttempts(att);
+  EXPECT_EQ(att[0].solver, chain[0]);
+  // A failing solver first, then auto: its chain follows.
+  const Result f = solveWithChain(makeLcp(mat2(0, 1, -1, 0), Vec::Constant(2, 1.0)), {"pgs", "auto"},
+                                  ChainOptions{}, &att);
+  EXPECT_TRUE(f.ok()); // z = 0 solves it (q >= 0)
+  EXPECT_GE(att.size(), 1u);
 }
