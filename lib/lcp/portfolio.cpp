@@ -80,8 +80,8 @@ PetscErrorCode readChains(MPI_Comm comm, const H5Input& in, const std::vector<st
     for (size_t k = 0; k < d[1]; ++k) {
       const long long s = idx[i * d[1] + k];
       PetscCheck(s >= -1 && s < (long long)solvers.size(), comm, PETSC_ERR_FILE_UNEXPECTED,
-                 "-portfolio %s: /chain[%zu][%zu] = %lld is not a solver index (0 to %zu, -1 = none)", f, i, k,
-                 s, solvers.size() - 1);
+                 "-portfolio %s: /chain[%zu][%zu] = %lld is not a solver index (0 to %zu, -1 = none)", f, i,
+                 k, s, solvers.size() - 1);
       if (s >= 0) t->chains[i].push_back(solvers[s]);
     }
   PetscFunctionReturn(0);

@@ -28,9 +28,9 @@ namespace suite::lcp {
 constexpr int kAutoMaxTried = 4; // most solvers one auto solve tries
 
 struct Portfolio {
-  std::vector<std::string> classes;              // class names, "default" among them
-  std::vector<std::vector<std::string>> chains;  // chains[i]: the solvers of classes[i], in order
-  std::string source = "built-in";               // "built-in" or the file read
+  std::vector<std::string> classes;             // class names, "default" among them
+  std::vector<std::vector<std::string>> chains; // chains[i]: the solvers of classes[i], in order
+  std::string source = "built-in";              // "built-in" or the file read
   // The chain of a class: its own, else the "default" chain.
   const std::vector<std::string>& chainFor(const std::string& cls) const;
   bool has(const std::string& cls) const; // the class has its own chain
@@ -46,8 +46,8 @@ std::string validatePortfolio(const Portfolio& t);
 PetscErrorCode loadPortfolio(MPI_Comm comm, const std::string& path, Portfolio* t);
 
 struct AutoOptions {
-  double rel_tol = 1e-10;       // acceptance on the original problem
-  int max_iterations = 0;       // iteration cap of the chain's first solver (0: its default)
+  double rel_tol = 1e-10;               // acceptance on the original problem
+  int max_iterations = 0;               // iteration cap of the chain's first solver (0: its default)
   const Portfolio* portfolio = nullptr; // nullptr: builtinPortfolio()
   std::function<std::unique_ptr<Solver>(const std::string&)> make; // solver factory (empty: makeSolver)
 };

@@ -28,17 +28,17 @@ namespace suite::lcp {
 struct ProblemFeatures {
   int n = 0;
   Kind kind = Kind::LCP;
-  double density = 0;        // fraction of nonzero entries of M
-  bool symmetric = false;    // M == M^T exactly (isSymmetric(p) of solver.hpp, as the solvers test it)
-  bool diag_positive = false; // M_ii > 0 for all i
-  bool diag_dominant = false; // strictly row diagonally dominant with a positive diagonal
-  bool minors_ok = false;     // every diagonal entry and 2 x 2 principal minor of (M + M^T) / 2 is > 0
+  double density = 0;          // fraction of nonzero entries of M
+  bool symmetric = false;      // M == M^T exactly (isSymmetric(p) of solver.hpp, as the solvers test it)
+  bool diag_positive = false;  // M_ii > 0 for all i
+  bool diag_dominant = false;  // strictly row diagonally dominant with a positive diagonal
+  bool minors_ok = false;      // every diagonal entry and 2 x 2 principal minor of (M + M^T) / 2 is > 0
   bool cholesky_tried = false; // the factorisation below was attempted
-  bool cholesky_ok = false;   // Cholesky of M (symmetric) or of its symmetric part succeeded (not tried if dd)
+  bool cholesky_ok = false; // Cholesky of M (symmetric) or of its symmetric part succeeded (not tried if dd)
   int finite_lower = 0, finite_upper = 0; // number of finite bounds
-  std::string structure;     // "lcp", "box", "mlcp"
-  std::string matrix;        // "dd", "spd", "sym", "pd", "gen"
-  std::string size;          // "small", "medium", "large"
+  std::string structure;                  // "lcp", "box", "mlcp"
+  std::string matrix;                     // "dd", "spd", "sym", "pd", "gen"
+  std::string size;                       // "small", "medium", "large"
   std::string name() const { return structure + "-" + matrix + "-" + size; }
 };
 

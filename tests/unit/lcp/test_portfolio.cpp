@@ -33,12 +33,12 @@ const std::string kSiconos = std::string(SUITE_DATA_DIR) + "/lcp";
 
 TEST(ProblemClass, MatrixTypes) {
   const Vec q = Vec::Constant(2, -1.0);
-  EXPECT_EQ(classOf(makeLcp(mat2(2, 1, 1, 2), q)), "lcp-dd-small");     // strictly dominant
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 1, 1, 2), q)), "lcp-spd-small");    // SPD, row 0 not strictly dominant
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 2, 2, 1), q)), "lcp-sym-small");    // eigenvalues 3, -1
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, -1), q)), "lcp-sym-small");   // negative diagonal
+  EXPECT_EQ(classOf(makeLcp(mat2(2, 1, 1, 2), q)), "lcp-dd-small");      // strictly dominant
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 1, 1, 2), q)), "lcp-spd-small");     // SPD, row 0 not strictly dominant
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 2, 2, 1), q)), "lcp-sym-small");     // eigenvalues 3, -1
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, -1), q)), "lcp-sym-small");    // negative diagonal
   EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, -1.5, 1), q)), "lcp-pd-small"); // symmetric part I
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-gen-small");    // symmetric part indefinite
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-gen-small");     // symmetric part indefinite
   const ProblemFeatures f = classify(makeLcp(mat2(1, 1.5, -1.5, 1), q));
   EXPECT_FALSE(f.symmetric);
   EXPECT_TRUE(f.minors_ok);
@@ -196,8 +196,8 @@ TEST(Portfolio, BuiltinSolvesTheSiconosFilesSomeSolverSolves) {
   for (const std::string& f : files) {
     const Problem p = readSiconos(kSiconos + "/" + f);
     bool any = false;
-    for (const char* s : {"lemke", "keller", "cottle_dantzig", "murty", "bpp", "fb_newton",
-                                 "smoothed_newton", "pgs"})
+    for (const char* s :
+         {"lemke", "keller", "cottle_dantzig", "murty", "bpp", "fb_newton", "smoothed_newton", "pgs"})
       any = any || solve(*makeSolver(s), p).ok();
     if (!any) continue;
     ++solvable;
