@@ -67,8 +67,10 @@ PetscErrorCode readSolverOptions(PetscOptionItems* po, Options* o) {
                                  "Solver table of -solvers auto (HDF5 from scripts/bench/lcp-portfolio; "
                                  "default: the built-in one)",
                                  &o->portfolio));
-  PetscCall(optionsValue(po, "-max_it", "Iteration / pivot cap of every solver (0: each solver's default)",
-                         &o->max_it));
+  PetscCall(optionsValue(
+      po, "-max_it",
+      "Iteration / pivot cap of every solver (0: each solver's default; auto: its chain's first)",
+      &o->max_it));
   PetscCall(optionsValue(po, "-omega", "PGS relaxation factor", &o->omega));
   PetscCall(optionsValue(po, "-block_size", "Block size of pgs_block", &o->block_size));
   PetscCall(optionsValue(po, "-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", &o->rel_tol));

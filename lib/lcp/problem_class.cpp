@@ -21,40 +21,59 @@ const char* sizeOf(int n) {
   return n <= 32 ? "small" : n <= 256 ? "medium" : "large";
 }
 
-// Column by column (contiguous, vectorised): density, positive diagonal, strict row diagonal dominance.
+// Sum of |c_i| over c[0, n): four independent accumulators (a single += chain waits on each addition's
+// latency: measured 120 us for the columns of a 300 x 300 matrix, against bpp's 80 us solve).
+double absSum(const double* c, Eigen::Index n) {
+  double s[4] = {0, 0, 0, 0};
+  Eigen::Index i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (int k = 0; k < 4; ++k) s[k] += std::abs(c[i + k]);
+  for (; i < n; ++i) s[0] += std::abs(c[i]);
+  return (s[0] + s[1]) + (s[2] + s[3]);
+}
+
+// min over i in [from, n) of d_j d_i - c_i^2 (the 2 x 2 principal minors of rows i, j), +inf if empty.
+double minMinor(const double* c, const double* d, double dj, Eigen::Index from, Eigen::Index n) {
+  double m[4] = {kInf, kInf, kInf, kInf};
+  Eigen::Index i = from;
+  for (; i + 4 <= n; i += 4)
+    for (int k = 0; k < 4; ++k) m[k] = std::min(m[k], dj * d[i + k] - c[i + k] * c[i + k]);
+  for (; i < n; ++i) m[0] = std::min(m[0], dj * d[i] - c[i] * c[i]);
+  return std::min(std::min(m[0], m[1]), std::min(m[2], m[3]));
+}
+
+// Column by column (contiguous, vectorised): positive diagonal, strict row diagonal dominance.
 void scanColumns(const Mat& M, ProblemFeatures* f) {
   const Eigen::Index n = M.rows();
-  Vec off = Vec::Zero(n); // row sums of |M_ij|, j != i
-  long long nnz = 0;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const double* c = M.col(j).data();
-    double* o = off.data();
-    long long z = 0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      o[i] += std::abs(c[i]);
-      z += c[i] == 0.0;
-    }
-    nnz += n - z;
-  }
+  Vec off = Vec::Zero(n);                                          // row sums of |M_ij|, j != i
+  for (Eigen::Index j = 0; j < n; ++j) off += M.col(j).cwiseAbs(); // elementwise: vectorised
   const Vec d = M.diagonal();
   off -= d.cwiseAbs();
-  f->density = n ? static_cast<double>(nnz) / (double(n) * double(n)) : 0.0;
   f->diag_positive = n > 0 && d.minCoeff() > 0;
   f->diag_dominant = f->diag_positive && (off.array() < d.array()).all();
 }
 
-// Every 2 x 2 principal minor of (M + M^T) / 2 > 0 (the diagonal is positive): necessary for definiteness.
-// Symmetric M: column by column, vectorised; otherwise the transposed entries are read in 16 x 16 tiles.
-bool minorsPositive(const Mat& M, bool symmetric) {
+// Symmetric M in one pass over the columns (contiguous; a column's sums are its row's): positive
+// diagonal, strict diagonal dominance, and every 2 x 2 principal minor > 0 (necessary for definiteness).
+void scanSymmetric(const Mat& M, ProblemFeatures* f) {
   const Eigen::Index n = M.rows();
   const Vec d = M.diagonal();
-  if (symmetric) {
-    for (Eigen::Index j = 0; j + 1 < n; ++j) {
-      const Eigen::Index k = n - j - 1;
-      if (!((d(j) * d.tail(k).array() - M.col(j).tail(k).array().square()) > 0).all()) return false;
-    }
-    return true;
+  const bool pos = n > 0 && d.minCoeff() > 0;
+  bool dd = pos, minors = pos;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    dd = dd && absSum(M.col(j).data(), n) - std::abs(d(j)) < d(j);
+    minors = minors && minMinor(M.col(j).data(), d.data(), d(j), j + 1, n) > 0.0;
   }
+  f->diag_positive = pos;
+  f->diag_dominant = dd;
+  f->minors_ok = minors;
+}
+
+// Every 2 x 2 principal minor of (M + M^T) / 2 > 0 (the diagonal is positive), M nonsymmetric: the transposed
+// entries are read in 16 x 16 tiles.
+bool minorsPositive(const Mat& M) {
+  const Eigen::Index n = M.rows();
+  const Vec d = M.diagonal();
   constexpr Eigen::Index T = 16;
   for (Eigen::Index jb = 0; jb < n; jb += T)
     for (Eigen::Index ib = jb; ib < n; ib += T)
@@ -72,9 +91,8 @@ bool choleskySucceeds(const Mat& S) {
          llt.matrixLLT().diagonal().minCoeff() > 0;
 }
 
-// Positive definite (symmetric part) as far as the tests of problem_class.hpp go.
+// Positive definite (symmetric part) as far as the tests of problem_class.hpp go (f->minors_ok set).
 bool definite(const Problem& p, bool cholesky, ProblemFeatures* f) {
-  f->minors_ok = f->diag_positive && minorsPositive(p.M, f->symmetric);
   if (!f->minors_ok || !cholesky) return f->minors_ok;
   f->cholesky_tried = true;
   f->cholesky_ok = f->symmetric ? choleskySucceeds(p.M) : choleskySucceeds(0.5 * (p.M + p.M.transpose()));
@@ -83,7 +101,7 @@ bool definite(const Problem& p, bool cholesky, ProblemFeatures* f) {
 
 } // namespace
 
-ProblemFeatures classify(const Problem& p, bool cholesky) {
+ProblemFeatures classify(const Problem& p, bool thorough) {
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
@@ -93,13 +111,20 @@ ProblemFeatures classify(const Problem& p, bool cholesky) {
     f.finite_lower += std::isfinite(p.l[i]);
     f.finite_upper += std::isfinite(p.u[i]);
   }
-  scanColumns(p.M, &f);
+  if (thorough)
+    f.density = static_cast<double>((p.M.array() != 0.0).count()) / std::max(1.0, double(f.n) * f.n);
   f.symmetric = isSymmetric(p);
+  if (f.symmetric) {
+    scanSymmetric(p.M, &f);
+  } else {
+    scanColumns(p.M, &f);
+    f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
+  }
   if (f.diag_dominant) {
     f.matrix = "dd";
     return f;
   }
-  const bool def = definite(p, cholesky, &f);
+  const bool def = definite(p, thorough, &f);
   f.matrix = f.symmetric ? (def ? "spd" : "sym") : (def ? "pd" : "gen");
   return f;
 }

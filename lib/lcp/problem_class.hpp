@@ -42,9 +42,10 @@ struct ProblemFeatures {
   std::string name() const { return structure + "-" + matrix + "-" + size; }
 };
 
-// The features and class of p (which must be valid, see validate()). cholesky: decide definiteness by an
-// attempted Cholesky factorisation when the O(n^2) tests pass (off in the portfolio, see above).
-ProblemFeatures classify(const Problem& p, bool cholesky = false);
+// The features and class of p (which must be valid, see validate()). thorough: decide definiteness by an
+// attempted Cholesky factorisation when the O(n^2) tests pass, and count the nonzeros (density); off in the
+// portfolio (see above; the chains do not depend on the density of the dense problems measured).
+ProblemFeatures classify(const Problem& p, bool thorough = false);
 
 // Every class name classify() can return, in a fixed order (the index used in lcpbench's output).
 const std::vector<std::string>& problemClassNames();

@@ -125,7 +125,7 @@ def bad_tables(exe, tmp):
     write_table(t, ["default"], [[1]], solvers=["lemke", "bogus"])
     cases.append((t, r"unknown solver 'bogus' in the chain of class 'default'"))
     for np_ in (1, 2):
-        for path, rx in cases:
+        for path, rx in (cases if np_ == 2 else cases[::2]):  # every case at 2 ranks, every other one at 1
             p = run(exe, "-n", "5", "-count", "2", "-solvers", "auto", "-portfolio", path,
                     "-output", os.path.join(tmp, "bad.h5"), np_=np_)
             hits = [l for l in p.stdout.splitlines() if re.search(rx, l)]

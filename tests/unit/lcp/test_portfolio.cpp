@@ -39,10 +39,12 @@ TEST(ProblemClass, MatrixTypes) {
   EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, -1), q)), "lcp-sym-small");    // negative diagonal
   EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, -1.5, 1), q)), "lcp-pd-small"); // symmetric part I
   EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-gen-small");     // symmetric part indefinite
-  const ProblemFeatures f = classify(makeLcp(mat2(1, 1.5, -1.5, 1), q));
+  const ProblemFeatures f = classify(makeLcp(mat2(1, 1.5, -1.5, 1), q), true);
   EXPECT_FALSE(f.symmetric);
   EXPECT_TRUE(f.minors_ok);
-  EXPECT_FALSE(f.cholesky_tried); // small: the 2 x 2 minors decide
+  EXPECT_TRUE(f.cholesky_tried && f.cholesky_ok);
+  EXPECT_FALSE(
+      classify(makeLcp(mat2(1, 1.5, -1.5, 1), q)).cholesky_tried); // default: the 2 x 2 minors decide
   EXPECT_TRUE(f.diag_positive);
   EXPECT_FALSE(f.diag_dominant);
   EXPECT_DOUBLE_EQ(f.density, 1.0);
@@ -76,7 +78,7 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   Mat D = Mat::Identity(4, 4);
   const Problem box = makeBox(D, Vec::Constant(4, 1.0), Vec::Constant(4, -1.0), Vec::Constant(4, 1.0));
   EXPECT_EQ(classOf(box), "box-dd-small");
-  EXPECT_DOUBLE_EQ(classify(box).density, 0.25);
+  EXPECT_DOUBLE_EQ(classify(box, true).density, 0.25);
   EXPECT_EQ(classify(box).finite_upper, 4);
 }
 
