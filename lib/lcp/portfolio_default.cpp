@@ -35,7 +35,7 @@ const Portfolio& builtinPortfolio() {
                                   {"bpp", "lemke", "keller", "cottle_dantzig"},
                                   {"bpp", "lemke", "keller", "cottle_dantzig"},
                                   {"cottle_dantzig", "lemke", "bpp", "keller"},
-                                  {"pgs", "cottle_dantzig", "murty", "lemke"},
+                                  {"pgs", "murty", "cottle_dantzig", "lemke"},
                                   {"murty", "smoothed_newton", "bpp", "cottle_dantzig"},
                                   {"murty", "pgs", "keller", "fb_newton"},
                                   {"smoothed_newton", "lemke", "cottle_dantzig", "keller"},
