@@ -1,6 +1,7 @@
 """lcpbench figures (Lacoursiere 2003, SIGRAD): iteration-count histograms (pivoting methods in units of n,
 Newton / splitting methods absolute), time and residual distributions, and Dolan-More performance profiles
-(Dolan & More 2002, Math. Prog. 91) across solvers, from the /results/<solver>/ datasets of an lcpbench file.
+(Dolan & More 2002, Math. Prog. 91) across solvers, from the /results/<solver>/ datasets of an lcpbench file; with `-solvers auto` also the portfolio's choices
+(the succeeding solver per problem class, and how many solvers were tried).
 
     python -m postprocess lcp-histograms batch.h5 [--outdir out]
 """
@@ -33,6 +34,60 @@ def read_batch(path):
     if sizes is None:
         sizes = np.ones(len(next(iter(res.values()))["status"]))
     return solvers, np.asarray(sizes, dtype=float), res
+
+
+def read_portfolio(path):
+    """None without /results/auto, else dict: classes (per problem), solver (succeeding, "" = none), tried
+    (list of names per problem)."""
+    with h5py.File(path, "r") as f:
+        if "results/auto/class" not in f:
+            return None
+        g = f["results/auto"]
+
+        def names(key):
+            v = g.attrs[key]
+            return [x.strip() for x in (v.decode() if isinstance(v, bytes) else str(v)).split(",")]
+
+        cls_names, solver_names = names("class_names"), names("solver_names")
+        cls = [cls_names[c] if c >= 0 else "invalid" for c in g["class"][...]]
+        chosen = [solver_names[s] if s >= 0 else "" for s in g["solver"][...]]
+        count = g["tried_count"][...]
+        cols = [g[f"tried_{j}"][...] for j in range(len([k for k in g if k.startswith("tried_") and k[6:].isdigit()]))]
+        tried = [[solver_names[cols[j][i]] for j in range(count[i])] for i in range(len(cls))]
+    return {"classes": cls, "solver": chosen, "tried": tried}
+
+
+def portfolio_table(pf):
+    """{class: {solver or "none": problems}} of the succeeding solvers."""
+    table = {}
+    for c, s in zip(pf["classes"], pf["solver"]):
+        row = table.setdefault(c, {})
+        row[s or "none"] = row.get(s or "none", 0) + 1
+    return dict(sorted(table.items()))
+
+
+def plot_portfolio(pf, out, stem, plt):
+    """Stacked bars: per class, the solver whose answer auto accepted; and the number of solvers tried."""
+    table = portfolio_table(pf)
+    classes = list(table)
+    solvers = sorted({s for row in table.values() for s in row}, key=lambda s: (s == "none", s))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(12, 4), gridspec_kw={"width_ratios": [3, 1]})
+    bottom = np.zeros(len(classes))
+    for k, s in enumerate(solvers):
+        h = np.array([table[c].get(s, 0) for c in classes], dtype=float)
+        a1.bar(range(len(classes)), h, bottom=bottom, label=s, color="k" if s == "none" else f"C{k % 10}")
+        bottom += h
+    a1.set_xticks(range(len(classes)), classes, rotation=45, ha="right", fontsize=8)
+    a1.set(ylabel="problems", title="auto: succeeding solver per problem class")
+    a1.legend(fontsize=7)
+    ntried = np.array([len(t) for t in pf["tried"]])
+    a2.bar(*np.unique(ntried, return_counts=True), color="C0")
+    a2.set(xlabel="solvers tried", ylabel="problems", title="auto: attempts per problem")
+    fig.tight_layout()
+    png = out / f"lcp_{stem}_portfolio.png"
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    return str(png)
 
 
 def performance_profile(times, taus=None):
@@ -113,6 +168,10 @@ def plot_histograms(path, outdir):
     fig.savefig(png, dpi=110)
     plt.close(fig)
     written.append(str(png))
+    # 4. the portfolio's choices (-solvers auto)
+    pf = read_portfolio(path)
+    if pf is not None:
+        written.append(plot_portfolio(pf, out, stem, plt))
     return written
 
 

@@ -5,6 +5,7 @@
 #include "core/run_context.hpp"
 #include "io/h5_append.hpp"
 #include "lcp/generators.hpp"
+#include "lcp/portfolio.hpp"
 #include "lcp/readers.hpp"
 #include "lcp/solver.hpp"
 
@@ -31,6 +32,7 @@ struct Options {
   PetscInt max_it = 0, block_size = 3;
   PetscReal omega = 1.0, rel_tol = 1e-10;
   PetscBool refine = PETSC_TRUE;
+  std::string portfolio; // -portfolio: table of "auto" ("" = built-in)
   // the run
   std::string output;
   PetscInt chunk = 0, flush_every = 4096;
@@ -38,6 +40,7 @@ struct Options {
   PetscBool strict = PETSC_FALSE, resume = PETSC_TRUE;
 
   bool fromFiles() const { return family == "file"; }
+  bool hasAuto() const { return std::find(solvers.begin(), solvers.end(), "auto") != solvers.end(); }
 };
 
 // Collective: reads and validates every option. *help_only: -help was given (nothing to run).
@@ -49,19 +52,29 @@ constexpr int kFields = 6; // per solver and problem: status, iterations, pivots
 inline const char* const kFieldNames[kFields] = {"status", "iterations", "pivots",
                                                  "time",   "residual",   "cpu_time"};
 
+// Per problem with -solvers auto: class index (problem_class.hpp), index of the succeeding solver (registry
+// order, -1: none), number of solvers tried, the tried ones in order (-1 padding).
+constexpr int kAutoFields = 3 + suite::lcp::kAutoMaxTried;
+
 struct Batch {
   std::string family;
   suite::lcp::GeneratorParams gp;
   long long count = 0;
   std::vector<suite::lcp::Problem> file_problems; // family "file": every rank holds them (read up front)
   std::vector<std::string> file_errors;           // "" or the reason a file is invalid
-  std::vector<std::unique_ptr<suite::lcp::Solver>> solvers;
+  std::vector<std::unique_ptr<suite::lcp::Solver>> solvers; // nullptr for "auto"
   std::vector<std::string> solver_names;
   suite::lcp::SolverOptions opt;
-  double delay = 0.0; // testing: seconds of sleep after each problem
+  suite::lcp::Portfolio portfolio; // the table of "auto"
+  int auto_index = -1;             // position of "auto" in solver_names, -1 if absent
+  double delay = 0.0;              // testing: seconds of sleep after each problem
 
   bool fromFiles() const { return family == "file"; }
-  int recordLength() const { return 2 + static_cast<int>(solvers.size()) * kFields; } // index, n, fields
+  // index, n, kFields per solver, then (with auto) class, succeeding solver, tried count, kAutoMaxTried tried
+  int recordLength() const {
+    return 2 + static_cast<int>(solvers.size()) * kFields + (auto_index >= 0 ? kAutoFields : 0);
+  }
+  int autoBase() const { return 2 + static_cast<int>(solvers.size()) * kFields; }
 };
 
 // Collective: the batch; files are read here (a malformed HDF5 file stops the job, others go to file_errors).
@@ -108,6 +121,8 @@ private:
   long long key(long long i) const { return static_cast<long long>(buf_[i * rec_len_]); }
   template <class T> void writeColumn(const std::vector<long long>& order, int c, const std::string& path);
   void writeBuffered();
+  void createAuto();
+  void writeAuto(const std::vector<long long>& order);
   const Batch& b_;
   const int rec_len_;
   std::vector<double> buf_;
@@ -123,6 +138,10 @@ struct SolverSummary {
 };
 // One streamed pass over /results/<solver>/: histograms and summary attributes written to f.
 SolverSummary summarise(suite::H5AppendFile& f, const std::string& solver, long long count);
+
+// One streamed pass over /results/auto: how often each solver succeeded and how many problems needed more
+// than one (attributes chosen_counts, fallbacks); returns the summary line.
+std::string summariseAuto(suite::H5AppendFile& f, long long count);
 
 // Where the batch stands: startBatchFile sets done and ndone0, dealProblems the rest.
 struct RunState {

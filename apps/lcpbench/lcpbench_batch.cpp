@@ -4,6 +4,7 @@
 
 #include "core/rank0_work.hpp"
 
+#include <algorithm>
 #include <unistd.h>
 
 namespace lcpbench_app {
@@ -42,7 +43,11 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
   PetscFunctionBeginUser;
   b->family = o.family;
   b->solver_names = o.solvers;
-  for (const auto& s : b->solver_names) b->solvers.push_back(makeSolver(s));
+  for (const auto& s : b->solver_names) b->solvers.push_back(s == "auto" ? nullptr : makeSolver(s));
+  const auto at = std::find(o.solvers.begin(), o.solvers.end(), "auto");
+  b->auto_index = at == o.solvers.end() ? -1 : static_cast<int>(at - o.solvers.begin());
+  b->portfolio = builtinPortfolio();
+  if (b->auto_index >= 0 && !o.portfolio.empty()) PetscCall(loadPortfolio(comm, o.portfolio, &b->portfolio));
   b->gp = {static_cast<int>(o.n), o.cond, o.qrange, o.lower, o.upper, static_cast<std::uint64_t>(o.seed)};
   b->opt = {static_cast<int>(o.max_it), o.rel_tol, nullptr, o.omega, static_cast<int>(o.block_size),
             o.refine == PETSC_TRUE};
@@ -57,6 +62,40 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
   b->count = static_cast<long long>(o.files.size());
   PetscFunctionReturn(0);
 }
+
+namespace {
+
+// Index of a solver name in the registry (the index lcpbench's auto records use), -1 if none.
+double registryIndex(const std::string& name) {
+  static const std::vector<std::string> names = solverNames();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1.0 : static_cast<double>(it - names.begin());
+}
+
+// The portfolio on p; its choices into rec[0, kAutoFields).
+Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec) {
+  std::fill(rec, rec + kAutoFields, -1.0);
+  rec[2] = 0;
+  if (!p) {
+    Result r;
+    r.status = Status::InvalidInput;
+    return r;
+  }
+  AutoOptions ao;
+  ao.rel_tol = b.opt.rel_tol;
+  ao.max_iterations = b.opt.max_iterations;
+  ao.portfolio = &b.portfolio;
+  AutoInfo info;
+  const Result r = solveAuto(*p, ao, &info);
+  rec[0] = problemClassIndex(info.features.name());
+  rec[1] = r.ok() ? registryIndex(info.solver) : -1.0;
+  rec[2] = static_cast<double>(info.attempts.size());
+  for (size_t j = 0; j < info.attempts.size() && j < static_cast<size_t>(kAutoMaxTried); ++j)
+    rec[3 + j] = registryIndex(info.attempts[j].solver);
+  return r;
+}
+
+} // namespace
 
 void solveOne(const Batch& b, long long k, double* rec) {
   Problem gen; // problem k: the k-th file, or generated (p: nullptr when invalid, err says why)
@@ -75,7 +114,10 @@ void solveOne(const Batch& b, long long k, double* rec) {
   for (size_t s = 0; s < b.solvers.size(); ++s) {
     Result r; // invalid input: no solver runs (zero counts and times, infinite residual)
     r.status = Status::InvalidInput;
-    if (err.empty() && p) r = solve(*b.solvers[s], *p, b.opt);
+    if (static_cast<int>(s) == b.auto_index)
+      r = solveAutoRecorded(b, err.empty() ? p : nullptr, rec + b.autoBase());
+    else if (err.empty() && p)
+      r = solve(*b.solvers[s], *p, b.opt);
     const double v[kFields] = {static_cast<double>(r.status),
                                static_cast<double>(r.iterations),
                                static_cast<double>(r.pivots),

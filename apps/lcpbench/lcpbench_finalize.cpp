@@ -51,7 +51,7 @@ void writeRunAttributes(suite::H5AppendFile& f, const suite::RunContext& ctx, co
 
 // Rank 0 (throws): OUT.partial copied to OUT.tmp, completed, renamed to OUT; OUT.partial removed last.
 void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
-                  std::vector<SolverSummary>* S) {
+                  std::vector<SolverSummary>* S, std::string* auto_line) {
   const std::string partial = o.output + ".partial";
   suite::H5AppendFile& f = store->file;
   f.close();
@@ -59,6 +59,7 @@ void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b
   std::filesystem::copy_file(partial, tmp, std::filesystem::copy_options::overwrite_existing);
   f.open(tmp, true);
   for (size_t s = 0; s < b.solver_names.size(); ++s) (*S)[s] = summarise(f, b.solver_names[s], b.count);
+  if (b.auto_index >= 0) *auto_line = summariseAuto(f, b.count);
   writeRunAttributes(f, ctx, o, b, store);
   f.setAttribute("/", "wall_seconds", ctx.wallSeconds());
   f.setAttribute("/batch", "complete", 1LL);
@@ -69,7 +70,8 @@ void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b
 }
 
 PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, const Batch& b,
-                            const RunState& st, const std::vector<SolverSummary>& S) {
+                            const RunState& st, const std::vector<SolverSummary>& S,
+                            const std::string& auto_line) {
   MPI_Comm comm = ctx.comm();
   const long long solved_now = b.count - st.ndone0;
   PetscFunctionBeginUser;
@@ -80,6 +82,8 @@ PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, cons
                              b.solver_names[s].c_str(), b.count - (long long)S[s].failed,
                              (long long)S[s].failed, S[s].med_it, S[s].med_pvn, S[s].tsum, S[s].rate(b.count),
                              S[s].cpuRate(b.count)));
+  if (b.auto_index >= 0) // rank 0's line (PetscPrintf prints rank 0's arguments)
+    PetscCall(suite::logInfo(comm, ctx.quiet(), "  %s", auto_line.c_str()));
   PetscCall(suite::logInfo(comm, ctx.quiet(),
                            "lcpbench: %lld problems (%lld in this run) in %.3f s wall (%.1f problems/s), "
                            "results in %s",
@@ -120,6 +124,7 @@ PetscErrorCode checkOutcome(MPI_Comm comm, const Options& o, const Batch& b,
 PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const Batch& b, const RunState& st,
                          Store* store) {
   std::vector<SolverSummary> S(b.solver_names.size()); // rank 0 computes them, every rank prints and checks
+  std::string auto_line;                               // rank 0's
   PetscFunctionBeginUser;
   if (st.stopped != 0 || st.ndone < b.count) { // interrupted: OUT.partial stays
     if (ctx.rank() == 0) {
@@ -134,11 +139,11 @@ PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const B
     PetscFunctionReturn(0);
   }
   PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_WRITE, "lcpbench: writing the results failed: ", [&] {
-    completeFile(ctx, o, b, store, &S);
+    completeFile(ctx, o, b, store, &S, &auto_line);
   }));
   PetscCallMPI(
       MPI_Bcast(S.data(), static_cast<int>(S.size() * sizeof(SolverSummary)), MPI_BYTE, 0, ctx.comm()));
-  PetscCall(printSummary(ctx, o, b, st, S));
+  PetscCall(printSummary(ctx, o, b, st, S, auto_line));
   PetscCall(checkOutcome(ctx.comm(), o, b, S));
   PetscFunctionReturn(0);
 }

@@ -59,10 +59,18 @@ PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options*
 
 PetscErrorCode readSolverOptions(PetscOptionItems* po, Options* o) {
   PetscFunctionBeginUser;
-  PetscCall(suite::optionsChoiceList(po, "-solvers", "LCP solvers to run",
-                                     suite::choicesOf(suite::lcp::solverRegistry()), &o->solvers));
-  PetscCall(optionsValue(po, "-max_it", "Iteration / pivot cap of every solver (0: each solver's default)",
-                         &o->max_it));
+  std::vector<Choice> solvers = suite::choicesOf(suite::lcp::solverRegistry());
+  solvers.push_back({"auto", "the portfolio: classify the problem, try its class's chain (-portfolio), first "
+                             "verified answer"});
+  PetscCall(suite::optionsChoiceList(po, "-solvers", "LCP solvers to run", solvers, &o->solvers));
+  PetscCall(suite::optionsString(po, "-portfolio",
+                                 "Solver table of -solvers auto (HDF5 from scripts/bench/lcp-portfolio; "
+                                 "default: the built-in one)",
+                                 &o->portfolio));
+  PetscCall(optionsValue(
+      po, "-max_it",
+      "Iteration / pivot cap of every solver (0: each solver's default; auto: its chain's first)",
+      &o->max_it));
   PetscCall(optionsValue(po, "-omega", "PGS relaxation factor", &o->omega));
   PetscCall(optionsValue(po, "-block_size", "Block size of pgs_block", &o->block_size));
   PetscCall(optionsValue(po, "-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", &o->rel_tol));
@@ -104,6 +112,9 @@ PetscErrorCode finishOptions(MPI_Comm comm, PetscBool family_set, PetscBool stri
     PetscCheck(std::count(o->solvers.begin(), o->solvers.end(), s) == 1, comm, PETSC_ERR_ARG_WRONG,
                "Solver '%s' is listed twice in -solvers", s.c_str());
   PetscCheck(!o->output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
+  PetscCheck(o->portfolio.empty() || o->hasAuto(), comm, PETSC_ERR_ARG_INCOMP,
+             "-portfolio is only read with -solvers auto (given -solvers %s)",
+             suite::joinCommaList(o->solvers).c_str());
   PetscCheck(o->cond >= 1.0 && std::isfinite(o->cond), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-cond %g: must be >= 1", (double)o->cond);
   PetscCheck(o->qrange >= 0.0 && std::isfinite(o->qrange), comm, PETSC_ERR_ARG_OUTOFRANGE,

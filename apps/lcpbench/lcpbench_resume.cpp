@@ -77,6 +77,7 @@ BatchHeader batchHeader(const Options& o, const Batch& b) {
                                  {"lower", exactText(o.lower)}, {"upper", exactText(o.upper)}};
   const BatchHeader& more = b.fromFiles() ? files : generated;
   h.insert(h.end(), more.begin(), more.end());
+  if (b.auto_index >= 0) h.push_back({"portfolio", b.portfolio.source});
   return h;
 }
 

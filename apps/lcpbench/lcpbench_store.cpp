@@ -2,6 +2,8 @@
 // flags that vouch for it; protocol in main.cpp), and the per-solver summary pass over it at completion.
 #include "lcpbench.hpp"
 
+#include "core/comma_list.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -31,10 +33,35 @@ void Store::create(const std::string& partial) {
     file.createFixed<double>(g + "residual", C, kInf);
     file.createFixed<double>(g + "cpu_time", C, 0.0, "s");
   }
+  if (b_.auto_index >= 0) createAuto();
   run = 0;
   file.flush();
   if (std::rename(init.c_str(), partial.c_str()) != 0)
     throw std::runtime_error("cannot rename " + init + " to " + partial);
+}
+
+// The portfolio's per-problem choices (lcpbench.hpp, kAutoFields) and the name lists their indices refer to.
+void Store::createAuto() {
+  const unsigned long long C = static_cast<unsigned long long>(count);
+  const std::string g = "/results/auto/";
+  file.createFixed<int>(g + "class", C, -1);
+  file.createFixed<int>(g + "solver", C, -1);
+  file.createFixed<int>(g + "tried_count", C, 0);
+  for (int j = 0; j < suite::lcp::kAutoMaxTried; ++j)
+    file.createFixed<int>(g + "tried_" + std::to_string(j), C, -1);
+  file.setAttribute("/results/auto", "class_names", suite::joinCommaList(suite::lcp::problemClassNames()));
+  file.setAttribute("/results/auto", "solver_names", suite::joinCommaList(suite::lcp::solverNames()));
+  file.setAttribute("/results/auto", "portfolio", b_.portfolio.source);
+}
+
+void Store::writeAuto(const std::vector<long long>& order) {
+  const std::string g = "/results/auto/";
+  const int base = b_.autoBase();
+  writeColumn<int>(order, base + 0, g + "class");
+  writeColumn<int>(order, base + 1, g + "solver");
+  writeColumn<int>(order, base + 2, g + "tried_count");
+  for (int j = 0; j < suite::lcp::kAutoMaxTried; ++j)
+    writeColumn<int>(order, base + 3 + j, g + "tried_" + std::to_string(j));
 }
 
 template <class T>
@@ -61,6 +88,7 @@ void Store::writeBuffered() {
     for (int c : {1, 2}) writeColumn<long long>(order, base + c, g + kFieldNames[c]);
     for (int c : {3, 4, 5}) writeColumn<double>(order, base + c, g + kFieldNames[c]);
   }
+  if (b_.auto_index >= 0) writeAuto(order);
   file.flush(); // the data is in the file before the flags that vouch for it
   file.writeSelected("/batch/done", std::vector<unsigned char>(order.size(), 1).data());
 }
@@ -188,6 +216,29 @@ SolverSummary summarise(suite::H5AppendFile& f, const std::string& solver, long 
   f.setAttribute(gg, "total_cpu_time", S.csum);
   f.setAttribute(gg, "problems_per_cpu_second", S.cpuRate(count));
   return S;
+}
+
+std::string summariseAuto(suite::H5AppendFile& f, long long count) {
+  const auto& names = suite::lcp::solverNames();
+  std::vector<long long> chosen(names.size() + 1, 0); // last: none
+  long long fallbacks = 0;
+  forBlocks<int>(f, "/results/auto/solver", static_cast<unsigned long long>(count),
+                 [&](unsigned long long, const std::vector<int>& v) {
+                   for (int s : v) ++chosen[s >= 0 && s < (int)names.size() ? s : names.size()];
+                 });
+  forBlocks<int>(f, "/results/auto/tried_count", static_cast<unsigned long long>(count),
+                 [&](unsigned long long, const std::vector<int>& v) {
+                   for (int t : v) fallbacks += t > 1;
+                 });
+  std::string line = "auto (" + std::to_string(fallbacks) + " problem(s) needed more than one solver):";
+  std::vector<double> counts;
+  for (size_t s = 0; s <= names.size(); ++s) {
+    counts.push_back(static_cast<double>(chosen[s]));
+    if (chosen[s]) line += " " + (s < names.size() ? names[s] : "none") + " " + std::to_string(chosen[s]);
+  }
+  f.setAttribute("/results/auto", "chosen_counts", counts); // per registry solver, then "none"
+  f.setAttribute("/results/auto", "fallbacks", fallbacks);
+  return line;
 }
 
 } // namespace lcpbench_app

@@ -24,6 +24,7 @@
 //   lcpbench -options_file inputs/lcpbench/random_box.yaml
 //   lcpbench -family random_box -n 2 -count 100000 -solvers pgs -flush_every 10000 -output stream.h5
 //   lcpbench -file ../shared/data/lcp/lcp_deudeu.dat -solvers bpp,lemke -resume 0 -output f2.h5
+//   lcpbench -family random_box -n 20 -count 50 -solvers auto,bpp,lemke -output auto.h5   # the portfolio
 #include "lcpbench.hpp"
 
 #include "core/comma_list.hpp"

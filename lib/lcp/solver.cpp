@@ -2,6 +2,8 @@
 // helpers shared by the LCP solvers.
 #include "lcp/solver.hpp"
 
+#include "lcp/portfolio.hpp"
+
 #include <mpi.h>
 
 #include <algorithm>
@@ -156,9 +158,9 @@ std::vector<State> statesFromSolution(const Problem& p, const Vec& z, const Vec&
 }
 
 Result solve(const Solver& s, const Problem& p, const SolverOptions& opt) {
-  const double t0 = MPI_Wtime();
+  const double t0 = opt.timed ? MPI_Wtime() : 0.0;
   timespec c0{}, c1{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
+  if (opt.timed) clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
   Result r;
   try {
     r = s.run(p, opt);
@@ -188,6 +190,7 @@ Result solve(const Solver& s, const Problem& p, const SolverOptions& opt) {
     if (r.message.empty()) r.message = "residual above the acceptance tolerance";
   }
   if (r.status == Status::Solved && !r.z.allFinite()) r.status = Status::NumericalError;
+  if (!opt.timed) return r;
   r.time = MPI_Wtime() - t0;
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c1);
   r.cpu_time =
@@ -228,6 +231,7 @@ Result attempt(const Solver& s, const Problem& p, const Problem& solved, const V
                const ChainOptions& o, double tol, Attempt* a) {
   SolverOptions so;
   so.rel_tol = sc ? o.scaled_tol_factor * o.rel_tol : o.rel_tol;
+  so.timed = o.timed;
   if (first) so.max_iterations = o.first_max_iterations;
   Vec warm;
   if (o.warm_start && o.warm_start->size() == p.size() && o.warm_start->allFinite()) {
@@ -240,8 +244,10 @@ Result attempt(const Solver& s, const Problem& p, const Problem& solved, const V
   a->pivots = r.pivots;
   const bool finite = r.z.size() == p.size() && r.z.allFinite();
   if (finite) {
-    if (sc) r.z = sc->cwiseProduct(r.z);
-    evaluate(p, &r); // residual on the original problem
+    if (sc) { // back to the original problem (solve() evaluated and refined p itself when unscaled)
+      r.z = sc->cwiseProduct(r.z);
+      evaluate(p, &r);
+    }
     a->refinements = refineOnStates(p, tol, o.refinements, &r);
   }
   a->residual = r.residual;
@@ -252,8 +258,22 @@ Result attempt(const Solver& s, const Problem& p, const Problem& solved, const V
 
 } // namespace
 
-Result solveWithChain(const Problem& p, const std::vector<std::string>& names, const ChainOptions& o,
+// The chain with each "auto" replaced by the built-in portfolio's chain of p's class (portfolio.hpp), solvers
+// already named left out.
+static std::vector<std::string> expandAuto(const Problem& p, const std::vector<std::string>& names) {
+  if (std::find(names.begin(), names.end(), "auto") == names.end()) return names;
+  std::vector<std::string> out;
+  for (const std::string& n : names) {
+    const std::vector<std::string> one{n};
+    for (const std::string& s : n == "auto" ? builtinPortfolio().chainFor(classify(p).name()) : one)
+      if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
+  }
+  return out;
+}
+
+Result solveWithChain(const Problem& p, const std::vector<std::string>& chain, const ChainOptions& o,
                       std::vector<Attempt>* attempts) {
+  const std::vector<std::string> names = expandAuto(p, chain);
   std::vector<Attempt> local;
   std::vector<Attempt>& att = attempts ? *attempts : local;
   att.clear();

@@ -35,6 +35,9 @@ struct SolverOptions {
   double omega = 1.0;              // PGS relaxation
   int block_size = 3;              // block PGS
   bool refine = true;              // final active-set refinement of a claimed solution (see solve())
+  // Fill Result::time / cpu_time. The thread CPU clock costs ~1 us a call (a system call), as much as a whole
+  // solve of a small problem: callers that time a sequence of solves themselves (solveAuto) turn it off.
+  bool timed = true;
 };
 
 struct Result {
@@ -102,12 +105,15 @@ struct ChainOptions {
   const Vec* scale = nullptr;
   double scaled_tol_factor = 1e-3;
   int refinements = 2; // active-set refinements of a finite answer on the original problem (kept if better)
+  bool timed = true;   // SolverOptions::timed of every attempt
   std::function<std::unique_ptr<Solver>(const std::string&)> make; // solver factory (empty: makeSolver)
 };
 
 // Tries the named solvers in turn with solve() and returns the first answer whose natural-map residual on p
 // meets the acceptance rule, with status Solved even when the method reported another one (seen: Lemke
 // 'ray_termination' with residual 1e-14); when none does, the last attempt's result, never Solved.
+// A name "auto" stands for the built-in portfolio's chain of p's class (portfolio.hpp; the entry point of the
+// portfolio for the chain's users, e.g. the contact app's solver chains).
 // attempts (optional): every attempt in order.
 Result solveWithChain(const Problem& p, const std::vector<std::string>& names, const ChainOptions& o,
                       std::vector<Attempt>* attempts = nullptr);

@@ -54,3 +54,21 @@ def test_figures_from_lcpbench_run(tmp_path, suite_bin, run_suite):
     assert all((res[s]["status"] == 0).all() for s in ("lemke", "bpp", "fb_newton"))
     assert main(["plot", str(h5), "--outdir", str(tmp_path)]) == 0
     assert (tmp_path / "lcp_run_profile.png").stat().st_size > 1000
+
+
+def test_portfolio_figure_from_lcpbench_auto(tmp_path, suite_bin, run_suite):
+    """-solvers auto: the per-problem class, succeeding and tried solvers are read back and drawn."""
+    if not (suite_bin / "lcpbench").exists():
+        pytest.skip("lcpbench not built")
+    from postprocess.lcp_plots import portfolio_table, read_portfolio
+
+    h5 = tmp_path / "auto.h5"
+    run_suite("lcpbench", "-family", "random_spd", "-n", 10, "-count", 6, "-solvers", "auto,bpp",
+              "-output", h5, "-quiet", np=1)
+    pf = read_portfolio(h5)
+    assert pf["classes"] == ["lcp-spd-small"] * 6 or all(c.startswith("lcp-") for c in pf["classes"])
+    assert all(s and t and t[-1] == s for s, t in zip(pf["solver"], pf["tried"]))
+    assert sum(sum(r.values()) for r in portfolio_table(pf).values()) == 6
+    assert main(["lcp-histograms", str(h5), "--outdir", str(tmp_path)]) == 0
+    assert (tmp_path / "lcp_auto_portfolio.png").stat().st_size > 1000
+    assert read_portfolio(tmp_path / "auto.h5") is not None

@@ -1,0 +1,230 @@
+// Unit tests of the LCP solver portfolio: the classifier on matrices of known type (SPD, symmetric indefinite,
+// nonsymmetric positive definite, general, diagonally dominant; LCP, box, MLCP; size bands), the chain
+// fallback (a problem the first solver of its chain fails and a later one solves: Siconos' lcp_CPS_4bis on
+// which Lemke ray-terminates, and a cap of 1 pivot on the first solver), table validation, and the
+// built-in table on the Siconos files: auto solves every file that some single solver solves.
+#include "lcp/generators.hpp"
+#include "lcp/portfolio.hpp"
+#include "lcp/readers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+
+using namespace suite::lcp;
+
+namespace {
+
+Mat mat2(double a, double b, double c, double d) {
+  Mat M(2, 2);
+  M << a, b, c, d;
+  return M;
+}
+
+std::string classOf(const Problem& p) {
+  const std::string c = classify(p).name();
+  EXPECT_GE(problemClassIndex(c), 0) << c;
+  return c;
+}
+
+const std::string kSiconos = std::string(SUITE_DATA_DIR) + "/lcp";
+
+} // namespace
+
+TEST(ProblemClass, MatrixTypes) {
+  const Vec q = Vec::Constant(2, -1.0);
+  EXPECT_EQ(classOf(makeLcp(mat2(2, 1, 1, 2), q)), "lcp-dd-small");      // strictly dominant
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 1, 1, 2), q)), "lcp-spd-small");     // SPD, row 0 not strictly dominant
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 2, 2, 1), q)), "lcp-sym-small");     // eigenvalues 3, -1
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, -1), q)), "lcp-sym-small");    // negative diagonal
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, -1.5, 1), q)), "lcp-pd-small"); // symmetric part I
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-gen-small");     // symmetric part indefinite
+  const ProblemFeatures f = classify(makeLcp(mat2(1, 1.5, -1.5, 1), q), true);
+  EXPECT_FALSE(f.symmetric);
+  EXPECT_TRUE(f.minors_ok);
+  EXPECT_TRUE(f.cholesky_tried && f.cholesky_ok);
+  EXPECT_FALSE(
+      classify(makeLcp(mat2(1, 1.5, -1.5, 1), q)).cholesky_tried); // default: the 2 x 2 minors decide
+  EXPECT_TRUE(f.diag_positive);
+  EXPECT_FALSE(f.diag_dominant);
+  EXPECT_DOUBLE_EQ(f.density, 1.0);
+}
+
+TEST(ProblemClass, StructureSizeAndFeatures) {
+  GeneratorParams gp;
+  gp.n = 50;
+  gp.cond = 1e6;
+  const Problem spd = generate("random_spd", gp, 0);
+  EXPECT_EQ(classOf(spd), "lcp-spd-medium");
+  EXPECT_EQ(classOf(generate("random_box", gp, 0)), "box-spd-medium");
+  EXPECT_EQ(classOf(generate("pmatrix", gp, 0)), "lcp-pd-medium");
+  gp.n = 33;
+  EXPECT_EQ(classOf(generate("random_spd", gp, 1)), "lcp-spd-medium"); // 33: medium band
+  gp.n = 257;
+  gp.cond = 1e2;
+  const ProblemFeatures big = classify(generate("random_spd", gp, 0), true);
+  EXPECT_EQ(big.name(), "lcp-spd-large");
+  EXPECT_TRUE(big.cholesky_tried && big.cholesky_ok);
+  EXPECT_EQ(classify(generate("pmatrix", gp, 0), true).name(), "lcp-pd-large");
+  // Murty's M = I + 2 strict lower triangle: symmetric part I + L + L^T with ones off the diagonal, singular
+  gp.n = 8;
+  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-gen-small");
+  // MLCP: one free variable, then one complementarity variable
+  const Problem m = makeMlcp(mat2(4, 1, 1, 4), Vec::Constant(2, -1.0), 1);
+  EXPECT_EQ(classOf(m), "mlcp-dd-small");
+  const ProblemFeatures fm = classify(m);
+  EXPECT_EQ(fm.finite_lower, 1);
+  EXPECT_EQ(fm.finite_upper, 0);
+  Mat D = Mat::Identity(4, 4);
+  const Problem box = makeBox(D, Vec::Constant(4, 1.0), Vec::Constant(4, -1.0), Vec::Constant(4, 1.0));
+  EXPECT_EQ(classOf(box), "box-dd-small");
+  EXPECT_DOUBLE_EQ(classify(box, true).density, 0.25);
+  EXPECT_EQ(classify(box).finite_upper, 4);
+}
+
+// M = I + a (ones - I), a = -0.01: diagonal 1, every 2 x 2 minor 1 - a^2 > 0, not dominant (row sum of
+// |off-diagonal| (n - 1) |a| > 1), eigenvalue 1 + (n - 1) a < 0 for n > 101: indefinite.
+TEST(ProblemClass, CholeskyTestSeesWhatTheMinorsMiss) {
+  auto m = [](int n) {
+    Mat M = Mat::Constant(n, n, -0.01);
+    M.diagonal().setOnes();
+    return makeLcp(M, Vec::Constant(n, -1.0));
+  };
+  const ProblemFeatures chol = classify(m(300), true);
+  EXPECT_EQ(chol.name(), "lcp-sym-large");
+  EXPECT_TRUE(chol.minors_ok);
+  EXPECT_TRUE(chol.cholesky_tried);
+  EXPECT_FALSE(chol.cholesky_ok);
+  // The O(n^2) tests alone (the portfolio's) cannot see this indefiniteness (documented limit of the class).
+  const ProblemFeatures cheap = classify(m(200));
+  EXPECT_EQ(cheap.name(), "lcp-spd-medium");
+  EXPECT_FALSE(cheap.cholesky_tried);
+}
+
+TEST(Portfolio, ValidationNamesTheFault) {
+  Portfolio t = builtinPortfolio();
+  EXPECT_EQ(validatePortfolio(t), "");
+  Portfolio bad{{"default"}, {{"lemke", "nosuch"}}};
+  EXPECT_NE(validatePortfolio(bad).find("unknown solver 'nosuch'"), std::string::npos);
+  bad = {{"lcp-spd-small"}, {{"lemke"}}};
+  EXPECT_NE(validatePortfolio(bad).find("no 'default' class"), std::string::npos);
+  bad = {{"default", "lcp-xyz"}, {{"lemke"}, {"bpp"}}};
+  EXPECT_NE(validatePortfolio(bad).find("unknown problem class 'lcp-xyz'"), std::string::npos);
+  bad = {{"default"}, {{"lemke", "bpp", "lemke"}}};
+  EXPECT_NE(validatePortfolio(bad).find("twice"), std::string::npos);
+  bad = {{"default"}, {{"lemke", "bpp", "keller", "murty", "pgs"}}};
+  EXPECT_NE(validatePortfolio(bad).find("must be 1 to 4"), std::string::npos);
+  bad = {{"default"}, {{}}};
+  EXPECT_NE(validatePortfolio(bad).find("must be 1 to 4"), std::string::npos);
+  const Portfolio two{{"default", "lcp-dd-small"}, {{"lemke"}, {"pgs", "bpp"}}};
+  EXPECT_EQ(two.chainFor("lcp-dd-small"), (std::vector<std::string>{"pgs", "bpp"}));
+  EXPECT_EQ(two.chainFor("box-gen-large"), (std::vector<std::string>{"lemke"}));
+}
+
+// PGS refuses lcp_CPS_2 (a zero diagonal entry: Unsupported, no answer); fb_newton, next in the chain, solves it.
+TEST(Portfolio, ChainFallsBackWhenTheFirstSolverFails) {
+  const Problem p = readSiconos(kSiconos + "/lcp_CPS_2.dat");
+  const Portfolio t{{"default"}, {{"pgs", "fb_newton", "bpp"}}};
+  AutoOptions o;
+  o.portfolio = &t;
+  AutoInfo info;
+  const Result r = solveAuto(p, o, &info);
+  ASSERT_TRUE(r.ok()) << describeAttempts(info.attempts);
+  ASSERT_EQ(info.attempts.size(), 2u);
+  EXPECT_EQ(info.attempts[0].solver, "pgs");
+  EXPECT_FALSE(info.attempts[0].accepted);
+  EXPECT_EQ(info.attempts[0].status, Status::Unsupported);
+  EXPECT_EQ(info.attempts[1].solver, "fb_newton");
+  EXPECT_TRUE(info.attempts[1].accepted);
+  EXPECT_EQ(info.solver, "fb_newton");
+  EXPECT_LE(naturalResidual(p, r.z, p.M * r.z + p.q), acceptanceTolerance(p));
+  EXPECT_LE(complementarity(p, r.z, p.M * r.z + p.q), 1e-8);
+}
+
+// Lemke ray-terminates on lcp_CPS_3 (status 2 when run alone), but the chain's active-set refinement on the
+// original problem turns its answer into a verified solution: accepted, no fallback.
+TEST(Portfolio, RefinedRayTerminationIsAccepted) {
+  const Problem p = readSiconos(kSiconos + "/lcp_CPS_3.dat");
+  EXPECT_EQ(solve(*makeSolver("lemke"), p).status, Status::RayTermination);
+  const Portfolio t{{"default"}, {{"lemke", "fb_newton"}}};
+  AutoOptions o;
+  o.portfolio = &t;
+  AutoInfo info;
+  const Result r = solveAuto(p, o, &info);
+  ASSERT_TRUE(r.ok());
+  ASSERT_EQ(info.attempts.size(), 1u);
+  EXPECT_EQ(info.attempts[0].status, Status::RayTermination);
+  EXPECT_GE(info.attempts[0].refinements, 1);
+  EXPECT_LE(naturalResidual(p, r.z, p.M * r.z + p.q), acceptanceTolerance(p));
+}
+
+// A cap of one pivot on the chain's first solver (as -max_it does for auto): Lemke stops, bpp solves.
+TEST(Portfolio, IterationCapOnTheFirstSolverFallsBack) {
+  GeneratorParams gp;
+  gp.n = 50;
+  const Problem p = generate("random_spd", gp, 3);
+  const Portfolio t{{"default"}, {{"lemke", "bpp"}}};
+  AutoOptions o;
+  o.portfolio = &t;
+  o.max_iterations = 1;
+  AutoInfo info;
+  const Result r = solveAuto(p, o, &info);
+  ASSERT_TRUE(r.ok()) << describeAttempts(info.attempts);
+  ASSERT_EQ(info.attempts.size(), 2u);
+  EXPECT_EQ(info.attempts[0].status, Status::MaxIterations);
+  EXPECT_EQ(info.solver, "bpp");
+  // Nobody solves it: every attempt recorded, never Solved, at most kAutoMaxTried tried.
+  const Portfolio none{{"default"}, {{"pgs"}}};
+  o.portfolio = &none;
+  AutoInfo fail;
+  const Result f = solveAuto(makeLcp(mat2(-1, 0, 0, -1), Vec::Constant(2, -1.0)), o, &fail);
+  EXPECT_FALSE(f.ok());
+  EXPECT_EQ(fail.solver, "");
+  EXPECT_EQ(fail.attempts.size(), 1u);
+}
+
+// The built-in table on every Siconos file: auto solves each file that some single solver solves.
+TEST(Portfolio, BuiltinSolvesTheSiconosFilesSomeSolverSolves) {
+  DIR* d = opendir(kSiconos.c_str());
+  ASSERT_NE(d, nullptr) << kSiconos;
+  std::vector<std::string> files;
+  while (dirent* e = readdir(d)) {
+    const std::string f = e->d_name;
+    if (f.size() > 4 && f.substr(f.size() - 4) == ".dat") files.push_back(f);
+  }
+  closedir(d);
+  ASSERT_GE(files.size(), 17u);
+  int solvable = 0;
+  for (const std::string& f : files) {
+    const Problem p = readSiconos(kSiconos + "/" + f);
+    bool any = false;
+    for (const char* s :
+         {"lemke", "keller", "cottle_dantzig", "murty", "bpp", "fb_newton", "smoothed_newton", "pgs"})
+      any = any || solve(*makeSolver(s), p).ok();
+    if (!any) continue;
+    ++solvable;
+    AutoInfo info;
+    const Result r = solveAuto(p, AutoOptions{}, &info);
+    EXPECT_TRUE(r.ok()) << f << " (" << info.features.name() << "): " << describeAttempts(info.attempts);
+  }
+  EXPECT_EQ(solvable, static_cast<int>(files.size())); // every file is solved by some solver today
+}
+
+// solveWithChain's "auto" (the entry point for the chain's users): the built-in chain of the class, then the
+// other names not already in it.
+TEST(Portfolio, AutoInAChainExpandsToTheBuiltinChain) {
+  GeneratorParams gp;
+  gp.n = 12;
+  const Problem p = generate("random_box", gp, 1);
+  const std::vector<std::string>& chain = builtinPortfolio().chainFor(classify(p).name());
+  ASSERT_FALSE(chain.empty());
+  std::vector<Attempt> att;
+  const Result r = solveWithChain(p, {"auto"}, ChainOptions{}, &att);
+  ASSERT_TRUE(r.ok()) << describeAttempts(att);
+  EXPECT_EQ(att[0].solver, chain[0]);
+  // A failing solver first, then auto: its chain follows.
+  const Result f = solveWithChain(makeLcp(mat2(0, 1, -1, 0), Vec::Constant(2, 1.0)), {"pgs", "auto"},
+                                  ChainOptions{}, &att);
+  EXPECT_TRUE(f.ok()); // z = 0 solves it (q >= 0)
+  EXPECT_GE(att.size(), 1u);
+}
