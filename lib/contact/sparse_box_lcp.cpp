@@ -1,0 +1,157 @@
+// PGS and active-set Newton on the sparse contact box LCP (see sparse_box_lcp.hpp).
+#include "contact/sparse_box_lcp.hpp"
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+
+namespace suite::contact {
+
+namespace {
+// (J M^-1 J^T)_ii.
+double bareDiagonal(const JRow& J) {
+  return (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
+}
+
+double activeNormInf(const SparseBoxLcp& p, const lcp::Vec& v) {
+  double m = 0.0;
+  for (int i = 0; i < p.size(); ++i)
+    if (p.active(i)) m = std::max(m, std::abs(v[i]));
+  return m;
+}
+
+enum class RowState : signed char { Lower, Upper, Free };
+
+// States read off z - w (as lcp::statesFromSolution); inactive rows at their (zero) bound.
+std::vector<RowState> readStates(const SparseBoxLcp& p, const lcp::Vec& z, const lcp::Vec& w) {
+  std::vector<RowState> s(p.size(), RowState::Lower);
+  for (int i = 0; i < p.size(); ++i) {
+    if (!p.active(i)) continue;
+    const double t = z[i] - w[i];
+    s[i] = t <= p.l[i] ? RowState::Lower : t >= p.u[i] ? RowState::Upper : RowState::Free;
+  }
+  return s;
+}
+
+// z for the states: z_N at its bounds, A_FF z_F = -(b_F + A_FN z_N) by sparse LDL^T (+ one refinement).
+bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* z) {
+  const int n = p.size();
+  std::vector<int> pos(n, -1), F;
+  for (int i = 0; i < n; ++i) {
+    if (s[i] == RowState::Free) pos[i] = (int)F.size(), F.push_back(i);
+    (*z)[i] = s[i] == RowState::Free ? 0.0 : s[i] == RowState::Lower ? p.l[i] : p.u[i];
+  }
+  if (F.empty()) return true;
+  lcp::Vec t;
+  sparseResidual(p, *z, &t); // t = A z_N + b (z_F = 0)
+  std::vector<Eigen::Triplet<double>> trip;
+  lcp::Vec rhs(F.size());
+  for (size_t a = 0; a < F.size(); ++a) {
+    rhs[a] = -t[F[a]];
+    for (SpMat::InnerIterator it(*p.A, F[a]); it; ++it)
+      if (pos[it.col()] >= 0) trip.emplace_back((int)a, pos[it.col()], it.value());
+  }
+  Eigen::SparseMatrix<double> K(F.size(), F.size());
+  K.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
+  if (ldlt.info() != Eigen::Success) return false;
+  lcp::Vec x = ldlt.solve(rhs);
+  x += ldlt.solve(rhs - K * x);
+  if (!x.allFinite()) return false;
+  for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
+  return true;
+}
+} // namespace
+
+SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
+                              lcp::Vec l, lcp::Vec u) {
+  SparseBoxLcp p;
+  p.rows = &rows;
+  p.A = &A;
+  p.nbodies = nbodies;
+  p.b = std::move(b), p.l = std::move(l), p.u = std::move(u);
+  p.reg.resize(p.size());
+  for (int i = 0; i < p.size(); ++i) p.reg[i] = A.coeff(i, i) - bareDiagonal(rows[i]);
+  p.link.assign(p.size(), -1);
+  p.coef.assign(p.size(), 0.0);
+  return p;
+}
+
+double sparseTolerance(const SparseBoxLcp& p, double rel_tol) {
+  return rel_tol * (1.0 + activeNormInf(p, p.b));
+}
+
+double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w_out) {
+  const V6s u = bodyImpulseVelocities(*p.rows, z, p.nbodies);
+  lcp::Vec w(p.size());
+  double r = 0.0;
+  for (int i = 0; i < p.size(); ++i) {
+    w[i] = rowVelocity((*p.rows)[i], u) + p.reg[i] * z[i] + p.b[i];
+    if (!p.active(i)) continue;
+    const double d = std::abs(z[i] - std::clamp(z[i] - w[i], p.lower(i, z), p.upper(i, z)));
+    r = std::isnan(d) ? lcp::kInf : std::max(r, d);
+  }
+  if (w_out) *w_out = std::move(w);
+  return r;
+}
+
+std::vector<int> heightOrder(const std::vector<Contact>& cs, const Vec3& gravity, int per) {
+  std::vector<int> c(cs.size()), rows;
+  for (size_t i = 0; i < cs.size(); ++i) c[i] = (int)i;
+  std::stable_sort(c.begin(), c.end(),
+                   [&](int a, int b) { return -gravity.dot(cs[a].p) < -gravity.dot(cs[b].p); });
+  for (int i : c)
+    for (int k = 0; k < per; ++k) rows.push_back(i * per + k);
+  return rows;
+}
+
+int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* zp) {
+  lcp::Vec& z = *zp;
+  const std::vector<JRow>& rows = *p.rows;
+  V6s u = bodyImpulseVelocities(rows, z, p.nbodies);
+  lcp::Vec diag(p.size());
+  for (int i = 0; i < p.size(); ++i) diag[i] = bareDiagonal(rows[i]) + p.reg[i];
+  int k = 0;
+  for (double change = lcp::kInf; k < max_sweeps && !(change <= tol); ++k) {
+    change = 0.0;
+    for (int k = 0; k < p.size(); ++k) {
+      const int i = p.order.empty() ? k : p.order[k];
+      if (!p.active(i) || !(diag[i] > 0)) continue;
+      const double w = rowVelocity(rows[i], u) + p.reg[i] * z[i] + p.b[i];
+      const double zi = std::clamp(z[i] - w / diag[i], p.lower(i, z), p.upper(i, z));
+      const double dz = zi - z[i];
+      if (dz == 0.0) continue;
+      addRowImpulse(rows[i], dz, &u);
+      z[i] = zi;
+      change = std::max(change, std::abs(dz));
+    }
+  }
+  return k;
+}
+
+bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
+                    bool solve_once) {
+  st->tolerance = sparseTolerance(p, rel_tol);
+  lcp::Vec w, best = *z;
+  st->residual = sparseResidual(p, *z, &w);
+  std::vector<RowState> prev;
+  for (int it = 0; it < max_it && (!(st->residual <= st->tolerance) || (solve_once && it == 0)); ++it) {
+    const std::vector<RowState> s = readStates(p, *z, w);
+    if (!prev.empty()) {
+      if (s == prev) break; // no new index set: the iteration stalls
+      for (size_t i = 0; i < s.size(); ++i) st->pivots += s[i] != prev[i];
+    }
+    lcp::Vec cand(p.size());
+    ++st->factorizations;
+    if (!solveFree(p, s, &cand)) break;
+    prev = s;
+    const double r = sparseResidual(p, cand, &w);
+    *z = cand;
+    if (r < st->residual || (solve_once && it == 0 && r <= st->tolerance)) st->residual = r, best = cand;
+  }
+  *z = best;
+  return st->residual <= st->tolerance;
+}
+
+} // namespace suite::contact
