@@ -58,9 +58,9 @@ void setBounds(const ContactStep& step, const StepperOptions& o, int per, Sparse
   }
 }
 
-// Balanced: the bounds frozen at mu lambda_n of z, at most 4 active-set factorisations; z kept if its
+// The bounds frozen at mu lambda_n of z, at most max_fact active-set factorisations; z kept if its
 // residual on p (the coupled bounds) is lower.
-void polish(const SparseBoxLcp& p, const StepperOptions& o, lcp::Vec* z, StepStats* st) {
+void polish(const SparseBoxLcp& p, const StepperOptions& o, int max_fact, lcp::Vec* z, StepStats* st) {
   SparseBoxLcp fixed = p;
   for (size_t r = 0; r < p.link.size(); ++r)
     if (p.link[r] >= 0) {
@@ -69,7 +69,7 @@ void polish(const SparseBoxLcp& p, const StepperOptions& o, lcp::Vec* z, StepSta
     }
   lcp::Vec cand = *z;
   SparseSolveStats ss;
-  activeSetSolve(fixed, 4, o.lcp_tol, &cand, &ss);
+  activeSetSolve(fixed, max_fact, o.lcp_tol, &cand, &ss, true);
   st->factorizations += ss.factorizations;
   st->pivots += ss.pivots;
   if (sparseResidual(p, cand) < sparseResidual(p, *z)) *z = cand;
@@ -90,7 +90,7 @@ bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const St
   const int sweeps = pgsSweeps(p, budget, sparseTolerance(p, o.lcp_tol), &z);
   st->iterations += sweeps;
   st->budget_stop = sweeps >= budget;
-  if (o.accuracy == ContactAccuracy::Balanced) polish(p, o, &z, st);
+  polish(p, o, o.accuracy == ContactAccuracy::Fast ? 1 : 4, &z, st);
   st->residual = sparseResidual(p, z);
   st->rows = n;
   st->solver = std::string("pgs_") + accuracyName(o.accuracy);

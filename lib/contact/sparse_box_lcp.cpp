@@ -57,7 +57,7 @@ bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* 
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
   if (ldlt.info() != Eigen::Success) return false;
   lcp::Vec x = ldlt.solve(rhs);
-  x += ldlt.solve(rhs - K * x);
+  for (int k = 0; k < 3; ++k) x += ldlt.solve(rhs - K * x);
   if (!x.allFinite()) return false;
   for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
   return true;

@@ -217,7 +217,10 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   problems_.clear();
   solution_.resize(0);
   const int nb = (int)bodies.size();
-  contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt);
+  // balanced / fast: tangent frames from gravity only (never along the slip), so that the carried tangential
+  // impulses of a PGS answer, which always slips a little, keep their directions from step to step
+  const double slip_eps = o_.accuracy == ContactAccuracy::Exact ? 1e-9 : lcp::kInf;
+  contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt, slip_eps);
   const int nc = (int)contacts_.size();
   st.contacts = nc;
   for (const Contact& c : contacts_) st.penetration = std::max(st.penetration, -c.phi);
