@@ -80,7 +80,7 @@ lcp::Problem activeProblem(const lcp::Mat& A, const DelassusSystem& sys, double 
   return any_t ? lcp::makeBox(M, q, l, u, "contact") : lcp::makeLcp(M, q, "contact");
 }
 // Sweeps before the sparse active-set solve of an exact pass, and its factorisation cap.
-constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20;
+constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, kRetryFactorizations = 40;
 
 // The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
 // by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
@@ -93,6 +93,7 @@ bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double r
     l[r] = r % s.per == 0 ? 0.0 : -bound, u[r] = bound;
   }
   SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
+  p.mass = &sys.mass;
   lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
   SparseSolveStats ss;
   // the sweeps only from a poor start; the answer always from at least one exact solve on its index sets
@@ -101,7 +102,7 @@ bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double r
   bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, true);
   if (!ok) { // a second try from a closer start: many more (cheap) sweeps
     ss.sweeps += pgsSweeps(p, kRetrySweeps, 0.0, &z);
-    ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, true);
+    ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, true);
   }
   st->iterations += ss.sweeps + ss.factorizations;
   st->pivots += ss.pivots;

@@ -81,8 +81,10 @@ bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const St
   const int nc = (int)step.contacts.size(), n = (int)sys.rows.size(), per = nc ? n / nc : 1;
   lcp::Vec l = lcp::Vec::Zero(n), u = lcp::Vec::Constant(n, lcp::kInf);
   SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
+  p.mass = &sys.mass;
   if (per == 3) setBounds(step, o, per, &p);
   p.order = heightOrder(step.contacts, o.gravity, per);
+  p.symmetric = true; // up the stack (support) and down (weight) in turn
   lcp::Vec z(n);
   for (int i = 0; i < nc; ++i)
     for (int k = 0; k < per; ++k) z[i * per + k] = o.warm_start && step.has_prev[i] ? step.prev[i][k] : 0.0;

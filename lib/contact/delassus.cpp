@@ -1,6 +1,7 @@
 // The Delassus system of the contact constraints (see delassus.hpp).
 #include "contact/delassus.hpp"
 
+#include "contact/body_space_solve.hpp"
 #include "contact/delassus_sparse.hpp"
 #include "contact/stepper.hpp"
 
@@ -79,6 +80,7 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
   for (int r = 0; r < n; ++r) scale[r] = rows[r].normal ? o.regularisation : o.regularisation_t;
   if (sparse) {
     s.S = sparseDelassus(s.rows, s.nbodies, scale);
+    s.mass = bodyMassMatrices(bodies, inv_i);
     return s;
   }
   s.A = delassusMatrix(s.rows);

@@ -33,6 +33,7 @@ struct JRow {
 };
 
 using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+using M6 = Eigen::Matrix<double, 6, 6>;
 
 // A dense (sparse false) or sparse in S (delassus_sparse.hpp; A left empty, denseDelassus() forms it).
 struct DelassusSystem {
@@ -42,6 +43,7 @@ struct DelassusSystem {
   bool sparse = false;
   SpMat S;
   int nbodies = 0;
+  std::vector<M6> mass; // sparse: the body mass matrices diag(m I, I_world) (zero for static bodies)
 };
 
 // inv_i: world inverse inertia per body (0 for static ones); vstar: velocities after the external forces.

@@ -1,6 +1,8 @@
 // PGS and active-set Newton on the sparse contact box LCP (see sparse_box_lcp.hpp).
 #include "contact/sparse_box_lcp.hpp"
 
+#include "contact/body_space_solve.hpp"
+
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -34,7 +36,10 @@ std::vector<RowState> readStates(const SparseBoxLcp& p, const lcp::Vec& z, const
   return s;
 }
 
-// z for the states: z_N at its bounds, A_FF z_F = -(b_F + A_FN z_N) by sparse LDL^T (+ one refinement).
+bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::vector<int>& pos,
+                   const lcp::Vec& rhs, lcp::Vec* x);
+
+// z for the states: z_N at its bounds, A_FF z_F = -(b_F + A_FN z_N) in body space, else by sparse LDL^T.
 bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* z) {
   const int n = p.size();
   std::vector<int> pos(n, -1), F;
@@ -43,12 +48,21 @@ bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* 
     (*z)[i] = s[i] == RowState::Free ? 0.0 : s[i] == RowState::Lower ? p.l[i] : p.u[i];
   }
   if (F.empty()) return true;
-  lcp::Vec t;
+  lcp::Vec t, x;
   sparseResidual(p, *z, &t); // t = A z_N + b (z_F = 0)
-  std::vector<Eigen::Triplet<double>> trip;
   lcp::Vec rhs(F.size());
+  for (size_t a = 0; a < F.size(); ++a) rhs[a] = -t[F[a]];
+  if (!(p.mass && bodySpaceSolve(*p.rows, *p.mass, p.reg, F, rhs, &x)) && !rowSpaceSolve(p, F, pos, rhs, &x))
+    return false;
+  for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
+  return true;
+}
+
+// A_FF x = rhs by a sparse LDL^T of A_FF (+ refinement).
+bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::vector<int>& pos,
+                   const lcp::Vec& rhs, lcp::Vec* xp) {
+  std::vector<Eigen::Triplet<double>> trip;
   for (size_t a = 0; a < F.size(); ++a) {
-    rhs[a] = -t[F[a]];
     for (SpMat::InnerIterator it(*p.A, F[a]); it; ++it)
       if (pos[it.col()] >= 0) trip.emplace_back((int)a, pos[it.col()], it.value());
   }
@@ -56,11 +70,10 @@ bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* 
   K.setFromTriplets(trip.begin(), trip.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
   if (ldlt.info() != Eigen::Success) return false;
-  lcp::Vec x = ldlt.solve(rhs);
+  lcp::Vec& x = *xp;
+  x = ldlt.solve(rhs);
   for (int k = 0; k < 3; ++k) x += ldlt.solve(rhs - K * x);
-  if (!x.allFinite()) return false;
-  for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
-  return true;
+  return x.allFinite();
 }
 } // namespace
 
@@ -112,11 +125,13 @@ int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* zp) {
   V6s u = bodyImpulseVelocities(rows, z, p.nbodies);
   lcp::Vec diag(p.size());
   for (int i = 0; i < p.size(); ++i) diag[i] = bareDiagonal(rows[i]) + p.reg[i];
-  int k = 0;
-  for (double change = lcp::kInf; k < max_sweeps && !(change <= tol); ++k) {
+  const int n = p.size();
+  int sweep = 0;
+  for (double change = lcp::kInf; sweep < max_sweeps && !(change <= tol); ++sweep) {
     change = 0.0;
-    for (int k = 0; k < p.size(); ++k) {
-      const int i = p.order.empty() ? k : p.order[k];
+    for (int k = 0; k < n; ++k) {
+      const int j = p.symmetric && sweep % 2 ? n - 1 - k : k; // symmetric: every other sweep backwards
+      const int i = p.order.empty() ? j : p.order[j];
       if (!p.active(i) || !(diag[i] > 0)) continue;
       const double w = rowVelocity(rows[i], u) + p.reg[i] * z[i] + p.b[i];
       const double zi = std::clamp(z[i] - w / diag[i], p.lower(i, z), p.upper(i, z));
@@ -127,7 +142,7 @@ int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* zp) {
       change = std::max(change, std::abs(dz));
     }
   }
-  return k;
+  return sweep;
 }
 
 bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,

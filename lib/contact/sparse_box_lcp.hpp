@@ -8,7 +8,8 @@
 //               with temporal coherence", GDC 2005 (sequential impulses with warm starting).
 //   activeSet   active-set Newton (block principal pivoting without the Murty backup; Judice & Pires,
 //               Comput. Oper. Res. 21 (1994)) from the states read off z - w: the free rows solved with a
-//               sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering), one step of refinement.
+//               body-space factorisation (body_space_solve.hpp) when the compliance is positive and the
+//               masses are given, else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
 // The residual is the natural-map residual of lcp/problem.hpp, so an answer is accepted by the same rule as
 // the dense chain's.
 #pragma once
@@ -22,10 +23,12 @@ struct SparseBoxLcp {
   const std::vector<JRow>* rows = nullptr;
   const SpMat* A = nullptr; // the sparse Delassus matrix (regularised diagonal included)
   int nbodies = 0;
-  lcp::Vec b, l, u, reg; // reg: the compliance part of A_ii (A_ii - (J M^-1 J^T)_ii)
+  const std::vector<M6>* mass = nullptr; // body mass matrices: free rows solved in body space when given
+  lcp::Vec b, l, u, reg;                 // reg: the compliance part of A_ii (A_ii - (J M^-1 J^T)_ii)
   std::vector<int> link; // coupled bounds: row link[i] >= 0 gives |z_i| <= coef[i] z_link (else l, u)
   std::vector<double> coef;
   std::vector<int> order; // PGS row order (empty: 0..n-1)
+  bool symmetric = false; // PGS: every other sweep in the reverse order (symmetric Gauss-Seidel)
   int size() const { return (int)b.size(); }
   bool active(int i) const { return link[i] >= 0 ? coef[i] > 0 : !(l[i] == 0 && u[i] == 0); }
   double lower(int i, const lcp::Vec& z) const { return link[i] >= 0 ? -coef[i] * z[link[i]] : l[i]; }

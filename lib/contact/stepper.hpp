@@ -83,8 +83,9 @@ struct StepperOptions {
       0; // balanced / fast: PGS sweeps per step (0: the mode's default, contact_accuracy.hpp)
   // exact: problems of more rows than this use the sparse Delassus matrix and the sparse solvers
   // (sparse_box_lcp.hpp) first, the dense chain as their fallback; at most this many rows, the dense path
-  // only. Measured crossover (box stacks and pyramids, see contact_accuracy.hpp).
-  int dense_max_rows = 400;
+  // only. Measured (scripts/bench/contact-crossover, ms per step dense / sparse): box_stack 5 (60 rows)
+  // 0.068 / 0.088, pyramid 3 (108) 0.23 / 0.15, box_stack 10 (120) 0.25 / 0.20, pyramid 5 (300) 2.2 / 0.56.
+  int dense_max_rows = 100;
   // Sleeping (off by default): a dynamic body whose |v| + |w| r stays below sleep_velocity for sleep_steps
   // steps sleeps: it is not integrated and acts as a static body in the contacts of awake bodies; contacts
   // between sleeping (or sleeping and static) bodies are not solved. It wakes when an awake dynamic body
