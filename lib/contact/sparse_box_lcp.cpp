@@ -75,6 +75,31 @@ bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::
   for (int k = 0; k < 3; ++k) x += ldlt.solve(rhs - K * x);
   return x.allFinite();
 }
+// Block principal pivoting's exchange rule with its backup (Judice & Pires 1994): every infeasible row
+// changes state while the number of infeasible rows keeps falling (3 tries without a new low allowed), else
+// only the last infeasible row (Murty's least-index rule, finite for a positive definite A).
+struct ExchangeRule {
+  long long best = -1;
+  int tries = 3;
+  // cur <- the next states from the states read off the exact solve; returns the rows changed.
+  long long exchange(const std::vector<RowState>& read, std::vector<RowState>* cur) {
+    long long infeasible = 0;
+    int last = -1;
+    for (size_t i = 0; i < read.size(); ++i)
+      if (read[i] != (*cur)[i]) ++infeasible, last = (int)i;
+    if (infeasible == 0) return 0;
+    if (best < 0 || infeasible < best) {
+      best = infeasible, tries = 3;
+    } else if (tries == 0) {
+      (*cur)[last] = read[last];
+      return 1;
+    } else {
+      --tries;
+    }
+    *cur = read;
+    return infeasible;
+  }
+};
 } // namespace
 
 SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
@@ -150,20 +175,19 @@ bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec*
   st->tolerance = sparseTolerance(p, rel_tol);
   lcp::Vec w, best = *z;
   st->residual = sparseResidual(p, *z, &w);
-  std::vector<RowState> prev;
+  std::vector<RowState> cur = readStates(p, *z, w);
+  ExchangeRule rule;
   for (int it = 0; it < max_it && (!(st->residual <= st->tolerance) || (solve_once && it == 0)); ++it) {
-    const std::vector<RowState> s = readStates(p, *z, w);
-    if (!prev.empty()) {
-      if (s == prev) break; // no new index set: the iteration stalls
-      for (size_t i = 0; i < s.size(); ++i) st->pivots += s[i] != prev[i];
-    }
     lcp::Vec cand(p.size());
     ++st->factorizations;
-    if (!solveFree(p, s, &cand)) break;
-    prev = s;
+    if (!solveFree(p, cur, &cand)) break;
     const double r = sparseResidual(p, cand, &w);
     *z = cand;
     if (r < st->residual || (solve_once && it == 0 && r <= st->tolerance)) st->residual = r, best = cand;
+    const std::vector<RowState> next = readStates(p, cand, w);
+    const long long changed = rule.exchange(next, &cur);
+    if (changed == 0) break; // the states of the exact solve are consistent: nothing left to exchange
+    st->pivots += changed;
   }
   *z = best;
   return st->residual <= st->tolerance;
