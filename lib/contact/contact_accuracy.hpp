@@ -4,10 +4,11 @@
 //             box_lcp.cpp), with its fallbacks; a step no solver answers ends the run.
 //   balanced  one box LCP per step with the Coulomb bounds |lambda_t| <= mu lambda_n read from the current
 //             normal impulse during the sweeps (splitting; box / scaled_box: their estimates), solved by at
-//             most -contact_sweeps (default 50) projected Gauss-Seidel sweeps, matrix-free, warm-started from
-//             the previous step's matching contacts, then at most 4 sparse active-set factorisations with the
-//             bounds frozen at mu lambda_n (kept only if they lower the residual).
-//   fast      the same sweeps, at most -contact_sweeps (default 10), no active-set solve.
+//             most -contact_sweeps (default 50) symmetric projected Gauss-Seidel sweeps in height order,
+//             matrix-free, warm-started from the previous step's matching contacts, then one splitting pass:
+//             the bounds frozen at mu lambda_n and at most 4 sparse active-set factorisations (its answer kept
+//             when it solves that pass or lowers the residual).
+//   fast      the same with at most 10 sweeps (-contact_sweeps) and 1 factorisation.
 // balanced and fast never end the run for accuracy: the step goes on and its natural-map residual
 // (complementarity error, of the box LCP with the bounds mu lambda_n of the answer), cone violation and
 // penetration are recorded (StepStats, /steps in the output). Sequential impulses with warm starting: Catto,
