@@ -97,8 +97,9 @@ bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double r
   lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
   SparseSolveStats ss;
   // the sweeps only from a poor start; the answer always from at least one exact solve on its index sets
-  if (!(sparseResidual(p, z) <= 1e-3 * (1.0 + p.b.lpNorm<Eigen::Infinity>())))
-    ss.sweeps = pgsSweeps(p, kExactSweeps, 0.0, &z);
+  const double poor = 1e-3 * (1.0 + p.b.lpNorm<Eigen::Infinity>());
+  if (!(sparseResidual(p, z) <= poor)) freeStart(p, &z, &ss);
+  if (!(sparseResidual(p, z) <= poor)) ss.sweeps = pgsSweeps(p, kExactSweeps, 0.0, &z);
   bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, true);
   if (!ok) { // a second try from a closer start: many more (cheap) sweeps
     ss.sweeps += pgsSweeps(p, kRetrySweeps, 0.0, &z);
@@ -145,6 +146,20 @@ bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::s
   }
   s->full = next;
   return true;
+}
+
+std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per) {
+  const int n = nc * per;
+  const lcp::Vec l = lcp::Vec::Constant(n, -lcp::kInf), u = lcp::Vec::Constant(n, lcp::kInf);
+  const SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
+  SparseBoxLcp q = p;
+  q.mass = &sys.mass;
+  lcp::Vec z = lcp::Vec::Zero(n);
+  SparseSolveStats st;
+  std::vector<double> nu(nc, 0.0);
+  if (!freeStart(q, &z, &st)) return nu;
+  for (int i = 0; i < nc; ++i) nu[i] = std::max(0.0, z[i * per]);
+  return nu;
 }
 
 void boxImpulses(const BoxRows& s, Impulses* out) {

@@ -170,6 +170,17 @@ int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* zp) {
   return sweep;
 }
 
+bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st) {
+  std::vector<RowState> s(p.size(), RowState::Lower);
+  for (int i = 0; i < p.size(); ++i)
+    if (p.active(i)) s[i] = RowState::Free;
+  lcp::Vec cand(p.size());
+  ++st->factorizations;
+  if (!solveFree(p, s, &cand) || !(sparseResidual(p, cand) < sparseResidual(p, *z))) return false;
+  *z = cand;
+  return true;
+}
+
 bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
                     bool solve_once) {
   st->tolerance = sparseTolerance(p, rel_tol);

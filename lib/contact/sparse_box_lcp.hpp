@@ -56,6 +56,10 @@ double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w = nu
 std::vector<int> heightOrder(const std::vector<Contact>& cs, const Vec3& gravity, int per);
 // Up to max_sweeps PGS sweeps from z, stopping after a sweep whose max |change| is <= tol. Returns sweeps.
 int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* z);
+// Cold start of the active set (fixed bounds): the answer with every active row free (z = -A^-1 b on them, one
+// factorisation: exact for a structure at rest with every contact pressed and sticking) replaces z when its
+// residual is lower. Returns whether it did.
+bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st);
 // Active-set Newton from z (fixed bounds only), at most max_it factorisations; z <- the best iterate.
 // true: residual <= rel_tol (1 + |b|_inf) (st: counts, residual). solve_once: at least one exact solve even
 // when z already meets the tolerance (its answer then exact to round-off on the index sets of z).

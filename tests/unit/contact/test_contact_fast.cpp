@@ -109,6 +109,24 @@ TEST(ContactSparse, SparsePathAgreesWithDenseAboveCrossover) {
   EXPECT_LE(drift(bs, b0), 1e-6);
 }
 
+TEST(ContactWarmStart, FirstStepOfARestingPyramidCostsAtMostTenSteadySteps) {
+  auto b = scene("pyramid", 8); // 36 boxes, 768 rows: the sparse path
+  Stepper st(StepperOptions{});
+  std::vector<StepStats> s;
+  for (int k = 0; k < 10; ++k) {
+    s.push_back(st.step(&b));
+    ASSERT_FALSE(s.back().failed);
+  }
+  int steady = 0;
+  for (int k = 1; k < 10; ++k) steady = std::max(steady, s[k].factorizations);
+  std::printf("pyramid 8: step 1 %d factorisations, %d passes, %d fallbacks; steps 2-10 at most %d "
+              "factorisations\n",
+              s[0].factorizations, s[0].splitting_iterations, s[0].fallbacks, steady);
+  EXPECT_EQ(s[0].fallbacks, 0);
+  EXPECT_EQ(s[0].solver, "sparse_active_set");
+  EXPECT_LE(s[0].factorizations, 10 * steady);
+}
+
 TEST(ContactWarmStart, IdentitiesAndImpulsesCarried) {
   long long sweeps[2] = {0, 0};
   for (bool warm : {true, false}) {
