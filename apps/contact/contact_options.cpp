@@ -97,6 +97,25 @@ PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
   PetscFunctionReturn(0);
 }
 
+// The speed/accuracy trade (contact_accuracy.hpp) and the dense/sparse crossover.
+PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
+  std::string acc = accuracyName(t->accuracy);
+  PetscFunctionBeginUser;
+  PetscCall(suite::optionsChoice(r.po, "-contact_accuracy", "Contact accuracy (speed/accuracy trade)",
+                                 accuracyChoices(), &acc));
+  PetscCheck(accuracyFromName(acc, &t->accuracy), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-contact_accuracy %s: unknown", acc.c_str());
+  PetscCall(r.integer("-contact_sweeps", "balanced/fast: PGS sweeps per step (0: the mode's default)",
+                      &t->contact_sweeps));
+  PetscCall(r.integer("-contact_dense_max_rows",
+                      "exact: dense contact problems up to this many rows, sparse above",
+                      &t->dense_max_rows));
+  PetscCheck(t->accuracy == ContactAccuracy::Exact || t->friction != FrictionModel::Polyhedral, comm,
+             PETSC_ERR_ARG_OUTOFRANGE,
+             "-contact_accuracy %s: needs -friction none, box, scaled_box or splitting", acc.c_str());
+  PetscFunctionReturn(0);
+}
+
 // Integration, stabilisation, splitting, polyhedral cone and sleeping.
 PetscErrorCode stepperOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
   std::string start = splitStartName(t->split_start);
@@ -187,6 +206,8 @@ PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
       {"-sleep_velocity", t.sleep_velocity, '(', 0, inf, ']'},
       {"-sleep_steps", (double)t.sleep_steps, '[', 1, inf, ']', true},
       {"-overlap_tol", o.overlap_tol, '[', 0, inf, ']'},
+      {"-contact_sweeps", (double)t.contact_sweeps, '[', 0, inf, ']', true},
+      {"-contact_dense_max_rows", (double)t.dense_max_rows, '[', 0, inf, ']', true},
   };
   PetscFunctionBeginUser;
   for (const Range& c : ranges) PetscCall(checkRange(comm, c));
@@ -203,6 +224,7 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   PetscCall(sceneOptions(r, &o->scene));
   PetscCall(frictionOptions(r, comm, &o->step));
   PetscCall(stepperOptions(r, comm, &o->step));
+  PetscCall(accuracyOptions(r, comm, &o->step));
   PetscCall(runOptions(r, o));
   PetscOptionsEnd();
   PetscCall(checkRanges(comm, *o));

@@ -1,6 +1,8 @@
 // The box LCP of the contact rows (see box_lcp.hpp).
 #include "contact/box_lcp.hpp"
 
+#include "contact/sparse_box_lcp.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,8 +54,8 @@ std::vector<double> weightEstimates(const ContactStep& step, const StepperOption
 
 namespace {
 // The problem of the active rows (normals, and the tangents with a non-zero bound); warm: their impulses.
-lcp::Problem activeProblem(const DelassusSystem& sys, double mu, const BoxRows& s, std::vector<int>* active,
-                           lcp::Vec* warm) {
+lcp::Problem activeProblem(const lcp::Mat& A, const DelassusSystem& sys, double mu, const BoxRows& s,
+                           std::vector<int>* active, lcp::Vec* warm) {
   bool any_t = false;
   for (int i = 0; i < s.nc; ++i) {
     active->push_back(i * s.per);
@@ -67,7 +69,7 @@ lcp::Problem activeProblem(const DelassusSystem& sys, double mu, const BoxRows& 
   lcp::Vec q(n), l(n), u(n);
   warm->resize(n);
   for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) M(r, c) = sys.A((*active)[r], (*active)[c]);
+    for (int c = 0; c < n; ++c) M(r, c) = A((*active)[r], (*active)[c]);
     q[r] = sys.b[(*active)[r]];
     (*warm)[r] = s.full[(*active)[r]];
     const bool normal = (*active)[r] % s.per == 0;
@@ -77,17 +79,66 @@ lcp::Problem activeProblem(const DelassusSystem& sys, double mu, const BoxRows& 
   }
   return any_t ? lcp::makeBox(M, q, l, u, "contact") : lcp::makeLcp(M, q, "contact");
 }
+// Sweeps before the sparse active-set solve of an exact pass, and its factorisation cap.
+constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, kRetryFactorizations = 40;
+
+// The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
+// by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
+bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double rel_tol, lcp::Vec* next,
+                StepStats* st) {
+  const int n = s.nc * s.per;
+  lcp::Vec l(n), u(n);
+  for (int r = 0; r < n; ++r) {
+    const double bound = r % s.per == 0 ? lcp::kInf : mu * s.nu[r / s.per];
+    l[r] = r % s.per == 0 ? 0.0 : -bound, u[r] = bound;
+  }
+  SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
+  p.mass = &sys.mass;
+  lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
+  SparseSolveStats ss;
+  // the sweeps only from a poor start; the answer always from at least one exact solve on its index sets
+  const double poor = 1e-3 * (1.0 + p.b.lpNorm<Eigen::Infinity>());
+  if (!(sparseResidual(p, z) <= poor)) freeStart(p, &z, &ss);
+  if (!(sparseResidual(p, z) <= poor)) ss.sweeps = pgsSweeps(p, kExactSweeps, 0.0, &z);
+  bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, true);
+  if (!ok) { // a second try from a closer start: many more (cheap) sweeps
+    ss.sweeps += pgsSweeps(p, kRetrySweeps, 0.0, &z);
+    ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, true);
+  }
+  st->iterations += ss.sweeps + ss.factorizations;
+  st->pivots += ss.pivots;
+  st->factorizations += ss.factorizations;
+  st->fallbacks += !ok;
+  if (!ok) return false;
+  st->solver = "sparse_active_set";
+  st->residual = std::max(st->residual, ss.residual);
+  int rows = 0;
+  for (int r = 0; r < n; ++r) rows += p.active(r);
+  st->rows = rows;
+  *next = z;
+  return true;
+}
+
+// The pass on the dense Delassus matrix through the solver chain.
+bool densePass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, const BoxRows& s,
+               ChainSolve& solver, lcp::Vec* next, StepStats* st) {
+  std::vector<int> active;
+  lcp::Vec warm, z;
+  const lcp::Problem p = sys.sparse ? activeProblem(denseDelassus(sys), sys, mu, s, &active, &warm)
+                                    : activeProblem(sys.A, sys, mu, s, &active, &warm);
+  if (!solver.solve(p, chain, nullptr, &warm, &z)) return false;
+  st->rows = (int)active.size();
+  *next = lcp::Vec::Zero(s.nc * s.per);
+  for (size_t r = 0; r < active.size(); ++r) (*next)[active[r]] = z[r];
+  return true;
+}
 } // namespace
 
 bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,
                   ChainSolve& solver, BoxRows* s, double* err, double* nmax, StepStats* st) {
-  std::vector<int> active;
-  lcp::Vec warm, z;
-  const lcp::Problem p = activeProblem(sys, mu, *s, &active, &warm);
-  if (!solver.solve(p, chain, nullptr, &warm, &z)) return false;
-  st->rows = (int)active.size();
-  lcp::Vec next = lcp::Vec::Zero(s->nc * s->per);
-  for (size_t r = 0; r < active.size(); ++r) next[active[r]] = z[r];
+  lcp::Vec next;
+  const bool sparse_ok = sys.sparse && sparsePass(sys, mu, *s, solver.options().lcp_tol, &next, st);
+  if (!sparse_ok && !densePass(sys, mu, chain, *s, solver, &next, st)) return false;
   *err = 0.0, *nmax = 0.0;
   for (int i = 0; i < s->nc; ++i) {
     *err = std::max(*err, std::abs(next[i * s->per] - (first ? 0.0 : s->full[i * s->per])));
@@ -95,6 +146,20 @@ bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::s
   }
   s->full = next;
   return true;
+}
+
+std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per) {
+  const int n = nc * per;
+  const lcp::Vec l = lcp::Vec::Constant(n, -lcp::kInf), u = lcp::Vec::Constant(n, lcp::kInf);
+  const SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
+  SparseBoxLcp q = p;
+  q.mass = &sys.mass;
+  lcp::Vec z = lcp::Vec::Zero(n);
+  SparseSolveStats st;
+  std::vector<double> nu(nc, 0.0);
+  if (!freeStart(q, &z, &st)) return nu;
+  for (int i = 0; i < nc; ++i) nu[i] = std::max(0.0, z[i * per]);
+  return nu;
 }
 
 void boxImpulses(const BoxRows& s, Impulses* out) {

@@ -28,6 +28,9 @@ BoxRows initialBoxRows(const ContactStep& step, int per);
 // Estimate of the normal impulse from the weight: |g| dt times the mean over the contact's dynamic bodies
 // of mass / (contacts of the body).
 std::vector<double> weightEstimates(const ContactStep& step, const StepperOptions& o);
+// Sparse systems only: the normal impulses of the answer with every row free and unbounded (max(0, lambda_n);
+// one body-space factorisation), the exact load of a structure at rest with every contact pressed and sticking.
+std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per);
 // One pass: the box LCP with bounds mu nu, warm-started from s->full, solved; s->full <- its answer.
 // err: max |change of lambda_n| (first pass: max lambda_n), nmax: max |lambda_n|. false: not solved.
 bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,

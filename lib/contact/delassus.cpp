@@ -1,6 +1,8 @@
 // The Delassus system of the contact constraints (see delassus.hpp).
 #include "contact/delassus.hpp"
 
+#include "contact/body_space_solve.hpp"
+#include "contact/delassus_sparse.hpp"
 #include "contact/stepper.hpp"
 
 namespace suite::contact {
@@ -45,7 +47,15 @@ lcp::Mat delassusMatrix(const std::vector<JRow>& rows) {
 DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
                              const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
                              const std::vector<ConstraintRow>& rows, const StepperOptions& o) {
+  return buildDelassus(bodies, inv_i, vstar, cs, rows, o, false);
+}
+
+DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
+                             const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
+                             const std::vector<ConstraintRow>& rows, const StepperOptions& o, bool sparse) {
   DelassusSystem s;
+  s.sparse = sparse;
+  s.nbodies = (int)bodies.size();
   const int n = (int)rows.size();
   s.rows.resize(n);
   s.b.resize(n);
@@ -66,9 +76,20 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
     if (rows[r].normal) rhs += (c.phi >= 0 ? c.phi : o.baumgarte * c.phi) / o.dt;
     s.b[r] = rhs;
   }
+  std::vector<double> scale(n);
+  for (int r = 0; r < n; ++r) scale[r] = rows[r].normal ? o.regularisation : o.regularisation_t;
+  if (sparse) {
+    s.S = sparseDelassus(s.rows, s.nbodies, scale);
+    s.mass = bodyMassMatrices(bodies, inv_i);
+    return s;
+  }
   s.A = delassusMatrix(s.rows);
-  for (int r = 0; r < n; ++r) s.A(r, r) *= 1.0 + (rows[r].normal ? o.regularisation : o.regularisation_t);
+  for (int r = 0; r < n; ++r) s.A(r, r) *= 1.0 + scale[r];
   return s;
+}
+
+lcp::Mat denseDelassus(const DelassusSystem& sys) {
+  return sys.sparse ? lcp::Mat(sys.S) : sys.A;
 }
 
 void applyImpulses(const DelassusSystem& sys, const lcp::Vec& z, std::vector<Vec3>* v, std::vector<Vec3>* w) {

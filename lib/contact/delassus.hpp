@@ -9,6 +9,8 @@
 #include "contact/collision.hpp"
 #include "lcp/problem.hpp"
 
+#include <Eigen/Sparse>
+
 #include <vector>
 
 namespace suite::contact {
@@ -30,16 +32,30 @@ struct JRow {
   V6 ja = V6::Zero(), jb = V6::Zero(), ma = V6::Zero(), mb = V6::Zero();
 };
 
+using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+using M6 = Eigen::Matrix<double, 6, 6>;
+
+// A dense (sparse false) or sparse in S (delassus_sparse.hpp; A left empty, denseDelassus() forms it).
 struct DelassusSystem {
   std::vector<JRow> rows;
   lcp::Mat A;
   lcp::Vec b;
+  bool sparse = false;
+  SpMat S;
+  int nbodies = 0;
+  std::vector<M6> mass; // sparse: the body mass matrices diag(m I, I_world) (zero for static bodies)
 };
 
 // inv_i: world inverse inertia per body (0 for static ones); vstar: velocities after the external forces.
 DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
                              const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
                              const std::vector<ConstraintRow>& rows, const StepperOptions& o);
+// sparse: build S instead of A (the dense A only below the crossover, see StepperOptions::dense_max_rows).
+DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
+                             const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
+                             const std::vector<ConstraintRow>& rows, const StepperOptions& o, bool sparse);
+// The dense A of sys (sys.A, or formed from sys.S).
+lcp::Mat denseDelassus(const DelassusSystem& sys);
 // v += M^-1 J^T z, w += (M^-1 J^T z) angular part, over the rows of sys (z: one impulse per row).
 void applyImpulses(const DelassusSystem& sys, const lcp::Vec& z, std::vector<Vec3>* v, std::vector<Vec3>* w);
 

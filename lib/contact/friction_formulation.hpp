@@ -39,6 +39,7 @@ public:
   // false: no solver's answer was accepted (st->failed, st->message say which and why).
   bool solve(const lcp::Problem& p, const std::vector<std::string>& chain, const lcp::Vec* scale,
              const lcp::Vec* warm, lcp::Vec* z);
+  const StepperOptions& options() const { return o_; }
 
 private:
   const StepperOptions& o_;

@@ -1,6 +1,7 @@
 // Friction model "splitting" (Lacoursiere, SIGRAD 2003, sec. 4, operator splitting): repeat { solve the box
 // LCP with bounds mu nu; nu <- lambda_n } until max|delta lambda_n| <= tol (1 + |lambda_n|_inf) or the pass
 // cap, starting from nu = 0 (zero friction), +inf (infinite friction) or the previous step's normal impulses
+// (without them: the weight estimate, or on the sparse path the sticking estimate of box_lcp.hpp)
 // (-splitting_start). Each pass's change and force ratio are kept (StepStats::split_errors / split_ratios).
 #include "contact/box_lcp.hpp"
 
@@ -28,9 +29,10 @@ bool splitStartFromName(const std::string& name, SplitStart* s) {
 }
 
 std::vector<Choice> splitStartChoices() {
-  return {{"zero", "nu = 0: the first pass without friction"},
-          {"infinite", "nu = +inf: the first pass with sticking friction"},
-          {"previous", "nu = the previous step's normal impulse (else the weight estimate)"}};
+  return {
+      {"zero", "nu = 0: the first pass without friction"},
+      {"infinite", "nu = +inf: the first pass with sticking friction"},
+      {"previous", "nu = the previous step's normal impulse (else the weight / sparse: sticking estimate)"}};
 }
 
 namespace {
@@ -44,13 +46,20 @@ public:
                 StepStats* st) const override;
 
 private:
-  std::vector<double> startEstimates(const ContactStep& step) const;
+  std::vector<double> startEstimates(const ContactStep& step, const DelassusSystem& sys) const;
   const StepperOptions o_;
   const std::vector<std::string> chain_;
 };
 
-std::vector<double> SplittingFriction::startEstimates(const ContactStep& step) const {
-  std::vector<double> nu = weightEstimates(step, o_);
+std::vector<double> SplittingFriction::startEstimates(const ContactStep& step,
+                                                      const DelassusSystem& sys) const {
+  // contacts without a previous impulse: the weight estimate; on the sparse path (large problems, where a
+  // poor first estimate makes a first pass of thousands of pivots) the sticking estimate
+  bool all_prev = true;
+  for (bool h : step.has_prev) all_prev = all_prev && h;
+  const bool sticking = sys.sparse && o_.split_start == SplitStart::Previous && !all_prev && o_.mu > 0;
+  std::vector<double> nu =
+      sticking ? stickingEstimates(sys, (int)step.contacts.size(), 3) : weightEstimates(step, o_);
   for (size_t i = 0; i < nu.size(); ++i)
     nu[i] = o_.split_start == SplitStart::Zero       ? 0.0
             : o_.split_start == SplitStart::Infinite ? lcp::kInf
@@ -61,7 +70,7 @@ std::vector<double> SplittingFriction::startEstimates(const ContactStep& step) c
 bool SplittingFriction::impulses(const ContactStep& step, const DelassusSystem& sys, ChainSolve& solver,
                                  Impulses* out, StepStats* st) const {
   BoxRows s = initialBoxRows(step, o_.mu > 0 ? 3 : 1);
-  s.nu = startEstimates(step);
+  s.nu = startEstimates(step, sys);
   const int max_pass = std::max(1, o_.splitting_max_it);
   for (int pass = 0; pass < max_pass; ++pass) {
     double err = 0.0, nmax = 0.0, ratio = 0.0, viol = 0.0, fn = 0.0;

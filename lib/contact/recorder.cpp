@@ -30,6 +30,9 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   pivots.push_back(s.pivots);
   splitting_iterations.push_back(s.splitting_iterations);
   fallbacks.push_back(s.fallbacks);
+  factorizations.push_back(s.factorizations);
+  budget_stop.push_back(s.budget_stop);
+  penetration.push_back(s.penetration);
   force_ratio.push_back(s.force_ratio);
   cone_violation.push_back(s.cone_violation);
   residual.push_back(s.residual);

@@ -21,9 +21,11 @@ struct Recorder {
   std::vector<double> frame_time, pos, quat, vel; // F x nb x {3, 4, 6}
   std::vector<long long> frame_step;
   // per step
-  std::vector<int> contacts, sleeping, rows, solver_index, iterations, splitting_iterations, fallbacks;
+  std::vector<int> contacts, sleeping, rows, solver_index, iterations, splitting_iterations, fallbacks,
+      factorizations, budget_stop;
   std::vector<long long> pivots;
-  std::vector<double> time, force_ratio, cone_violation, residual, splitting_error, energy, step_wall;
+  std::vector<double> time, force_ratio, cone_violation, residual, splitting_error, energy, step_wall,
+      penetration;
   std::vector<std::string> solver_names;
   // splitting histories (flattened, offsets per step)
   std::vector<double> split_errors, split_ratios;

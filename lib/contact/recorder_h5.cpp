@@ -69,6 +69,9 @@ PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
     PetscCall(out.writeReplicated("/steps/splitting_error", rec.splitting_error.data(), {ns}, "N s"));
     PetscCall(out.writeReplicated("/steps/energy", rec.energy.data(), {ns}, "J"));
     PetscCall(out.writeReplicated("/steps/wall_time", rec.step_wall.data(), {ns}, "s"));
+    PetscCall(out.writeReplicated("/steps/factorizations", rec.factorizations.data(), {ns}, ""));
+    PetscCall(out.writeReplicated("/steps/budget_stop", rec.budget_stop.data(), {ns}, ""));
+    PetscCall(out.writeReplicated("/steps/penetration", rec.penetration.data(), {ns}, "m"));
   }
   std::string sn;
   for (size_t k = 0; k < rec.solver_names.size(); ++k) sn += (k ? "," : "") + rec.solver_names[k];

@@ -3,6 +3,7 @@
 // See stepper.hpp for the formulation, friction_formulation.hpp for the friction models.
 #include "contact/stepper.hpp"
 
+#include "contact/contact_accuracy.hpp"
 #include "contact/delassus.hpp"
 #include "contact/friction_formulation.hpp"
 
@@ -56,12 +57,13 @@ void forceMeasures(const std::vector<Contact>& cs, const std::vector<Vec3>& lam,
 }
 
 namespace {
-// Index of the contact of the previous step matching c (same pair, nearest point within tol), or -1.
-int matchPrevious(const std::vector<Contact>& prev, const Contact& c, double tol) {
+// Index of the contact of the previous step matching c (same pair, nearest point within tol), or -1;
+// candidates: the previous contacts of the pair, in increasing index order.
+int matchPrevious(const std::vector<Contact>& prev, const std::vector<int>& candidates, const Contact& c,
+                  double tol) {
   int best = -1;
   double bd = tol;
-  for (int i = 0; i < (int)prev.size(); ++i) {
-    if (prev[i].a != c.a || prev[i].b != c.b) continue;
+  for (int i : candidates) {
     const double d = (prev[i].p - c.p).norm();
     if (d <= bd) bd = d, best = i;
   }
@@ -111,6 +113,7 @@ void Stepper::importState(int nb, const std::vector<double>& bs, const std::vect
   }
   prev_contacts_.clear();
   prev_impulses_.clear();
+  prev_ids_.clear();
   for (size_t k = 0; k < cs.size(); k += 8) {
     Contact c;
     c.a = (int)cs[k];
@@ -157,18 +160,28 @@ StepStats Stepper::step(std::vector<Body>* bodies_ptr) {
   return st;
 }
 
-// Previous-step impulses of the matching contacts (warm start, scaled_box / splitting estimates).
+// Previous-step impulses of the matching contacts (warm start, scaled_box / splitting estimates) and the
+// persistent identities: a matched contact keeps its predecessor's id, a new one gets the next free id. The
+// previous contacts are bucketed by body pair (O(contacts) for a bounded number of points per pair).
 void Stepper::matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
-                                    std::vector<bool>* has_prev) const {
+                                    std::vector<bool>* has_prev) {
   const int nc = (int)contacts_.size();
   prev->assign(nc, Vec3::Zero());
   has_prev->assign(nc, false);
+  std::map<std::pair<int, int>, std::vector<int>> by_pair;
+  for (int i = 0; i < (int)prev_contacts_.size(); ++i)
+    by_pair[{prev_contacts_[i].a, prev_contacts_[i].b}].push_back(i);
+  std::vector<long long> ids(nc);
+  const std::vector<int> none;
   for (int i = 0; i < nc; ++i) {
     const Contact& c = contacts_[i];
     const double tol = 0.1 * std::min(bodies[c.a].boundingRadius(), bodies[c.b].boundingRadius());
-    const int k = matchPrevious(prev_contacts_, c, tol);
+    const auto it = by_pair.find({c.a, c.b});
+    const int k = matchPrevious(prev_contacts_, it == by_pair.end() ? none : it->second, c, tol);
     if (k >= 0) (*prev)[i] = prev_impulses_[k], (*has_prev)[i] = true;
+    ids[i] = k >= 0 && k < (int)prev_ids_.size() ? prev_ids_[k] : next_id_++;
   }
+  ids_ = std::move(ids);
 }
 
 // The impulses of the contacts (friction formulation on the Delassus system), applied to v*, w.
@@ -180,10 +193,19 @@ bool Stepper::solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* 
   std::vector<Vec3> prev;
   std::vector<bool> has_prev;
   matchPreviousImpulses(bodies, &prev, &has_prev);
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, contacts_, form_->rows(contacts_), o_);
-  ChainSolve solver(o_, keep_problems_, &problems_, &solution_, st);
+  const std::vector<ConstraintRow> rows = form_->rows(contacts_);
+  const bool exact = o_.accuracy == ContactAccuracy::Exact;
+  const bool sparse =
+      o_.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o_.dense_max_rows);
+  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, contacts_, rows, o_, sparse);
+  const ContactStep step{bodies, contacts_, prev, has_prev};
   Impulses imp;
-  if (!form_->impulses({bodies, contacts_, prev, has_prev}, sys, solver, &imp, st)) return false;
+  if (!exact) {
+    budgetImpulses(step, sys, o_, &imp, st);
+  } else {
+    ChainSolve solver(o_, keep_problems_, &problems_, &solution_, st);
+    if (!form_->impulses(step, sys, solver, &imp, st)) return false;
+  }
   applyImpulses(sys, imp.z, v, w);
   *lam = imp.lambda;
   return true;
@@ -195,14 +217,19 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   problems_.clear();
   solution_.resize(0);
   const int nb = (int)bodies.size();
-  contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt);
+  // balanced / fast: tangent frames from gravity only (never along the slip), so that the carried tangential
+  // impulses of a PGS answer, which always slips a little, keep their directions from step to step
+  const double slip_eps = o_.accuracy == ContactAccuracy::Exact ? 1e-9 : lcp::kInf;
+  contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt, slip_eps);
   const int nc = (int)contacts_.size();
   st.contacts = nc;
+  for (const Contact& c : contacts_) st.penetration = std::max(st.penetration, -c.phi);
   std::vector<Vec3> vstar(nb), wnew(nb), lam(nc, Vec3::Zero());
   for (int i = 0; i < nb; ++i) {
     vstar[i] = bodies[i].is_static ? bodies[i].v : Vec3(bodies[i].v + o_.dt * o_.gravity);
     wnew[i] = bodies[i].w;
   }
+  if (nc == 0) ids_.clear();
   if (nc > 0 && !solveContacts(bodies, &vstar, &wnew, &lam, &st)) return st;
   std::vector<Body> next = bodies;
   std::string bad;
@@ -216,6 +243,7 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   forceMeasures(contacts_, lam, o_.mu, &st.force_ratio, &st.cone_violation, &st.normal_impulse);
   prev_contacts_ = contacts_;
   prev_impulses_ = impulses_;
+  prev_ids_ = ids_;
   return st;
 }
 

@@ -32,6 +32,14 @@ const char* splitStartName(SplitStart s);
 bool splitStartFromName(const std::string& name, SplitStart* s);
 std::vector<Choice> splitStartChoices(); // the -splitting_start choices
 
+// -contact_accuracy (contact_accuracy.hpp): exact (every problem solved to the acceptance rule, fallbacks,
+// a failed step ends the run) or a per-step budget of PGS sweeps (balanced, fast) after which the step goes
+// on with its errors recorded.
+enum class ContactAccuracy { Exact = 0, Balanced = 1, Fast = 2 };
+const char* accuracyName(ContactAccuracy a);
+bool accuracyFromName(const std::string& name, ContactAccuracy* a);
+std::vector<Choice> accuracyChoices();
+
 class FrictionFormulation;
 
 struct StepperOptions {
@@ -70,6 +78,14 @@ struct StepperOptions {
   // exceed the polygon by eps * slip speed (relative cone violation ~ 0.3 eps on the log heap).
   double polyhedral_gamma_reg = 1e-8;
   bool warm_start = true;
+  ContactAccuracy accuracy = ContactAccuracy::Exact;
+  int contact_sweeps =
+      0; // balanced / fast: PGS sweeps per step (0: the mode's default, contact_accuracy.hpp)
+  // exact: problems of more rows than this use the sparse Delassus matrix and the sparse solvers
+  // (sparse_box_lcp.hpp) first, the dense chain as their fallback; at most this many rows, the dense path
+  // only. Measured (scripts/bench/contact-crossover, ms per step dense / sparse): box_stack 5 (60 rows)
+  // 0.068 / 0.088, pyramid 3 (108) 0.23 / 0.15, box_stack 10 (120) 0.25 / 0.20, pyramid 5 (300) 2.2 / 0.56.
+  int dense_max_rows = 100;
   // Sleeping (off by default): a dynamic body whose |v| + |w| r stays below sleep_velocity for sleep_steps
   // steps sleeps: it is not integrated and acts as a static body in the contacts of awake bodies; contacts
   // between sleeping (or sleeping and static) bodies are not solved. It wakes when an awake dynamic body
@@ -97,6 +113,9 @@ struct StepStats {
   std::vector<double> split_errors; // per pass: max|delta lambda_n| (pass 1: |lambda_n|_inf)
   std::vector<double> split_ratios; // force ratio after each pass
   int sleeping = 0;                 // bodies asleep during this step
+  int factorizations = 0;           // sparse factorisations (sparse active-set solves)
+  double penetration = 0.0;         // max(0, -phi) over the step's contacts (m)
+  bool budget_stop = false;         // balanced / fast: the sweeps ended at the budget, not the tolerance
   bool failed = false;
   std::string message; // failure: which solver, status, why
 };
@@ -122,13 +141,17 @@ public:
   // Throws std::runtime_error on inconsistent sizes or body indices.
   void importState(int nbodies, const std::vector<double>& body_state,
                    const std::vector<double>& contact_state);
+  // Persistent identity of each contact of the last step: the id of the previous step's contact it was
+  // matched to (same body pair, nearest point within 0.1 of the smaller bounding radius), else a new one.
+  // Not part of the checkpoint (renumbered after a restart; the physics does not depend on them).
+  const std::vector<long long>& contactIds() const { return ids_; }
   // The accepted solution z of the last problem solved (lastProblems().back() when the step succeeded).
   const lcp::Vec& lastSolution() const { return solution_; }
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
   void matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
-                             std::vector<bool>* has_prev) const;
+                             std::vector<bool>* has_prev);
   bool solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
                      std::vector<Vec3>* lam, StepStats* st);
   StepperOptions o_;
@@ -139,6 +162,8 @@ private:
   std::vector<Vec3> impulses_;
   std::vector<Contact> prev_contacts_;
   std::vector<Vec3> prev_impulses_;
+  std::vector<long long> ids_, prev_ids_; // persistent contact identities (contactIds())
+  long long next_id_ = 0;
   std::vector<lcp::Problem> problems_;
   lcp::Vec solution_;
   bool keep_problems_ = false;

@@ -1,0 +1,207 @@
+// PGS and active-set Newton on the sparse contact box LCP (see sparse_box_lcp.hpp).
+#include "contact/sparse_box_lcp.hpp"
+
+#include "contact/body_space_solve.hpp"
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+
+namespace suite::contact {
+
+namespace {
+// (J M^-1 J^T)_ii.
+double bareDiagonal(const JRow& J) {
+  return (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
+}
+
+double activeNormInf(const SparseBoxLcp& p, const lcp::Vec& v) {
+  double m = 0.0;
+  for (int i = 0; i < p.size(); ++i)
+    if (p.active(i)) m = std::max(m, std::abs(v[i]));
+  return m;
+}
+
+enum class RowState : signed char { Lower, Upper, Free };
+
+// States read off z - w (as lcp::statesFromSolution); inactive rows at their (zero) bound.
+std::vector<RowState> readStates(const SparseBoxLcp& p, const lcp::Vec& z, const lcp::Vec& w) {
+  std::vector<RowState> s(p.size(), RowState::Lower);
+  for (int i = 0; i < p.size(); ++i) {
+    if (!p.active(i)) continue;
+    const double t = z[i] - w[i];
+    s[i] = t <= p.l[i] ? RowState::Lower : t >= p.u[i] ? RowState::Upper : RowState::Free;
+  }
+  return s;
+}
+
+bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::vector<int>& pos,
+                   const lcp::Vec& rhs, lcp::Vec* x);
+
+// z for the states: z_N at its bounds, A_FF z_F = -(b_F + A_FN z_N) in body space, else by sparse LDL^T.
+bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* z) {
+  const int n = p.size();
+  std::vector<int> pos(n, -1), F;
+  for (int i = 0; i < n; ++i) {
+    if (s[i] == RowState::Free) pos[i] = (int)F.size(), F.push_back(i);
+    (*z)[i] = s[i] == RowState::Free ? 0.0 : s[i] == RowState::Lower ? p.l[i] : p.u[i];
+  }
+  if (F.empty()) return true;
+  lcp::Vec t, x;
+  sparseResidual(p, *z, &t); // t = A z_N + b (z_F = 0)
+  lcp::Vec rhs(F.size());
+  for (size_t a = 0; a < F.size(); ++a) rhs[a] = -t[F[a]];
+  if (!(p.mass && bodySpaceSolve(*p.rows, *p.mass, p.reg, F, rhs, &x)) && !rowSpaceSolve(p, F, pos, rhs, &x))
+    return false;
+  for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
+  return true;
+}
+
+// A_FF x = rhs by a sparse LDL^T of A_FF (+ refinement).
+bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::vector<int>& pos,
+                   const lcp::Vec& rhs, lcp::Vec* xp) {
+  std::vector<Eigen::Triplet<double>> trip;
+  for (size_t a = 0; a < F.size(); ++a) {
+    for (SpMat::InnerIterator it(*p.A, F[a]); it; ++it)
+      if (pos[it.col()] >= 0) trip.emplace_back((int)a, pos[it.col()], it.value());
+  }
+  Eigen::SparseMatrix<double> K(F.size(), F.size());
+  K.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
+  if (ldlt.info() != Eigen::Success) return false;
+  lcp::Vec& x = *xp;
+  x = ldlt.solve(rhs);
+  for (int k = 0; k < 3; ++k) x += ldlt.solve(rhs - K * x);
+  return x.allFinite();
+}
+// Block principal pivoting's exchange rule with its backup (Judice & Pires 1994): every infeasible row
+// changes state while the number of infeasible rows keeps falling (3 tries without a new low allowed), else
+// only the last infeasible row (Murty's least-index rule, finite for a positive definite A).
+struct ExchangeRule {
+  long long best = -1;
+  int tries = 3;
+  // cur <- the next states from the states read off the exact solve; returns the rows changed.
+  long long exchange(const std::vector<RowState>& read, std::vector<RowState>* cur) {
+    long long infeasible = 0;
+    int last = -1;
+    for (size_t i = 0; i < read.size(); ++i)
+      if (read[i] != (*cur)[i]) ++infeasible, last = (int)i;
+    if (infeasible == 0) return 0;
+    if (best < 0 || infeasible < best) {
+      best = infeasible, tries = 3;
+    } else if (tries == 0) {
+      (*cur)[last] = read[last];
+      return 1;
+    } else {
+      --tries;
+    }
+    *cur = read;
+    return infeasible;
+  }
+};
+} // namespace
+
+SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
+                              lcp::Vec l, lcp::Vec u) {
+  SparseBoxLcp p;
+  p.rows = &rows;
+  p.A = &A;
+  p.nbodies = nbodies;
+  p.b = std::move(b), p.l = std::move(l), p.u = std::move(u);
+  p.reg.resize(p.size());
+  for (int i = 0; i < p.size(); ++i) p.reg[i] = A.coeff(i, i) - bareDiagonal(rows[i]);
+  p.link.assign(p.size(), -1);
+  p.coef.assign(p.size(), 0.0);
+  return p;
+}
+
+double sparseTolerance(const SparseBoxLcp& p, double rel_tol) {
+  return rel_tol * (1.0 + activeNormInf(p, p.b));
+}
+
+double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w_out) {
+  const V6s u = bodyImpulseVelocities(*p.rows, z, p.nbodies);
+  lcp::Vec w(p.size());
+  double r = 0.0;
+  for (int i = 0; i < p.size(); ++i) {
+    w[i] = rowVelocity((*p.rows)[i], u) + p.reg[i] * z[i] + p.b[i];
+    if (!p.active(i)) continue;
+    const double d = std::abs(z[i] - std::clamp(z[i] - w[i], p.lower(i, z), p.upper(i, z)));
+    r = std::isnan(d) ? lcp::kInf : std::max(r, d);
+  }
+  if (w_out) *w_out = std::move(w);
+  return r;
+}
+
+std::vector<int> heightOrder(const std::vector<Contact>& cs, const Vec3& gravity, int per) {
+  std::vector<int> c(cs.size()), rows;
+  for (size_t i = 0; i < cs.size(); ++i) c[i] = (int)i;
+  std::stable_sort(c.begin(), c.end(),
+                   [&](int a, int b) { return -gravity.dot(cs[a].p) < -gravity.dot(cs[b].p); });
+  for (int i : c)
+    for (int k = 0; k < per; ++k) rows.push_back(i * per + k);
+  return rows;
+}
+
+int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* zp) {
+  lcp::Vec& z = *zp;
+  const std::vector<JRow>& rows = *p.rows;
+  V6s u = bodyImpulseVelocities(rows, z, p.nbodies);
+  lcp::Vec diag(p.size());
+  for (int i = 0; i < p.size(); ++i) diag[i] = bareDiagonal(rows[i]) + p.reg[i];
+  const int n = p.size();
+  int sweep = 0;
+  for (double change = lcp::kInf; sweep < max_sweeps && !(change <= tol); ++sweep) {
+    change = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const int j = p.symmetric && sweep % 2 ? n - 1 - k : k; // symmetric: every other sweep backwards
+      const int i = p.order.empty() ? j : p.order[j];
+      if (!p.active(i) || !(diag[i] > 0)) continue;
+      const double w = rowVelocity(rows[i], u) + p.reg[i] * z[i] + p.b[i];
+      const double zi = std::clamp(z[i] - w / diag[i], p.lower(i, z), p.upper(i, z));
+      const double dz = zi - z[i];
+      if (dz == 0.0) continue;
+      addRowImpulse(rows[i], dz, &u);
+      z[i] = zi;
+      change = std::max(change, std::abs(dz));
+    }
+  }
+  return sweep;
+}
+
+bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st) {
+  std::vector<RowState> s(p.size(), RowState::Lower);
+  for (int i = 0; i < p.size(); ++i)
+    if (p.active(i)) s[i] = RowState::Free;
+  lcp::Vec cand(p.size());
+  ++st->factorizations;
+  if (!solveFree(p, s, &cand) || !(sparseResidual(p, cand) < sparseResidual(p, *z))) return false;
+  *z = cand;
+  return true;
+}
+
+bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
+                    bool solve_once) {
+  st->tolerance = sparseTolerance(p, rel_tol);
+  lcp::Vec w, best = *z;
+  st->residual = sparseResidual(p, *z, &w);
+  std::vector<RowState> cur = readStates(p, *z, w);
+  ExchangeRule rule;
+  for (int it = 0; it < max_it && (!(st->residual <= st->tolerance) || (solve_once && it == 0)); ++it) {
+    lcp::Vec cand(p.size());
+    ++st->factorizations;
+    if (!solveFree(p, cur, &cand)) break;
+    const double r = sparseResidual(p, cand, &w);
+    *z = cand;
+    if (r < st->residual || (solve_once && it == 0 && r <= st->tolerance)) st->residual = r, best = cand;
+    const std::vector<RowState> next = readStates(p, cand, w);
+    const long long changed = rule.exchange(next, &cur);
+    if (changed == 0) break; // the states of the exact solve are consistent: nothing left to exchange
+    st->pivots += changed;
+  }
+  *z = best;
+  return st->residual <= st->tolerance;
+}
+
+} // namespace suite::contact

@@ -1,0 +1,69 @@
+// The box LCP of the contact rows (box_lcp.hpp) solved on the sparse Delassus matrix (delassus_sparse.hpp):
+//   w = A z + b,  l_i <= z_i <= u_i  (z_i = l_i => w_i >= 0, z_i = u_i => w_i <= 0, else w_i = 0),
+// rows with l_i = u_i = 0 (zero-bound tangents) left out. Bounds may be coupled to a normal row, |z_i| <=
+// coef_i z_link(i) (the Coulomb box of the sequential-impulse solvers).
+//   pgs         projected Gauss-Seidel sweeps, matrix-free through J and M^-1 (O(rows) per sweep, the row's
+//               bounds read from the current normal impulse when coupled): Erleben, "Velocity-based shock
+//               propagation for multibody dynamics animation", ACM TOG 26 (2007); Catto, "Iterative dynamics
+//               with temporal coherence", GDC 2005 (sequential impulses with warm starting).
+//   activeSet   active-set Newton (block principal pivoting without the Murty backup; Judice & Pires,
+//               Comput. Oper. Res. 21 (1994)) from the states read off z - w: the free rows solved with a
+//               body-space factorisation (body_space_solve.hpp) when the compliance is positive and the
+//               masses are given, else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
+// The residual is the natural-map residual of lcp/problem.hpp, so an answer is accepted by the same rule as
+// the dense chain's.
+#pragma once
+
+#include "contact/collision.hpp"
+#include "contact/delassus_sparse.hpp"
+
+namespace suite::contact {
+
+struct SparseBoxLcp {
+  const std::vector<JRow>* rows = nullptr;
+  const SpMat* A = nullptr; // the sparse Delassus matrix (regularised diagonal included)
+  int nbodies = 0;
+  const std::vector<M6>* mass = nullptr; // body mass matrices: free rows solved in body space when given
+  lcp::Vec b, l, u, reg;                 // reg: the compliance part of A_ii (A_ii - (J M^-1 J^T)_ii)
+  std::vector<int> link; // coupled bounds: row link[i] >= 0 gives |z_i| <= coef[i] z_link (else l, u)
+  std::vector<double> coef;
+  std::vector<int> order; // PGS row order (empty: 0..n-1)
+  bool symmetric = false; // PGS: every other sweep in the reverse order (symmetric Gauss-Seidel)
+  int size() const { return (int)b.size(); }
+  bool active(int i) const { return link[i] >= 0 ? coef[i] > 0 : !(l[i] == 0 && u[i] == 0); }
+  double lower(int i, const lcp::Vec& z) const { return link[i] >= 0 ? -coef[i] * z[link[i]] : l[i]; }
+  double upper(int i, const lcp::Vec& z) const { return link[i] >= 0 ? coef[i] * z[link[i]] : u[i]; }
+};
+
+// A problem with fixed bounds l, u (link -1 everywhere), A_ii's compliance part from diag_scale.
+SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
+                              lcp::Vec l, lcp::Vec u);
+
+// What a sparse solve did.
+struct SparseSolveStats {
+  int sweeps = 0, factorizations = 0;
+  long long pivots = 0;   // state changes of the active-set iterations
+  double residual = 0.0;  // natural-map residual of the returned z (active rows)
+  double tolerance = 0.0; // rel_tol (1 + |b_active|_inf)
+};
+
+// The acceptance tolerance rel_tol (1 + |b|_inf over the active rows), as lcp::acceptanceTolerance.
+double sparseTolerance(const SparseBoxLcp& p, double rel_tol);
+// Natural-map residual of z (w = A z + b matrix-free) over the active rows; w returned when asked.
+double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w = nullptr);
+// Row order of the sweeps: contact by contact (its rows together) by increasing height along -gravity, so that
+// one sweep carries the support from the ground up a stack (Erleben 2007's shock propagation order).
+std::vector<int> heightOrder(const std::vector<Contact>& cs, const Vec3& gravity, int per);
+// Up to max_sweeps PGS sweeps from z, stopping after a sweep whose max |change| is <= tol. Returns sweeps.
+int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* z);
+// Cold start of the active set (fixed bounds): the answer with every active row free (z = -A^-1 b on them, one
+// factorisation: exact for a structure at rest with every contact pressed and sticking) replaces z when its
+// residual is lower. Returns whether it did.
+bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st);
+// Active-set Newton from z (fixed bounds only), at most max_it factorisations; z <- the best iterate.
+// true: residual <= rel_tol (1 + |b|_inf) (st: counts, residual). solve_once: at least one exact solve even
+// when z already meets the tolerance (its answer then exact to round-off on the index sets of z).
+bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
+                    bool solve_once = false);
+
+} // namespace suite::contact
