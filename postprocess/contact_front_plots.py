@@ -1,7 +1,8 @@
 """Contact speed/accuracy front (scripts/bench/contact-front): time per step against the error of each run, this
 suite's accuracy modes beside MuJoCo's pyramidal and elliptic cones, one panel per scene. The error is the
 scene's own measure: the largest drift of a body at rest (stacks, pyramids, heap, sticking incline) or the
-sliding speed's error against the exact g (sin theta - mu cos theta) (sliding incline)."""
+sliding speed's error against the exact g (sin theta - mu cos theta) (sliding incline), or the deepest
+penetration (the log heap, which falls and has no rest position)."""
 from __future__ import annotations
 
 import math
@@ -28,6 +29,8 @@ def run_error(r):
         return math.nan
     if r["scene"] == "incline_slide":
         return abs(r["speed"] - r["speed_exact"])
+    if r["scene"].startswith("logheap"):  # a falling heap has no rest position: its deepest penetration
+        return r["penetration"]
     return r["drift"]
 
 
@@ -53,7 +56,8 @@ def plot_front(path, outdir):
             ax.loglog(1e3 * r["time_per_step"], err, MARKERS.get(r["code"], "x"), label=label)
         ax.set_title(scene)
         ax.set_xlabel("time per step (ms)")
-        ax.set_ylabel("speed error (m/s)" if scene == "incline_slide" else "drift (m)")
+        ax.set_ylabel({"incline_slide": "speed error (m/s)"}.get(scene, "penetration (m)" if scene.startswith(
+            "logheap") else "drift (m)"))
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     for ax in list(axes.flat)[len(scenes):]:
