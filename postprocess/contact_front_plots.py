@@ -11,6 +11,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from .contact_plots import _report
+
 MARKERS = {"suite": "o", "mujoco": "s"}
 
 
@@ -76,9 +78,3 @@ def register(sub):
     p.add_argument("file")
     p.add_argument("--outdir", default="out")
     p.set_defaults(func=lambda a: _report(plot_front(a.file, a.outdir)))
-
-
-def _report(pngs):
-    for png in pngs:
-        print(f"wrote {png}")
-    return 0
