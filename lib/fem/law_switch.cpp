@@ -7,7 +7,7 @@
 namespace suite::fem {
 
 Fidelity LawSwitchPolicy::next(Fidelity current, double estimate) const {
-  if (current == Fidelity::cheap) return estimate > up * target ? Fidelity::accurate : Fidelity::cheap;
+  if (current == Fidelity::cheap) return cheapRejected(estimate) ? Fidelity::accurate : Fidelity::cheap;
   return estimate < down * target ? Fidelity::cheap : Fidelity::accurate;
 }
 

@@ -3,6 +3,7 @@
 // force ratio min(tan th, mu) from both starts, no energy gain in a frictional drop).
 #include "contact/scenes.hpp"
 #include "contact/stepper.hpp"
+#include "incline_speed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,11 +30,7 @@ StepperOptions opts(FrictionModel f, double mu, double dt = 0.01) {
   return o;
 }
 
-// Downhill speed of the incline box.
-double downhillSpeed(const std::vector<Body>& b, double theta_deg) {
-  const double th = theta_deg * M_PI / 180.0;
-  return b[1].v.dot(Vec3(-std::cos(th), 0, -std::sin(th)));
-}
+using test::downhillSpeed;
 } // namespace
 
 TEST(ContactBody, MassProperties) {

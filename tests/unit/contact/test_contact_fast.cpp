@@ -7,6 +7,7 @@
 #include "contact/delassus.hpp"
 #include "contact/scenes.hpp"
 #include "contact/stepper.hpp"
+#include "incline_speed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,10 +43,7 @@ DelassusSystem system(const std::vector<Body>& b, const StepperOptions& o, bool 
   return buildDelassus(b, inv_i, v, cs, boxRows(cs, true), o, sparse);
 }
 
-double downhillSpeed(const std::vector<Body>& b, double theta_deg) {
-  const double th = theta_deg * M_PI / 180.0;
-  return b[1].v.dot(Vec3(-std::cos(th), 0, -std::sin(th)));
-}
+using test::downhillSpeed;
 } // namespace
 
 TEST(ContactSparse, DelassusEqualsDense) {
