@@ -112,11 +112,11 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
                       "exact: dense contact problems up to this many rows, sparse above",
                       &t->dense_max_rows));
   std::string islands = t->islands ? "on" : "off";
-  PetscCall(suite::optionsChoice(r.po, "-contact_islands",
-                                 "Solve each island of contacts as its own problem, islands dealt over ranks",
-                                 {{"on", "one problem per island (lib/contact/islands.hpp), dealt over ranks"},
-                                  {"off", "one problem of the whole scene, on every rank"}},
-                                 &islands));
+  PetscCall(suite::optionsChoice(
+      r.po, "-contact_islands", "Solve each island of contacts as its own problem, islands dealt over ranks",
+      {{"on", "one problem per island (lib/contact/islands.hpp), dealt over ranks"},
+       {"off", "one problem of the whole scene, on every rank"}},
+      &islands));
   t->islands = islands == "on";
   PetscCheck(t->accuracy == ContactAccuracy::Exact || t->friction != FrictionModel::Polyhedral, comm,
              PETSC_ERR_ARG_OUTOFRANGE,

@@ -31,7 +31,8 @@ public:
     stepper_.keepProblems(!o.dump.empty());
     if (o.step.islands) {
       PetscCallAbort(ctx.comm(), MPI_Comm_dup(ctx.comm(), &deal_comm_));
-      stepper_.setTaskRunner([this](int n, const suite::TaskSolve& solve, std::vector<std::vector<double>>* res) {
+      stepper_.setTaskRunner([this](int n, const suite::TaskSolve& solve,
+                                    std::vector<std::vector<double>>* res) {
         return suite::dealTasks(deal_comm_, n, solve, res) ? std::string("dealing over ranks failed") : "";
       });
     }

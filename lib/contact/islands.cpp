@@ -29,7 +29,9 @@ private:
 };
 
 // The body whose island a contact joins: a when a is dynamic, else b (a static-static contact: a).
-int anchor(const std::vector<Body>& bodies, const Contact& c) { return bodies[c.a].is_static ? c.b : c.a; }
+int anchor(const std::vector<Body>& bodies, const Contact& c) {
+  return bodies[c.a].is_static ? c.b : c.a;
+}
 
 } // namespace
 
@@ -55,7 +57,8 @@ std::vector<Island> splitIslands(const std::vector<Body>& bodies, const std::vec
   return islands;
 }
 
-IslandScene islandScene(const std::vector<Body>& bodies, const std::vector<Contact>& cs, const Island& island) {
+IslandScene islandScene(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
+                        const Island& island) {
   IslandScene s;
   s.global = island.bodies;
   for (int k : island.contacts)

@@ -33,6 +33,7 @@ struct IslandScene {
   std::vector<int> global; // global index of each local body
   std::vector<Contact> contacts;
 };
-IslandScene islandScene(const std::vector<Body>& bodies, const std::vector<Contact>& cs, const Island& island);
+IslandScene islandScene(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
+                        const Island& island);
 
 } // namespace suite::contact

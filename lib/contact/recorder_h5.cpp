@@ -73,7 +73,8 @@ PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
     PetscCall(out.writeReplicated("/steps/budget_stop", rec.budget_stop.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/penetration", rec.penetration.data(), {ns}, "m"));
     PetscCall(out.writeReplicated("/steps/islands", rec.islands.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/largest_island_bodies", rec.largest_island_bodies.data(), {ns}, ""));
+    PetscCall(
+        out.writeReplicated("/steps/largest_island_bodies", rec.largest_island_bodies.data(), {ns}, ""));
     PetscCall(
         out.writeReplicated("/steps/largest_island_contacts", rec.largest_island_contacts.data(), {ns}, ""));
   }
