@@ -30,15 +30,12 @@ public:
         scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
     stepper_.keepProblems(!o.dump.empty());
     if (o.step.islands) {
-      PetscCallAbort(ctx.comm(), MPI_Comm_dup(ctx.comm(), &deal_comm_));
-      stepper_.setTaskRunner([this](int n, const suite::TaskSolve& solve,
-                                    std::vector<std::vector<double>>* res) {
-        return suite::dealTasks(deal_comm_, n, solve, res) ? std::string("dealing over ranks failed") : "";
-      });
+      PetscCallAbort(ctx.comm(), suite::TaskDealer::create(ctx.comm(), &dealer_));
+      stepper_.setTaskRunner(
+          [this](int n, const suite::TaskSolve& solve, std::vector<std::vector<double>>* res) {
+            return dealer_->deal(n, solve, res) ? std::string("dealing over ranks failed") : "";
+          });
     }
-  }
-  ~ContactStepping() override {
-    if (deal_comm_ != MPI_COMM_NULL) MPI_Comm_free(&deal_comm_);
   }
   // a fresh run's first frame is its step-0 snapshot
   PetscErrorCode start(PetscInt step, double t, bool restarted) override {
@@ -77,8 +74,8 @@ private:
   const std::string scheme_;
   Recorder rec_;
   long long dumped_ = 0;
-  std::string failure_;                // "step N: why; problem dumped to FILE"
-  MPI_Comm deal_comm_ = MPI_COMM_NULL; // -contact_islands on: the islands' dealing (core/task_dealer.hpp)
+  std::string failure_;                       // "step N: why; problem dumped to FILE"
+  std::unique_ptr<suite::TaskDealer> dealer_; // -contact_islands on: the islands over ranks
 };
 
 PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suite::StepOutcome* out) {

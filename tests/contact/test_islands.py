@@ -1,11 +1,11 @@
 """-contact_islands on the contact app's HDF5 output (issue #20; run by ctest: test_islands.py <contact>).
 
-- pile_grid of 6 pyramids of base 4 (60 boxes), 100 steps (1 s): with islands, 6 islands of 10 boxes each step
+- pile_grid of 6 pyramids of base 4 (60 boxes), 60 steps (0.6 s): with islands, 6 islands of 10 boxes each step
   (/steps/islands, /steps/largest_island_bodies), the same positions as the whole-scene solve to 1e-8 m and
   velocities to 1e-7 m/s (splitting, box; polyhedral on 4 pyramids of base 2): each problem is accepted at
   the natural-map residual lcp_tol (1 + |b|_inf) = 1e-8 (1 + ~0.1), which bounds the velocity error of a step
-  only through the Delassus matrix (measured: 1.1e-8 m/s with box friction), and 1e-8 m/s over 1 s moves a
-  body 1e-8 m;
+  only through the Delassus matrix (measured: 1.1e-8 m/s with box friction), and 1e-8 m/s over 0.6 s moves a
+  body 6e-9 m;
 - islands on: positions, orientations and velocities bitwise identical at 1 and 2 ranks (splitting, polyhedral,
   -contact_accuracy fast, -sleep);
 - islands off: 1 and 2 ranks bitwise identical as before;
@@ -23,8 +23,8 @@ import numpy as np
 APP = sys.argv[1]
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 TMP = Path(tempfile.mkdtemp(prefix="contact_islands_"))
-GRID = ["-scene", "pile_grid", "-piles", 6, "-pyramid_base", 4, "-steps", 100]
-SMALL = ["-scene", "pile_grid", "-piles", 4, "-pyramid_base", 2, "-steps", 100]  # polyhedral: dense Lemke
+GRID = ["-scene", "pile_grid", "-piles", 6, "-pyramid_base", 4, "-steps", 60]
+SMALL = ["-scene", "pile_grid", "-piles", 4, "-pyramid_base", 2, "-steps", 60]  # polyhedral: dense Lemke
 TOL_X, TOL_V = 1e-8, 1e-7
 failures = []
 
