@@ -84,7 +84,11 @@ PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
   PetscCheck(frictionFromName(friction, &t->friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model", friction.c_str());
   PetscCall(r.real("-mu", "Friction coefficient", &t->mu));
-  PetscCall(suite::optionsChoice(r.po, "-lcp_solver", "LCP solver", contactSolverChoices(), &t->lcp_solver));
+  std::vector<suite::Choice> primary = contactSolverChoices();
+  primary.push_back({"auto",
+                     "the portfolio (lib/lcp/portfolio): the measured chain of the problem's class, each "
+                     "answer verified, then -fallback_solvers"});
+  PetscCall(suite::optionsChoice(r.po, "-lcp_solver", "LCP solver", primary, &t->lcp_solver));
   PetscCall(
       r.solvers("-fallback_solvers", "Solvers tried when the solver fails", true, &t->fallback_solvers));
   PetscCall(r.real("-lcp_tol", "Acceptance: natural-map residual <= tol (1 + |q|_inf)", &t->lcp_tol));

@@ -50,7 +50,9 @@ struct StepperOptions {
   double mu = 0.5;
   FrictionModel friction = FrictionModel::Splitting;
   // bpp: no failure on the incline/rest/drop problems at any splitting start (lemke, keller, murty,
-  // fb_newton, cottle_dantzig, pgs_block failed on some), and the fewest iterations.
+  // fb_newton, cottle_dantzig, pgs_block failed on some), and the fewest iterations. "auto": the LCP
+  // portfolio's chain for the problem's class (lcp::solveWithChain expands it, lcp/portfolio.hpp); the solver
+  // that succeeded is StepStats::solver (/steps/solver).
   std::string lcp_solver = "bpp";
   std::vector<std::string> fallback_solvers = {"lemke", "smoothed_newton"};
   // Acceptance: natural-map residual <= lcp_tol (1 + |b|_inf) (m/s): 1e-8 is far below what the time
