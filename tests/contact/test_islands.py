@@ -9,6 +9,7 @@
 - islands on: positions, orientations and velocities bitwise identical at 1 and 2 ranks (splitting, polyhedral,
   -contact_accuracy fast, -sleep);
 - islands off: 1 and 2 ranks bitwise identical as before;
+- a checkpoint written at 2 ranks, restarted at 1 rank, ends bitwise where the uninterrupted run ends;
 - -dump_problems with islands writes every island's problems (at least one per island and step).
 """
 import os
@@ -76,6 +77,13 @@ for name, scene, extra in (("splitting", GRID, []), ("polyhedral", SMALL, ["-fri
 a = run("np1_off", *GRID)
 b = run("np2_off", *GRID, np_=2)
 check(same(a, b), "islands off: bitwise identical at 1 and 2 ranks")
+
+ck = TMP / "ck"
+full = run("ck_full", *GRID[:-1], 40, "-contact_islands", "on", "-checkpoint_dir", ck, "-checkpoint_every", 20,
+           np_=2)
+rs = run("ck_restart", *GRID[:-1], 40, "-contact_islands", "on", "-restart", ck / "contact_0000000020.h5")
+check(np.array_equal(full["/frames/positions"][-1], rs["/frames/positions"][-1]),
+      "islands: restart at step 20 (1 rank) ends bitwise in the uninterrupted run's state (2 ranks)")
 
 dump = TMP / "dump" / "p"
 dump.parent.mkdir()
