@@ -66,14 +66,14 @@ IslandScene islandScene(const std::vector<Body>& bodies, const std::vector<Conta
       if (bodies[b].is_static) s.global.push_back(b);
   std::sort(s.global.begin(), s.global.end());
   s.global.erase(std::unique(s.global.begin(), s.global.end()), s.global.end());
-  std::vector<int> local(bodies.size(), -1);
-  for (int i = 0; i < (int)s.global.size(); ++i) {
-    local[s.global[i]] = i;
-    s.bodies.push_back(bodies[s.global[i]]);
-  }
+  for (int g : s.global) s.bodies.push_back(bodies[g]);
+  // local index of a global body: its place in the sorted list (O(log) per contact, no array of every body)
+  auto local = [&](int g) {
+    return (int)(std::lower_bound(s.global.begin(), s.global.end(), g) - s.global.begin());
+  };
   for (int k : island.contacts) {
     Contact c = cs[k];
-    c.a = local[c.a], c.b = local[c.b];
+    c.a = local(c.a), c.b = local(c.b);
     s.contacts.push_back(c);
   }
   return s;
