@@ -67,7 +67,8 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscCall(r.real("-spin", "Drop: initial angular velocity about y (rad/s)", &s->spin));
   PetscCall(r.string("-drop_body", "Drop: sphere, box, capsule, cylinder", &s->drop_body));
   PetscCall(r.integer("-stack_height", "box_stack: number of boxes", &s->stack_height));
-  PetscCall(r.integer("-pyramid_base", "pyramid: boxes in the bottom row", &s->pyramid_base));
+  PetscCall(r.integer("-pyramid_base", "pyramid, pile_grid: boxes in the bottom row", &s->pyramid_base));
+  PetscCall(r.integer("-piles", "pile_grid: number of pyramids", &s->piles));
   PetscCall(r.integer("-n_logs", "log_heap: number of logs", &s->n_logs));
   PetscCall(r.real("-log_radius", "log_heap: log radius (m)", &s->log_radius));
   PetscCall(r.real("-log_length", "log_heap: log length (m)", &s->log_length));
@@ -83,7 +84,11 @@ PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
   PetscCheck(frictionFromName(friction, &t->friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model", friction.c_str());
   PetscCall(r.real("-mu", "Friction coefficient", &t->mu));
-  PetscCall(suite::optionsChoice(r.po, "-lcp_solver", "LCP solver", contactSolverChoices(), &t->lcp_solver));
+  std::vector<suite::Choice> primary = contactSolverChoices();
+  primary.push_back({"auto",
+                     "the portfolio (lib/lcp/portfolio): the measured chain of the problem's class, each "
+                     "answer verified, then -fallback_solvers"});
+  PetscCall(suite::optionsChoice(r.po, "-lcp_solver", "LCP solver", primary, &t->lcp_solver));
   PetscCall(
       r.solvers("-fallback_solvers", "Solvers tried when the solver fails", true, &t->fallback_solvers));
   PetscCall(r.real("-lcp_tol", "Acceptance: natural-map residual <= tol (1 + |q|_inf)", &t->lcp_tol));
@@ -110,6 +115,13 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
   PetscCall(r.integer("-contact_dense_max_rows",
                       "exact: dense contact problems up to this many rows, sparse above",
                       &t->dense_max_rows));
+  std::string islands = t->islands ? "on" : "off";
+  PetscCall(suite::optionsChoice(
+      r.po, "-contact_islands", "Solve each island of contacts as its own problem, islands dealt over ranks",
+      {{"on", "one problem per island (lib/contact/islands.hpp), dealt over ranks"},
+       {"off", "one problem of the whole scene, on every rank"}},
+      &islands));
+  t->islands = islands == "on";
   PetscCheck(t->accuracy == ContactAccuracy::Exact || t->friction != FrictionModel::Polyhedral, comm,
              PETSC_ERR_ARG_OUTOFRANGE,
              "-contact_accuracy %s: needs -friction none, box, scaled_box or splitting", acc.c_str());

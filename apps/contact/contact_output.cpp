@@ -16,6 +16,7 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   PetscCall(out.writeAttribute("/", "scene", scene.scene));
   PetscCall(out.writeAttribute("/", "friction", frictionName(step.friction)));
   PetscCall(out.writeAttribute("/", "lcp_solver", step.lcp_solver));
+  PetscCall(out.writeAttribute("/", "contact_islands", step.islands ? "on" : "off"));
   PetscCall(out.writeAttribute("/", "dt", step.dt));
   PetscCall(out.writeAttribute("/", "mu", step.mu));
   PetscCall(out.writeAttribute("/", "theta", scene.theta_deg));

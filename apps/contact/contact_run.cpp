@@ -9,6 +9,7 @@
 
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
+#include "core/task_dealer.hpp"
 #include "core/time_loop.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
@@ -28,6 +29,13 @@ public:
       : ctx_(ctx), o_(o), bodies_(std::move(bodies)), stepper_(o.step),
         scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
     stepper_.keepProblems(!o.dump.empty());
+    if (o.step.islands) {
+      PetscCallAbort(ctx.comm(), suite::TaskDealer::create(ctx.comm(), &dealer_));
+      stepper_.setTaskRunner(
+          [this](int n, const suite::TaskSolve& solve, std::vector<std::vector<double>>* res) {
+            return dealer_->deal(n, solve, res) ? std::string("dealing over ranks failed") : "";
+          });
+    }
   }
   // a fresh run's first frame is its step-0 snapshot
   PetscErrorCode start(PetscInt step, double t, bool restarted) override {
@@ -66,7 +74,8 @@ private:
   const std::string scheme_;
   Recorder rec_;
   long long dumped_ = 0;
-  std::string failure_; // "step N: why; problem dumped to FILE"
+  std::string failure_;                       // "step N: why; problem dumped to FILE"
+  std::unique_ptr<suite::TaskDealer> dealer_; // -contact_islands on: the islands over ranks
 };
 
 PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suite::StepOutcome* out) {

@@ -10,9 +10,10 @@
 
 namespace contact_app {
 
-// Bodies (ground and walls included) and the contacts expected when they rest on each other.
+// Bodies (ground and walls included) and the contacts expected when they rest on each other; those of the
+// largest island where the scene's islands are known (pile_grid: one pile; 0: unknown, the whole scene's).
 struct SceneSize {
-  double bodies = 0, contacts = 0;
+  double bodies = 0, contacts = 0, island_contacts = 0;
 };
 // A generated scene's, from its size options (bodies -1 for -scene file: known once read).
 SceneSize sceneSize(const SceneParams& s);

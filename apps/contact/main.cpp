@@ -1,12 +1,15 @@
 // Contact app: rigid bodies with unilateral contacts and Coulomb friction, velocity time stepping with one
 // LCP / box LCP per step (lib/contact on lib/lcp). After Lacoursiere, SIGRAD 2003 (box MLCPs, splitting).
 // The scene is replicated on every rank (identical deterministic computation); rank 0 writes the output.
+// With -contact_islands on, each step's independent islands are solved as separate problems dealt over the
+// ranks and gathered to every rank (lib/contact/islands.hpp, lib/core/task_dealer.hpp).
 //
 // Sample runs (tests/sample_runs.py executes each line):
 //   contact -scene incline -theta 30 -mu 0.3 -friction splitting -steps 100 -output incline.h5
 //   contact -scene incline -theta 20 -mu 0.5 -friction splitting -splitting_start infinite -steps 5 -output s.h5
 //   contact -scene box_stack -stack_height 4 -steps 200 -output stack.h5
 //   contact -scene pyramid -pyramid_base 4 -steps 200 -output pyramid.h5
+//   mpiexec -n 2 contact -scene pile_grid -piles 6 -pyramid_base 3 -contact_islands on -steps 50 -output piles.h5
 //   contact -scene log_heap -n_logs 8 -steps 60 -regularisation 1e-4 -lcp_solver lemke -output heap.h5
 //   contact -scene drop -drop_body box -tilt 20 -spin 3 -steps 200 -output drop.h5
 //   contact -scene file -scene_file inputs/contact/two_spheres.scene -steps 100 -output file.h5

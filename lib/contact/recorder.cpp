@@ -32,6 +32,9 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   fallbacks.push_back(s.fallbacks);
   factorizations.push_back(s.factorizations);
   budget_stop.push_back(s.budget_stop);
+  islands.push_back(s.islands);
+  largest_island_bodies.push_back(s.largest_island_bodies);
+  largest_island_contacts.push_back(s.largest_island_contacts);
   penetration.push_back(s.penetration);
   force_ratio.push_back(s.force_ratio);
   cone_violation.push_back(s.cone_violation);

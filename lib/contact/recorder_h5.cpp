@@ -72,7 +72,15 @@ PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
     PetscCall(out.writeReplicated("/steps/factorizations", rec.factorizations.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/budget_stop", rec.budget_stop.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/penetration", rec.penetration.data(), {ns}, "m"));
+    PetscCall(out.writeReplicated("/steps/islands", rec.islands.data(), {ns}, ""));
+    PetscCall(
+        out.writeReplicated("/steps/largest_island_bodies", rec.largest_island_bodies.data(), {ns}, ""));
+    PetscCall(
+        out.writeReplicated("/steps/largest_island_contacts", rec.largest_island_contacts.data(), {ns}, ""));
   }
+  PetscCall(out.writeAttribute("/steps", "islands",
+                               "-contact_islands on: islands solved per step (0: off or no contact), the "
+                               "largest one's dynamic bodies and contacts"));
   std::string sn;
   for (size_t k = 0; k < rec.solver_names.size(); ++k) sn += (k ? "," : "") + rec.solver_names[k];
   PetscCall(out.writeAttribute("/steps", "solver_names", sn));

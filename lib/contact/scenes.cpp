@@ -1,4 +1,4 @@
-// Scene builders (incline, drop, box_stack, pyramid, log_heap, file) and the static-overlap check.
+// Scene builders (incline, drop, box_stack, pyramid, pile_grid, log_heap, file) and the static-overlap check.
 // The log heap follows the experiment of Lacoursiere, SIGRAD 2003 (N identical logs dropped into a heap),
 // with the logs modelled as capsules.
 #include "contact/scenes.hpp"
@@ -100,16 +100,35 @@ std::vector<Body> boxStackScene(const SceneParams& p) {
   return b;
 }
 
+// A planar pyramid of boxes (base boxes in the bottom row, gaps of 0.1 size in a row) centred at (cx, cy).
+void addPyramid(const SceneParams& p, int base, double cx, double cy, const std::string& prefix,
+                std::vector<Body>* b) {
+  const double pitch = 1.1 * p.size; // gap of 0.1 size between neighbours of a row
+  for (int k = 0; k < base; ++k)
+    for (int j = 0; j < base - k; ++j) {
+      const double x = cx + (j - 0.5 * (base - k - 1)) * pitch;
+      b->push_back(makeBody(prefix + "box" + std::to_string(k) + "_" + std::to_string(j), boxShape(p.size),
+                            p.density, 0.0, Vec3(x, cy, (k + 0.5) * p.size), Quat::Identity(), false));
+    }
+}
+
 std::vector<Body> pyramidScene(const SceneParams& p) {
   require(p.pyramid_base >= 1, "-pyramid_base " + std::to_string(p.pyramid_base) + ": must be >= 1");
   std::vector<Body> b{makePlane("ground", Vec3::UnitZ(), Vec3::Zero())};
-  const double pitch = 1.1 * p.size; // gap of 0.1 size between neighbours of a row
-  for (int k = 0; k < p.pyramid_base; ++k)
-    for (int j = 0; j < p.pyramid_base - k; ++j) {
-      const double x = (j - 0.5 * (p.pyramid_base - k - 1)) * pitch;
-      b.push_back(makeBody("box" + std::to_string(k) + "_" + std::to_string(j), boxShape(p.size), p.density,
-                           0.0, Vec3(x, 0, (k + 0.5) * p.size), Quat::Identity(), false));
-    }
+  addPyramid(p, p.pyramid_base, 0.0, 0.0, "", &b);
+  return b;
+}
+
+// -piles pyramids of base -pyramid_base on one ground, on a square grid with one box edge between neighbours:
+// independent piles that touch only the (static) ground, the islands of -contact_islands.
+std::vector<Body> pileGridScene(const SceneParams& p) {
+  require(p.pyramid_base >= 1, "-pyramid_base " + std::to_string(p.pyramid_base) + ": must be >= 1");
+  require(p.piles >= 1, "-piles " + std::to_string(p.piles) + ": must be >= 1");
+  std::vector<Body> b{makePlane("ground", Vec3::UnitZ(), Vec3::Zero())};
+  const int cols = (int)std::ceil(std::sqrt((double)p.piles));
+  const double dx = (1.1 * p.pyramid_base + 1.0) * p.size, dy = 2.0 * p.size;
+  for (int k = 0; k < p.piles; ++k)
+    addPyramid(p, p.pyramid_base, (k % cols) * dx, (k / cols) * dy, "pile" + std::to_string(k) + "_", &b);
   return b;
 }
 
@@ -164,6 +183,7 @@ const std::vector<SceneEntry>& registry() {
       {"drop", "one -drop_body dropped from -height onto a plane", dropScene},
       {"box_stack", "a column of -stack_height boxes on the ground", boxStackScene},
       {"pyramid", "a pyramid of boxes, -pyramid_base in the bottom row", pyramidScene},
+      {"pile_grid", "-piles pyramids of base -pyramid_base on a grid (independent piles)", pileGridScene},
       {"log_heap", "-n_logs capsule logs dropped between four walls (Lacoursiere 2003)", logHeapScene},
       {"file", "the bodies of -scene_file (format: lib/contact/scenes.hpp)", fileScene},
   };

@@ -14,7 +14,13 @@
 
 namespace suite::contact {
 
-Stepper::Stepper(StepperOptions o) : o_(std::move(o)), form_(makeFrictionFormulation(o_)) {}
+Stepper::Stepper(StepperOptions o) : o_(std::move(o)), form_(makeFrictionFormulation(o_)) {
+  runner_ = [](int n, const TaskSolveFn& solve, std::vector<std::vector<double>>* out) {
+    out->assign(n, {});
+    for (int k = 0; k < n; ++k) (*out)[k] = solve(k);
+    return std::string();
+  };
+}
 
 double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity) {
   double e = 0.0;
@@ -184,26 +190,35 @@ void Stepper::matchPreviousImpulses(const std::vector<Body>& bodies, std::vector
   ids_ = std::move(ids);
 }
 
-// The impulses of the contacts (friction formulation on the Delassus system), applied to v*, w.
+// The impulses of the step's contacts, applied to v*, w: one problem, or one per island.
 bool Stepper::solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
                             std::vector<Vec3>* lam, StepStats* st) {
-  const int nb = (int)bodies.size();
-  std::vector<Mat3> inv_i(nb);
-  for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
   std::vector<Vec3> prev;
   std::vector<bool> has_prev;
   matchPreviousImpulses(bodies, &prev, &has_prev);
-  const std::vector<ConstraintRow> rows = form_->rows(contacts_);
+  if (o_.islands) return solveIslands(bodies, prev, has_prev, v, w, lam, st);
+  return solveProblem(bodies, contacts_, prev, has_prev, v, w, lam, st, &problems_, &solution_);
+}
+
+// The impulses of contacts cs (friction formulation on the Delassus system), applied to v*, w.
+bool Stepper::solveProblem(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
+                           const std::vector<Vec3>& prev, const std::vector<bool>& has_prev,
+                           std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
+                           std::vector<lcp::Problem>* problems, lcp::Vec* solution) const {
+  const int nb = (int)bodies.size();
+  std::vector<Mat3> inv_i(nb);
+  for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
+  const std::vector<ConstraintRow> rows = form_->rows(cs);
   const bool exact = o_.accuracy == ContactAccuracy::Exact;
   const bool sparse =
       o_.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o_.dense_max_rows);
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, contacts_, rows, o_, sparse);
-  const ContactStep step{bodies, contacts_, prev, has_prev};
+  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, cs, rows, o_, sparse);
+  const ContactStep step{bodies, cs, prev, has_prev};
   Impulses imp;
   if (!exact) {
     budgetImpulses(step, sys, o_, &imp, st);
   } else {
-    ChainSolve solver(o_, keep_problems_, &problems_, &solution_, st);
+    ChainSolve solver(o_, keep_problems_, problems, solution, st);
     if (!form_->impulses(step, sys, solver, &imp, st)) return false;
   }
   applyImpulses(sys, imp.z, v, w);

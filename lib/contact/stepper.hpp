@@ -16,6 +16,7 @@
 #include "core/named_choice.hpp"
 #include "lcp/problem.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ bool accuracyFromName(const std::string& name, ContactAccuracy* a);
 std::vector<Choice> accuracyChoices();
 
 class FrictionFormulation;
+struct Island;
 
 struct StepperOptions {
   double dt = 0.01;
@@ -48,7 +50,9 @@ struct StepperOptions {
   double mu = 0.5;
   FrictionModel friction = FrictionModel::Splitting;
   // bpp: no failure on the incline/rest/drop problems at any splitting start (lemke, keller, murty,
-  // fb_newton, cottle_dantzig, pgs_block failed on some), and the fewest iterations.
+  // fb_newton, cottle_dantzig, pgs_block failed on some), and the fewest iterations. "auto": the LCP
+  // portfolio's chain for the problem's class (lcp::solveWithChain expands it, lcp/portfolio.hpp); the solver
+  // that succeeded is StepStats::solver (/steps/solver).
   std::string lcp_solver = "bpp";
   std::vector<std::string> fallback_solvers = {"lemke", "smoothed_newton"};
   // Acceptance: natural-map residual <= lcp_tol (1 + |b|_inf) (m/s): 1e-8 is far below what the time
@@ -93,7 +97,19 @@ struct StepperOptions {
   bool sleep = false;
   double sleep_velocity = 1e-3;
   int sleep_steps = 20;
+  // Islands (islands.hpp): each step's contacts split into independent islands, each solved as its own
+  // problem by the same formulation, solver chain and acceptance; off: one problem of the whole scene (the
+  // results before islands, bitwise). Off by default: islands change the answer within the LCP tolerance
+  // (each island's problem is accepted on its own residual, splitting passes per island), so every existing
+  // reference result and checkpoint stays bitwise valid; on (-contact_islands on) spreads them over ranks.
+  bool islands = false;
 };
+
+// Runs tasks 0..n-1 (solve(k)) and returns every result at its index; "" or an error message. The default
+// runs them in order on the caller; the contact app deals them over MPI ranks (core/task_dealer.hpp).
+using TaskSolveFn = std::function<std::vector<double>(int)>;
+using TaskRunner =
+    std::function<std::string(int n, const TaskSolveFn& solve, std::vector<std::vector<double>>*)>;
 
 // What one step did.
 struct StepStats {
@@ -116,6 +132,14 @@ struct StepStats {
   int factorizations = 0;           // sparse factorisations (sparse active-set solves)
   double penetration = 0.0;         // max(0, -phi) over the step's contacts (m)
   bool budget_stop = false;         // balanced / fast: the sweeps ended at the budget, not the tolerance
+  // Islands (StepperOptions::islands): how many were solved (0: islands off or no contact), the largest one's
+  // dynamic bodies and contacts. With islands, rows is the sum over the islands, iterations, pivots,
+  // fallbacks, refinements and factorizations are summed, residual and splitting_error are the largest,
+  // split_errors the largest per pass, split_ratios and solver those of the largest island (solver: of the
+  // first island that needed a fallback, if any).
+  int islands = 0;
+  int largest_island_bodies = 0;
+  int largest_island_contacts = 0;
   bool failed = false;
   std::string message; // failure: which solver, status, why
 };
@@ -146,7 +170,10 @@ public:
   // Not part of the checkpoint (renumbered after a restart; the physics does not depend on them).
   const std::vector<long long>& contactIds() const { return ids_; }
   // The accepted solution z of the last problem solved (lastProblems().back() when the step succeeded).
+  // With islands: empty, unless keepProblems(true) (then the last island's).
   const lcp::Vec& lastSolution() const { return solution_; }
+  // How the islands of a step are run (default: in order, on this process).
+  void setTaskRunner(TaskRunner runner) { runner_ = std::move(runner); }
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
@@ -154,6 +181,27 @@ private:
                              std::vector<bool>* has_prev);
   bool solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
                      std::vector<Vec3>* lam, StepStats* st);
+  // The contacts cs among bodies with their previous impulses as one problem: impulses lam, applied to v, w;
+  // problems / solution as ChainSolve keeps them (keep_problems_).
+  bool solveProblem(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
+                    const std::vector<Vec3>& prev, const std::vector<bool>& has_prev, std::vector<Vec3>* v,
+                    std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
+                    std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;
+  // The same per island (stepper_islands.cpp), the islands run by runner_.
+  struct IslandInput {
+    const std::vector<Vec3>& prev;
+    const std::vector<bool>& has_prev;
+    const std::vector<Vec3>& v;
+    const std::vector<Vec3>& w;
+  };
+  std::vector<double> solveIsland(const std::vector<Body>& bodies, const Island& isl, const IslandInput& in,
+                                  std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;
+  void failedIsland(const std::vector<Body>& bodies, const std::vector<Island>& islands,
+                    const IslandInput& in, int k, const std::vector<double>& result, StepStats* st);
+  bool solveIslands(const std::vector<Body>& bodies, const std::vector<Vec3>& prev,
+                    const std::vector<bool>& has_prev, std::vector<Vec3>* v, std::vector<Vec3>* w,
+                    std::vector<Vec3>* lam, StepStats* st);
+  TaskRunner runner_;
   StepperOptions o_;
   std::shared_ptr<const FrictionFormulation> form_;
   std::vector<int> still_;
