@@ -461,6 +461,9 @@ void DirectionSweep<NV>::markBlockLines(MPI_Comm comm, const V* q, int nlines, l
   blocks_.clear();
   for (int l = 0; l < nlines; ++l)
     if (flag_[l]) blocks_.push_back(l);
+  if (scheme_->hybrid) // a line with a shock row anywhere (on any rank) gets ENO-Pade rows on every row
+    for (int l : blocks_)
+      for (int k = 0; k < nown; ++k) shock_[(size_t)l * nown + k] = !boundaryFace(periodic, xs + k, n);
 }
 
 // Face fluxes of the lines not in blocks_: scalar rows with NV right-hand sides, all in one batched solve.
@@ -526,8 +529,7 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
       const int l = blocks_[c0 + ib];
       V* hl = h + (size_t)l * nface;
       if (rfChar()) {
-        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, nown, periodic, alpha,
-                  &shock_[(size_t)l * nown], x0, x1, hl);
+        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, periodic, alpha, x0, x1, hl);
         continue;
       }
       for (int k = 0; k < nface; ++k)
@@ -567,27 +569,17 @@ static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, con
   return G::mul(e.R, hc);
 }
 
-// rf-char face fluxes h[0 .. xm] of one block line (q: its cells; shocks: its owned rows' shock flags) from the
-// solutions x0, x1 of its systems (the left- and right-biased rows of f): Lax-Friedrichs dissipation for the
-// fields of mixed sign at the split rows (shock rows, WENO closures) only; at Pade rows and central closures
-// h = (x0 + x1) / 2 (both are central there, and the Pade relations hold for the mean whatever the neighbours
-// are). The face past the owned rows (the next rank's first) is classified by the sensor on the same cells, as
-// its owner does.
+// rf-char face fluxes h[0 .. xm] of one block line (q: its cells) from the solutions x0, x1 of its systems (the
+// left- and right-biased rows of f): per characteristic field, Lax-Friedrichs dissipation for the fields of
+// mixed sign at the split rows (every interior face: CRWENO5 and ENO-Pade rows, WENO closures); at the central
+// closures of enopade6 h = (x0 + x1) / 2 (both are central there).
 template <int NV>
-void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic,
-                                   double alpha, const char* shocks, const double* x0, const double* x1,
-                                   V* h) {
+void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, bool periodic, double alpha,
+                                   const double* x0, const double* x1, V* h) {
   for (int k = 0; k <= xm; ++k) {
-    bool split = !scheme_->hybrid;
-    if (scheme_->hybrid && !boundaryFace(periodic, xs + k, n)) {
-      if (k < nown) {
-        split = shocks[k] != 0;
-      } else {
-        double rho[6], p[6];
-        for (int m = 0; m < 6; ++m) rho[m] = q[k + m][0], p[m] = LineGas<NV>::pressure(q[k + m], opt_.gamma);
-        split = enoPadeShockRow(rho, p, opt_.shock_threshold, theta_);
-      }
-    }
+    // Every interior face of a block line is split (markBlockLines: the hybrid's block lines hold ENO-Pade rows
+    // only), the face past the owned rows too, as on its owner; boundary faces are explicit closures.
+    const bool split = !scheme_->hybrid || !boundaryFace(periodic, xs + k, n);
     if (!split) {
       for (int c = 0; c < NV; ++c) h[k][c] = 0.5 * (x0[NV * k + c] + x1[NV * k + c]);
       continue;

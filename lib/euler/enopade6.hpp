@@ -1,25 +1,33 @@
-// ENO-Pade 6: sixth-order Pade (compact central) interface fluxes in smooth flow, CRWENO5-Z rows at
-// discontinuities. References: Lele, J. Comput. Phys. 103 (1992) 16, eq. (2.1.7) with alpha = 1/3 (sixth
+// ENO-Pade 6: sixth-order Pade (compact central) interface fluxes in smooth flow, central-upwind compact WENO
+// rows on lines with discontinuities. References: Lele, J. Comput. Phys. 103 (1992) 16, eq. (2.1.7) with alpha = 1/3 (sixth
 // order), written in the conservative interface form
 //   (1/3) h_{j-1/2} + h_{j+1/2} + (1/3) h_{j+3/2} = (29/36)(f_j + f_{j+1}) + (1/36)(f_{j-1} + f_{j+2});
 // Wang & Huang, J. Comput. Phys. 177 (2002) 37 (ENO-Pade idea: replace Pade rows near discontinuities by
 // ENO-type compact rows); hybrid switch as in Pirozzoli, J. Comput. Phys. 178 (2002) 81 and Ren, Liu & Zhang,
-// J. Comput. Phys. 192 (2003) 365.
+// J. Comput. Phys. 192 (2003) 365; Hu, Wang & Adams, J. Comput. Phys. 229 (2010) 8952 (central-upwind WENO).
 //
-// Variant implemented (and why): a row-wise hybrid. Shock rows are CRWENO5 rows (Ghosh & Baeder 2012) with
-// WENO-Z weights (p = 2), applied upwind to the split fluxes f+ and f- in characteristic variables (by default;
-// -upwinding rf-char upwinds each field by its Roe speed instead, rf_char.hpp, which costs the hybrid accuracy
-// on Sod: its Pade rows next to the less dissipative shock rows shed more grid-scale waves); all other
-// rows are the Pade row, which is central, so f+ + f- = f and the smooth-flow scheme is the dissipation-free
-// sixth-order Pade scheme. CRWENO rows rather than Wang & Huang's original ENO-Pade stencils: they share the
-// tridiagonal structure, need no stencil selection (nonlinear weights instead), and WENO-Z weights keep fifth
-// order at critical points where the Jiang-Shu weights of the original would drop to third/fourth order.
+// Variant implemented (and why): a line-wise hybrid. A line (a row of cells along the sweep direction, over all
+// its ranks) where the sensor below finds no shock row is a Pade line: central, so f+ + f- = f, the smooth-flow
+// scheme is the dissipation-free sixth-order Pade scheme and its solve is one scalar tridiagonal system per
+// component. A line with a shock row anywhere gets the ENO-Pade row (crweno_cu6.hpp) on every interior row,
+// characteristic-wise and upwinded per field by the sign of its Roe speed (rf-char, rf_char.hpp): a
+// central-upwind compact WENO row whose smooth limit is this Pade row, blended into the CRWENO5-Z row
+// (Ghosh & Baeder 2012) where its downwind candidate is rejected. Why not the former row-wise switch (Pade
+// rows, CRWENO5-Z rows on the flagged rows only): the Pade rows between and next to the flagged rows carry
+// the grid-scale waves that the shocks and contacts shed, undamped and at spurious group velocities
+// (upstream into a supersonic inflow on the Mach 100 case), and the switch between a central and an upwind
+// row is abrupt; with every row of a shocked line nonlinear, the weights damp those waves where they arise
+// and reach the Pade weights where the data are smooth. Measured (issue #18 item 3, HyPar's Sod / Lax
+// settings, docs/euler_extremes.md): L1(rho) Sod N = 200 / 800 2.401e-3 / 7.16e-4 -> 1.859e-3 / 5.47e-4, Lax
+// 8.74e-3 / 2.07e-3 -> 7.03e-3 / 1.71e-3, all at or below HyPar's CRWENO5; at or below this suite's crweno5
+// on 12 of the 16 1D battery cases (the others within 0.6%).
 // Boundary closure (non-periodic lines): the first and last interface of the line use the explicit
 // sixth-order central formula (f_{j-2} - 8 f_{j-1} + 37 f_j + 37 f_{j+1} - 8 f_{j+2} + f_{j+3})/60 on ghost
 // cells (shock rows: explicit WENO5-Z), so the closure is sixth (fifth) order given ghost values of that
 // order.
 //
-// Shock sensor (resolution-aware). Interface j+1/2 is a shock row when, for q = rho or q = p on the row's
+// Shock sensor (resolution-aware; it picks the lines above and gives the flag field). Interface j+1/2 is a
+// shock row when, for q = rho or q = p on the row's
 // cells j-2 .. j+3, both tests fire:
 //  - amplitude (Jameson, Schmidt & Turkel, AIAA 81-1259, 1981): some cell m in j-1 .. j+2 has
 //      phi_m = |q_{m+1} - 2 q_m + q_{m-1}| / (|q_{m+1}| + 2|q_m| + |q_{m-1}|) > -shock_threshold (0.02);

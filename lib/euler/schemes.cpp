@@ -2,6 +2,7 @@
 #include "euler/schemes.hpp"
 
 #include "euler/crweno5.hpp"
+#include "euler/crweno_cu6.hpp"
 #include "euler/enopade6.hpp"
 #include "euler/weno5.hpp"
 
@@ -9,8 +10,8 @@ namespace suite::euler {
 
 namespace {
 const SchemeInfo kSchemes[] = {
-    {"enopade6", "6th-order Pade core, CRWENO5-Z rows at discontinuities (ENO-Pade hybrid)", true, true,
-     false, padeRow, crweno5Row, central6Row, weno5Row, 6, false},
+    {"enopade6", "6th-order Pade core, CRWENO-CU6 / CRWENO5-Z rows on lines with discontinuities (ENO-Pade)",
+     true, true, false, padeRow, enoPadeBlendRow, central6Row, weno5Row, 6, true},
     {"crweno5", "5th-order compact-reconstruction WENO-Z (Ghosh & Baeder 2012)", true, false, false,
      crweno5Row, crweno5Row, weno5Row, weno5Row, 5, true},
     {"weno5", "5th-order WENO-Z, explicit (Jiang & Shu 1996; Borges et al. 2008)", false, false, false,

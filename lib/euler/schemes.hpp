@@ -13,15 +13,14 @@ namespace suite::euler {
 struct SchemeInfo {
   const char* name;
   const char* description;
-  bool compact;                      // rows couple neighbouring interfaces (tridiagonal solve)
-  bool hybrid;                       // rows switch between smooth_row and shock_row by the ENO-Pade sensor
+  bool compact; // rows couple neighbouring interfaces (tridiagonal solve)
+  bool hybrid;  // lines switch between smooth_row and shock_row rows by the ENO-Pade sensor (direction_sweep)
   bool state_riemann;                // muscl2: reconstruct primitive states, HLLC flux (no flux splitting)
   RowFunction smooth_row, shock_row; // interior rows (shock_row used everywhere unless hybrid)
   RowFunction boundary_smooth, boundary_shock; // explicit closure rows at the ends of a non-periodic line
   int order;                                   // formal order in smooth flow
-  // Default flux upwinding of the flux-split schemes (-upwinding; rf_char.hpp): rf-char for CRWENO5 and WENO5,
-  // Lax-Friedrichs for ENO-Pade, whose Pade rows next to rf-char shock rows shed grid-scale waves (measured:
-  // Sod N = 800, fixed dt 2.5e-4, L1(rho) 1.7e-3 with rf-char against 7.2e-4 with Lax-Friedrichs).
+  // Default flux upwinding of the flux-split schemes (-upwinding; rf_char.hpp): rf-char for every one (issue #18
+  // item 3: with its rows of a shocked line all ENO-Pade rows, enopade6 gains from rf-char as CRWENO5 does).
   bool rf_char_default;
 };
 

@@ -83,7 +83,8 @@ def ranks():
     """1 vs 2 vs 4 ranks to 1e-12 relative: 2D Riemann (ENO-Pade, shocks: block line solves), 2D vortex (CRWENO5),
     3D explosion (ENO-Pade; also in 1 MiB block-line batches), 3D Taylor-Green (WENO5). Lines split over ranks are
     transposed (default -line_solve transpose: bitwise the 1-rank result, also for 2048-cell lines moved in
-    1 MiB batches of 31 lines at 2 ranks) or solved in place (-line_solve substructured: round-off)."""
+    1 MiB batches of 31 lines at 2 ranks) or solved in place (-line_solve substructured: round-off, amplified by
+    the nonlinear weights of enopade6's shocked lines to up to 2.9e-12 after 25 steps of lax_liu_4: bound 1e-11)."""
     cases = [["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25],
              ["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25, "-line_solve",
               "substructured"],
@@ -108,7 +109,9 @@ def ranks():
                 res[np_] = fields(path)
             for np_ in (2, 4):
                 v = max_rel_diff(res[1], res[np_])
-                check(v <= 1e-12, f"{' '.join(map(str, c))}: 1 vs {np_} ranks max relative difference {v:.3e}")
+                bound = 1e-11 if "substructured" in c else 1e-12
+                check(v <= bound, f"{' '.join(map(str, c))}: 1 vs {np_} ranks max relative difference {v:.3e} "
+                      f"<= {bound}")
 
 
 def conservation():

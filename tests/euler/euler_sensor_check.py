@@ -55,8 +55,12 @@ def sod():
     """Sod N = 200 to t = 0.2, a snapshot every 10 steps: in every snapshot the flagged cells lie within K cells of
     the exact shock, contact or the rarefaction's head and tail (its kinks: while the fan is a few cells wide it
     is flagged too); the shock is flagged in every snapshot, the contact in at least one; the run's fraction of
-    shock rows is small."""
-    k = 4
+    shock rows is small. Since the shocked lines are all ENO-Pade rows (enopade6.hpp) the contact stays 2-3
+    cells wide and flagged all run: a band of 7-8 cells (the five rows whose stencils hold the jump, and the
+    jump's own width) whose edge lies up to 4.02 cells from the exact contact (t = 0.084), so K = 5, and two
+    such fronts in 200 rows make about 7% of the rows (bound 0.08; 0.05 while the contact smeared and lost its
+    flags after t = 0.07)."""
+    k = 5
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "sod.h5")
         shock, rows, frac = sensor_rows(run(["-problem", "sod", "-nx", 200, "-t_final", 0.2, "-snapshot_every", 10,
@@ -74,7 +78,7 @@ def sod():
             check(t == 0.0 or np.any(np.abs(xs - fronts[0]) <= k * dx), f"t = {t:.4f}: the shock is flagged")
             contact_seen += t > 0.0 and bool(np.any(np.abs(xs - fronts[1]) <= k * dx))
         check(contact_seen >= 1, f"the contact is flagged in {contact_seen} snapshot(s)")
-        check(frac <= 0.05, f"fraction of shock rows over the run {frac:.3e} ({shock} of {rows}) <= 0.05")
+        check(frac <= 0.08, f"fraction of shock rows over the run {frac:.3e} ({shock} of {rows}) <= 0.08")
 
 
 def shu_osher():

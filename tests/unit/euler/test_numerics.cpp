@@ -1,6 +1,7 @@
 // Euler numerics without MPI: reconstruction orders (WENO5-Z, Pade, CRWENO5-Z at critical points), exact Riemann
 // solver against Toro's tables (the line gas of 1D/2D/3D: test_line_gas.cpp).
 #include "euler/crweno5.hpp"
+#include "euler/crweno_cu6.hpp"
 #include "euler/enopade6.hpp"
 #include "euler/exact_riemann.hpp"
 #include "euler/weno5.hpp"
@@ -75,12 +76,52 @@ TEST(EulerReconstruction, Weno5ZIsFifthOrder) {
 }
 
 TEST(EulerReconstruction, EnoPadeShockRowsKeepFifthOrderAtCriticalPoints) {
-  // The ENO part of enopade6 (CRWENO5-Z rows), forced on every row, on sin(pi x - sin(pi x)/pi).
+  // The crweno5 rows (and the upwind limit of enopade6's ENO-Pade rows), forced on every row, on sin(pi x - sin(pi x)/pi).
   std::vector<double> e;
   const double o = order([](int n) { return derivativeError(n, critF, critDF, crweno5Row); }, 40, 4, &e);
   for (double x : e) std::printf("  crweno5-z error %.3e\n", x);
   std::printf("  crweno5-z (ENO-Pade shock rows) order at critical points %.2f\n", o);
   EXPECT_GE(o, 4.8);
+}
+
+// The ENO-Pade rows of enopade6's shocked lines (crweno_cu6.hpp).
+TEST(EulerReconstruction, Cu6OptimalWeightsGiveThePadeRow) {
+  const double d[4] = {0.1, 0.4, 0.4, 0.1};
+  const double v[6] = {0.3, -1.2, 2.5, 0.7, 1.9, -0.4};
+  const Row cu6 = cu6RowFromWeights(v, d), pade = padeRow(v);
+  EXPECT_NEAR(cu6.a, 0.6 * pade.a, 1e-15);
+  EXPECT_NEAR(cu6.b, 0.6 * pade.b, 1e-15);
+  EXPECT_NEAR(cu6.c, 0.6 * pade.c, 1e-15);
+  EXPECT_NEAR(cu6.r, 0.6 * pade.r, 1e-15);
+}
+
+TEST(EulerReconstruction, Cu6SmoothnessOfPolynomials) {
+  // beta_6 = sum_l int_{-1/2}^{1/2} (p^(l))^2: p = x (cell values m) gives 1, p = x^2 (m^2 + 1/12) gives 13/3.
+  double lin[6], quad[6];
+  for (int m = 0; m < 6; ++m) lin[m] = m - 2, quad[m] = (m - 2) * (m - 2) + 1.0 / 12.0;
+  EXPECT_NEAR(cu6Smoothness(lin), 1.0, 1e-12);
+  EXPECT_NEAR(cu6Smoothness(quad), 13.0 / 3.0, 1e-12);
+}
+
+TEST(EulerReconstruction, EnoPadeRowsOrderAndJumps) {
+  std::vector<double> e, ec;
+  const double o =
+      order([](int n) { return derivativeError(n, smoothF, smoothDF, enoPadeBlendRow); }, 20, 4, &e);
+  const double oc =
+      order([](int n) { return derivativeError(n, critF, critDF, enoPadeBlendRow); }, 40, 4, &ec);
+  std::printf("  eno-pade rows: order %.2f (smooth), %.2f (critical points)\n", o, oc);
+  EXPECT_GE(o, 5.8); // the Pade row's order where the weights reach d
+  EXPECT_GE(oc, 4.8);
+  // A jump in the downwind cells (f_{j+1} | f_{j+2} or f_{j+2} | f_{j+3}) rejects the downwind candidate: the
+  // row is the CRWENO5-Z row.
+  for (int f = 3; f <= 4; ++f) {
+    double v[6];
+    for (int m = 0; m < 6; ++m) v[m] = m <= f ? 1.0 : 0.125;
+    const Row b = enoPadeBlendRow(v), c = crweno5Row(v);
+    EXPECT_NEAR(b.a, c.a, 1e-6) << "jump after cell " << f;
+    EXPECT_NEAR(b.c, c.c, 1e-6) << "jump after cell " << f;
+    EXPECT_NEAR(b.r, c.r, 1e-6) << "jump after cell " << f;
+  }
 }
 
 TEST(EulerReconstruction, ShockSensorQuietOnSmoothLoudOnJump) {
