@@ -444,6 +444,21 @@ void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, 
   if (opt_.positivity && lambda > 0.0) limitFaces(q, nlines, xm, lambda, h);
 }
 
+// Whether the six cells qs[0..5] of a row hold one state to 1e-12 relative (to the largest component): there the
+// ENO-Pade row's weights are the Pade weights to ~1e-18 (beta_k ~ (1e-12 q)^2 against epsilon ~ 1e-6 q^2,
+// weno5.hpp), so the row is the Pade row (crweno_cu6.hpp) and is assembled as one, without the characteristic
+// projection and the weights: a round-off change that saves most of a shocked line's row cost where the line is
+// at rest (the 3D explosion at 64^3: ENO-Pade / WENO5 cost 3.2 -> see docs/euler_extremes.md).
+template <int NV> static bool uniformStencil(const typename LineGas<NV>::V* qs) {
+  double scale = 0.0, diff = 0.0;
+  for (int m = 0; m < 6; ++m)
+    for (int c = 0; c < NV; ++c) {
+      scale = std::max(scale, std::abs(qs[m][c]));
+      diff = std::max(diff, std::abs(qs[m][c] - qs[0][c]));
+    }
+  return diff <= 1e-12 * scale;
+}
+
 // Marks the shock rows of every line (shock_) and the lines that need the block solve (flag_, agreed over the
 // ranks of the line; blocks_: their indices).
 template <int NV>
@@ -462,8 +477,11 @@ void DirectionSweep<NV>::markBlockLines(MPI_Comm comm, const V* q, int nlines, l
   for (int l = 0; l < nlines; ++l)
     if (flag_[l]) blocks_.push_back(l);
   if (scheme_->hybrid) // a line with a shock row anywhere (on any rank) gets ENO-Pade rows on every row
-    for (int l : blocks_)
-      for (int k = 0; k < nown; ++k) shock_[(size_t)l * nown + k] = !boundaryFace(periodic, xs + k, n);
+    for (int l : blocks_) {
+      const V* ql = q + (size_t)l * ncell;
+      for (int k = 0; k < nown; ++k)
+        shock_[(size_t)l * nown + k] = !boundaryFace(periodic, xs + k, n) && !uniformStencil<NV>(ql + k);
+    }
 }
 
 // Face fluxes of the lines not in blocks_: scalar rows with NV right-hand sides, all in one batched solve.
@@ -529,7 +547,8 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
       const int l = blocks_[c0 + ib];
       V* hl = h + (size_t)l * nface;
       if (rfChar()) {
-        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, periodic, alpha, x0, x1, hl);
+        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, nown, periodic, alpha,
+                  &shock_[(size_t)l * nown], x0, x1, hl);
         continue;
       }
       for (int k = 0; k < nface; ++k)
@@ -571,15 +590,18 @@ static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, con
 
 // rf-char face fluxes h[0 .. xm] of one block line (q: its cells) from the solutions x0, x1 of its systems (the
 // left- and right-biased rows of f): per characteristic field, Lax-Friedrichs dissipation for the fields of
-// mixed sign at the split rows (every interior face: CRWENO5 and ENO-Pade rows, WENO closures); at the central
-// closures of enopade6 h = (x0 + x1) / 2 (both are central there).
+// mixed sign at the split rows (CRWENO5 and ENO-Pade rows, WENO closures); at the Pade rows and central closures
+// of enopade6 h = (x0 + x1) / 2 (both are central there).
 template <int NV>
-void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, bool periodic, double alpha,
-                                   const double* x0, const double* x1, V* h) {
+void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic,
+                                   double alpha, const char* shocks, const double* x0, const double* x1,
+                                   V* h) {
   for (int k = 0; k <= xm; ++k) {
-    // Every interior face of a block line is split (markBlockLines: the hybrid's block lines hold ENO-Pade rows
-    // only), the face past the owned rows too, as on its owner; boundary faces are explicit closures.
-    const bool split = !scheme_->hybrid || !boundaryFace(periodic, xs + k, n);
+    // The hybrid's block lines (markBlockLines) split their ENO-Pade rows and average at their Pade rows (uniform
+    // stencils) and closures; the face past the owned rows is classified on the same cells as on its owner.
+    bool split = !scheme_->hybrid;
+    if (scheme_->hybrid && !boundaryFace(periodic, xs + k, n))
+      split = k < nown ? shocks[k] != 0 : !uniformStencil<NV>(q + k);
     if (!split) {
       for (int c = 0; c < NV; ++c) h[k][c] = 0.5 * (x0[NV * k + c] + x1[NV * k + c]);
       continue;
