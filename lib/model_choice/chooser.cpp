@@ -1,0 +1,191 @@
+// The chooser of an accuracy-target run (see chooser.hpp): pilots, candidate table, choice, final run with its
+// own error check, bounded escalation.
+#include "model_choice/chooser.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace suite::model_choice {
+
+double ModelChooser::pilotSeconds() const {
+  double s = 0.0;
+  for (const RunRecord& r : pilots_) s += r.seconds;
+  return s;
+}
+
+double ModelChooser::finalSeconds() const {
+  double s = 0.0;
+  for (const RunRecord& r : finals_) s += r.seconds;
+  return s;
+}
+
+std::string ModelChooser::label(int family, long long n) const {
+  return families_[(size_t)family].name + " n=" + std::to_string(n);
+}
+
+PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
+  PetscFunctionBeginUser;
+  const size_t nf = families_.size();
+  orders_.assign(nf, ObservedOrder());
+  finest_.assign(nf, GridField());
+  finest_n_.assign(nf, 0);
+  prev_n_.assign(nf, 0);
+  prev_d_.assign(nf, 0.0);
+  for (size_t f = 0; f < nf; ++f) {
+    RunResult r[3];
+    for (int k = 0; k < 3; ++k) {
+      const long long n = set_.n0 << k;
+      PetscCall(runner(families_[f], n, false, &r[k]));
+      if (!cost_.loaded()) cost_.add(families_[f].name, (double)n, r[k].seconds);
+      pilots_.push_back({(int)f, n, r[k].seconds, k ? l1Distance(r[k - 1].density, r[k].density) : NAN, NAN});
+    }
+    const size_t last = pilots_.size() - 1;
+    const double n0 = (double)set_.n0;
+    orders_[f] = fitObservedOrder(n0, 2 * n0, 4 * n0, pilots_[last - 1].difference, pilots_[last].difference);
+    for (size_t k = last - 2; k <= last; ++k) pilots_[k].estimate = orders_[f].errorAt((double)pilots_[k].n);
+    finest_[f] = std::move(r[2].density);
+    finest_n_[f] = set_.n0 << 2;
+    prev_n_[f] = set_.n0 << 1;
+    prev_d_[f] = pilots_[last].difference;
+  }
+  std::vector<std::string> names;
+  for (const Family& f : families_) names.push_back(f.name);
+  PetscCall(cost_.checkCovers(comm_, names));
+  PetscFunctionReturn(0);
+}
+
+void ModelChooser::buildTable() {
+  table_.clear();
+  for (size_t f = 0; f < families_.size(); ++f)
+    for (int k = 0;; ++k) {
+      const long long n = std::llround((double)set_.n0 * std::exp2((double)k / set_.per_octave));
+      if (n > set_.n_max) break;
+      table_.push_back({(int)f, n, cost_.predict(families_[f].name, (double)n), orders_[f].errorAt((double)n)});
+    }
+  most_accurate_ = table_.empty() ? CandidateRow() : table_[0];
+  for (const CandidateRow& r : table_)
+    if (r.error < most_accurate_.error || (r.error == most_accurate_.error && r.cost < most_accurate_.cost))
+      most_accurate_ = r;
+}
+
+bool ModelChooser::feasible(const CandidateRow& r) const {
+  if (!std::isfinite(r.error)) return false;
+  if (set_.target_error > 0 && !(r.error <= set_.target_error / set_.safety)) return false;
+  return set_.target_walltime <= 0 || pilotSeconds() + finalSeconds() + r.cost <= set_.target_walltime;
+}
+
+bool ModelChooser::better(const CandidateRow& a, const CandidateRow& b) const {
+  if (set_.target_error > 0) return a.cost < b.cost || (a.cost == b.cost && a.error < b.error);
+  return a.error < b.error || (a.error == b.error && a.cost < b.cost);
+}
+
+// The best feasible row not yet run (done[i]); out->n = 0 when there is none.
+PetscErrorCode ModelChooser::choose(const std::vector<bool>& done, CandidateRow* out) const {
+  PetscFunctionBeginUser;
+  *out = CandidateRow();
+  for (size_t i = 0; i < table_.size(); ++i)
+    if (!done[i] && feasible(table_[i]) && (out->n == 0 || better(table_[i], *out))) *out = table_[i];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModelChooser::explainUnreachable() const {
+  PetscFunctionBeginUser;
+  CandidateRow best = table_.empty() ? CandidateRow() : table_[0], cheapest = best;
+  for (const CandidateRow& r : table_) {
+    const bool in_time = set_.target_walltime <= 0 || pilotSeconds() + r.cost <= set_.target_walltime;
+    if (in_time && (r.error < best.error || !std::isfinite(best.error))) best = r;
+    if (r.cost < cheapest.cost) cheapest = r;
+  }
+  PetscCheck(std::isfinite(best.error), comm_, PETSC_ERR_NOT_CONVERGED,
+             "-target_error/-target_walltime: no candidate family's pilots converge (n0 = %lld: %s); raise "
+             "-target_pilot_n",
+             set_.n0, orders_.empty() ? "" : orders_[0].why.c_str());
+  PetscCheck(set_.target_error <= 0, comm_, PETSC_ERR_ARG_OUTOFRANGE,
+             "-target_error %g cannot be reached%s: best reachable is %.3e (%s, predicted %.3g s; candidates "
+             "up to -target_max_n %lld, safety factor %g)",
+             set_.target_error, set_.target_walltime > 0 ? " within -target_walltime" : "", best.error,
+             label(best.family, best.n).c_str(), best.cost, set_.n_max, set_.safety);
+  SETERRQ(comm_, PETSC_ERR_ARG_OUTOFRANGE,
+          "-target_walltime %g s cannot be met: %.3g s of pilots, then the cheapest candidate (%s) is predicted "
+          "to take %.3g s",
+          set_.target_walltime, pilotSeconds(), label(cheapest.family, cheapest.n).c_str(), cheapest.cost);
+}
+
+// The problem's regularity bounds every family's order: a lower order observed at finer levels caps the others,
+// each re-anchored at its finest run (same error there, slower decay beyond).
+void ModelChooser::capOrders(double p) {
+  for (size_t f = 0; f < orders_.size(); ++f)
+    if (orders_[f].valid && orders_[f].p > p) {
+      const double n = (double)finest_n_[f], e = orders_[f].errorAt(n);
+      orders_[f].p = p, orders_[f].a = e * std::pow(n, p);
+    }
+}
+
+// Runs c and estimates its error against the finest earlier run of its family (see the header); a miss
+// replaces the family's fit by what the final run showed.
+PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& c) {
+  RunResult r;
+  const size_t f = (size_t)c.family;
+  PetscFunctionBeginUser;
+  PetscCall(runner(families_[f], c.n, true, &r));
+  ObservedOrder& o = orders_[f];
+  const long long n_ref = finest_n_[f];
+  RunRecord rec{c.family, c.n, r.seconds, NAN, o.errorAt((double)c.n)};
+  ObservedOrder refit;
+  if (c.n != n_ref) {
+    rec.difference = l1Distance(finest_[f], r.density);
+    rec.estimate = pairEstimate((double)n_ref, (double)c.n, rec.difference, o.p);
+    if ((double)c.n >= kRefitRatio * (double)n_ref)
+      refit = fitObservedOrder((double)prev_n_[f], (double)n_ref, (double)c.n, prev_d_[f], rec.difference);
+    if (refit.valid) rec.estimate = refit.errorAt((double)c.n);
+  }
+  finals_.push_back(rec);
+  chosen_ = c;
+  met_ = set_.target_error <= 0 || rec.estimate <= set_.target_error;
+  if (refit.valid && refit.p < o.p) capOrders(refit.p);
+  if (refit.valid)
+    o = refit;
+  else if (rec.estimate > o.errorAt((double)c.n))
+    o.a = rec.estimate * std::pow((double)c.n, o.p);
+  if (c.n > n_ref) {
+    finest_[f] = std::move(r.density);
+    prev_n_[f] = n_ref, prev_d_[f] = rec.difference, finest_n_[f] = c.n;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModelChooser::run(const Runner& runner) {
+  CandidateRow c;
+  PetscFunctionBeginUser;
+  PetscCall(runPilots(runner));
+  buildTable();
+  std::vector<bool> done(table_.size(), false);
+  PetscCall(choose(done, &c));
+  if (c.n == 0) PetscCall(explainUnreachable());
+  for (int escalation = 0;; ++escalation) {
+    PetscCall(runFinal(runner, c));
+    if (met_ || escalation == set_.max_escalations) break;
+    buildTable(); // the same rows, with the missed family's errors raised
+    for (size_t i = 0; i < table_.size(); ++i)
+      done[i] = done[i] || (table_[i].family == c.family && table_[i].n <= c.n);
+    PetscCall(choose(done, &c));
+    if (c.n == 0) break; // nothing left that is predicted to do better: report the miss
+  }
+  PetscFunctionReturn(0);
+}
+
+std::string ModelChooser::summary() const {
+  char b[1024];
+  const RunRecord& f = finals_.back();
+  std::snprintf(b, sizeof b,
+                "model_choice: target error %.3g, walltime %.3g s: chose %s (predicted error %.3g, cost %.3g s); "
+                "estimated error %.3g (%s); pilots %zu runs %.3g s, final runs %zu %.3g s; most accurate "
+                "candidate %s would cost %.3g s (predicted error %.3g)",
+                set_.target_error, set_.target_walltime, label(chosen_.family, chosen_.n).c_str(), chosen_.error,
+                chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size(), pilotSeconds(),
+                finals_.size(), finalSeconds(), label(most_accurate_.family, most_accurate_.n).c_str(),
+                most_accurate_.cost, most_accurate_.error);
+  return b;
+}
+
+} // namespace suite::model_choice

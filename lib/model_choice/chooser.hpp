@@ -1,0 +1,109 @@
+// The chooser of an accuracy-target run: given candidate families (configurations as option values, see
+// candidate.hpp) and a target, it
+//   1. runs three pilots per family at n0, 2 n0, 4 n0 (timed: the cost model, unless one was loaded; their
+//      differences: the observed order and error constant, observed_order.hpp),
+//   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
+//      and predicted error,
+//   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone, the
+//      most accurate one predicted to finish within the time left), runs it through the caller's runner,
+//   4. checks its own estimate: the final run against the finest earlier run of its family: when it is at least
+//      kRefitRatio times finer, the order is observed again from the last three levels of the family
+//      (fitObservedOrder on the previous, the finest and the final run), otherwise the observed order stays and
+//      the pair estimate is used (a lower order observed this way caps every family's order: the problem's
+//      regularity bounds them all); when the estimate misses the target the family's fit is replaced by what the
+//      final run showed and the next candidate is run (at most max_escalations times).
+// A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
+// same decisions: the runner must return the same density field and the same seconds (e.g. the maximum over
+// the ranks) on every rank.
+#pragma once
+
+#include "model_choice/candidate.hpp"
+#include "model_choice/cost_model.hpp"
+#include "model_choice/grid_distance.hpp"
+#include "model_choice/observed_order.hpp"
+
+#include <petscsys.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace suite::model_choice {
+
+constexpr double kRefitRatio = 1.4; // a final run this much finer than the reference: observe the order again
+
+struct ChooserSettings {
+  double target_error = 0.0;    // 0: none (then target_walltime must be set)
+  double target_walltime = 0.0; // seconds for the whole run, pilots included; 0: none
+  double safety = 2.0;          // a candidate must be predicted to reach target_error / safety
+  int max_escalations = 2;
+  long long n0 = 25, n_max = 3200;
+  int per_octave = 4;
+};
+
+struct RunResult {
+  GridField density; // the final density on the whole grid, the same on every rank
+  double seconds = 0.0;
+};
+// Runs family f at resolution n; final: the run whose output is kept.
+using Runner = std::function<PetscErrorCode(const Family& f, long long n, bool final, RunResult* r)>;
+
+struct CandidateRow {
+  int family = 0;
+  long long n = 0;
+  double cost = 0.0, error = 0.0; // predicted seconds, predicted L1 error
+};
+struct RunRecord {
+  int family = 0;
+  long long n = 0;
+  double seconds = 0.0;
+  double difference = NAN; // L1 distance to the previous run of the family (pilots) / to the reference (final)
+  double estimate = NAN;   // finals: the estimated error; pilots: the fit's error at n
+};
+
+class ModelChooser {
+public:
+  ModelChooser(MPI_Comm comm, std::vector<Family> families, const ChooserSettings& s, const CostModel& loaded)
+      : comm_(comm), families_(std::move(families)), set_(s), cost_(loaded) {}
+  PetscErrorCode run(const Runner& runner);
+
+  const std::vector<Family>& families() const { return families_; }
+  const ChooserSettings& settings() const { return set_; }
+  const CostModel& costModel() const { return cost_; }
+  const std::vector<ObservedOrder>& orders() const { return orders_; }
+  const std::vector<CandidateRow>& table() const { return table_; }
+  const std::vector<RunRecord>& pilots() const { return pilots_; }
+  const std::vector<RunRecord>& finals() const { return finals_; }
+  const CandidateRow& chosen() const { return chosen_; } // the last candidate run
+  const CandidateRow& mostAccurate() const { return most_accurate_; }
+  bool met() const { return met_; } // the final estimate is within the target (or no error target)
+  double pilotSeconds() const;
+  double finalSeconds() const;
+  std::string label(int family, long long n) const;
+  std::string summary() const; // one line
+
+private:
+  PetscErrorCode runPilots(const Runner& runner);
+  void buildTable();
+  bool feasible(const CandidateRow& r) const;
+  bool better(const CandidateRow& a, const CandidateRow& b) const;
+  PetscErrorCode choose(const std::vector<bool>& done, CandidateRow* out) const;
+  PetscErrorCode explainUnreachable() const;
+  PetscErrorCode runFinal(const Runner& runner, const CandidateRow& c);
+  void capOrders(double p);
+
+  MPI_Comm comm_;
+  std::vector<Family> families_;
+  ChooserSettings set_;
+  CostModel cost_;
+  std::vector<ObservedOrder> orders_;
+  std::vector<GridField> finest_; // per family: the finest run so far (the reference of the next check)
+  std::vector<long long> finest_n_, prev_n_; // per family: the finest run's n, the one before it
+  std::vector<double> prev_d_;                // per family: the distance between those two
+  std::vector<CandidateRow> table_;
+  std::vector<RunRecord> pilots_, finals_;
+  CandidateRow chosen_, most_accurate_;
+  bool met_ = false;
+};
+
+} // namespace suite::model_choice
