@@ -148,10 +148,10 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   mc::ModelChooser chooser(ctx.comm(), fams, chooserSettings(t), cost);
   PetscCall(chooser.run(runner));
   if (!output.empty()) PetscCall(mc::writeModelChoice(ctx.comm(), output, chooser));
-  PetscCall(suite::logInfo(ctx.comm(), false, "%s%s", chooser.summary().c_str(),
-                           std::isfinite(exact_l1)
-                               ? ("; error against the exact solution " + std::to_string(exact_l1)).c_str()
-                               : ""));
+  char exact[64] = "";
+  if (std::isfinite(exact_l1))
+    PetscCall(PetscSNPrintf(exact, sizeof exact, "; L1 error against the exact solution %.3e", exact_l1));
+  PetscCall(suite::logInfo(ctx.comm(), false, "%s%s", chooser.summary().c_str(), exact));
   PetscCheck(chooser.met(), ctx.comm(), PETSC_ERR_NOT_CONVERGED,
              "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s); best "
              "reachable is about that",

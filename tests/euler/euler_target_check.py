@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""euler -target_error (issue #17): the chooser's achieved error against the exact solution is <= the target
+on Sod and the density wave for two targets a decade apart, the /model_choice group is complete, and a 2-rank
+run given the 1-rank run's cost model (-cost_model) takes the same choice. Each case runs in a few seconds.
+
+Usage: euler_target_check.py sod|density_wave|ranks
+"""
+import os
+import sys
+import tempfile
+
+import h5py
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from euler_harness import check, error, run  # noqa: E402
+
+ATTRS = ["families", "target_error", "chosen_label", "chosen_n", "chosen_predicted_error", "chosen_predicted_cost",
+         "estimated_error", "target_met", "pilot_seconds", "final_seconds", "total_seconds",
+         "most_accurate_label", "most_accurate_predicted_cost", "most_accurate_predicted_error", "summary"]
+COLUMNS = {"candidates": ["family", "n", "predicted_cost", "predicted_error"],
+           "pilots": ["family", "n", "seconds", "difference", "estimate"],
+           "finals": ["family", "n", "seconds", "difference", "estimate"]}
+
+
+def check_group(path, target):
+    with h5py.File(path, "r") as f:
+        g = f["model_choice"]
+        missing = [a for a in ATTRS if a not in g.attrs]
+        missing += [f"{t}/{c}" for t, cols in COLUMNS.items() for c in cols if f"{t}/{c}" not in g]
+        check(not missing, f"/model_choice complete (missing: {missing})")
+        fams = g.attrs["families"].split(",")
+        check(len(g["pilots/n"]) == 3 * len(fams), f"{len(g['pilots/n'])} pilots: 3 per family ({len(fams)})")
+        check(len(g["candidates/n"]) > 0 and all(g["candidates/predicted_cost"][:] > 0), "candidate table costed")
+        check(g.attrs["target_met"] == 1 and g.attrs["estimated_error"] <= target,
+              f"estimated error {g.attrs['estimated_error']:.3e} <= target {target:g}")
+        return g.attrs["chosen_label"], f.attrs["error_l1_rho"]
+
+
+def target_case(problem, targets, extra=()):
+    with tempfile.TemporaryDirectory() as tmp:
+        for e in targets:
+            out = os.path.join(tmp, f"{problem}.h5")
+            log = run(["-problem", problem, "-target_error", e, "-error", "-output", out, "-quiet", *extra])
+            check("model_choice: target error" in log, "one-line summary printed")
+            label, achieved = check_group(out, e)
+            check(abs(achieved - error(log)) <= 1e-6 * achieved, "the output's error is the final run's")
+            check(achieved <= e, f"{problem}: achieved L1 error {achieved:.3e} <= target {e:g} ({label})")
+
+
+def sod():
+    target_case("sod", [5e-3, 5e-4])
+
+
+def density_wave():
+    target_case("density_wave", [1e-6, 1e-7])
+
+
+def ranks():
+    with tempfile.TemporaryDirectory() as tmp:
+        one, two = os.path.join(tmp, "one.h5"), os.path.join(tmp, "two.h5")
+        args = ["-problem", "sod", "-target_error", 2e-3, "-error", "-quiet"]
+        run(args + ["-output", one])
+        run(args + ["-output", two, "-cost_model", one], np_=2)
+        a, ea = check_group(one, 2e-3)
+        b, eb = check_group(two, 2e-3)
+        check(a == b, f"1 rank chose {a}, 2 ranks (same cost model) chose {b}")
+        check(abs(ea - eb) <= 1e-12 * ea, f"achieved errors {ea:.15e} and {eb:.15e} agree")
+
+
+if __name__ == "__main__":
+    globals()[sys.argv[1]]()
