@@ -48,11 +48,12 @@ public:
 
   // For the accuracy-target driver (euler_target.cpp): runs whose log lines are left out (pilots), the options
   // read, the final density on the whole grid on every rank (euler_density_field.cpp), the solve's wall time
-  // (CPU seconds, the maximum over the ranks) and the L1 density error of -error (NaN without).
+  // (CPU seconds, the maximum over the ranks), its steps and the L1 density error of -error (NaN without).
   void setQuiet(bool q) { quiet_ = q; }
   const Options& options() const { return opt_; }
   PetscErrorCode densityField(suite::model_choice::GridField* g) const;
   PetscErrorCode solveSeconds(double* seconds) const;
+  PetscInt steps() const { return step_; }
   double l1DensityError() const { return err_.have ? err_.l1[0] : NAN; }
 
 private:

@@ -77,15 +77,17 @@ PetscErrorCode targetFamilies(MPI_Comm comm, const TargetOptions& t, std::vector
   PetscFunctionReturn(0);
 }
 
-// The options of one run of family f at resolution n (pilots: no output, no errors, no snapshots).
-PetscErrorCode applyRunOptions(const mc::Family& f, long long n, bool final, const PetscInt aspect[3], int dim,
-                               mc::ScopedOptions* so) {
+// The options of one run of family f at resolution n (pilots and timing runs: no output, no errors, no
+// snapshots; timing runs: mc::kTimingSteps steps).
+PetscErrorCode applyRunOptions(const mc::Family& f, long long n, mc::RunKind kind, const PetscInt aspect[3],
+                               int dim, mc::ScopedOptions* so) {
   const char* axes[3] = {"-nx", "-ny", "-nz"};
   PetscFunctionBeginUser;
   PetscCall(so->setAll(f.options));
   for (int d = 0; d < dim; ++d)
     PetscCall(so->set(axes[d], std::to_string(std::max(1LL, std::llround((double)n * aspect[d] / aspect[0])))));
-  if (final) PetscFunctionReturn(0);
+  if (kind == mc::RunKind::final) PetscFunctionReturn(0);
+  if (kind == mc::RunKind::timing) PetscCall(so->set("-max_steps", std::to_string(mc::kTimingSteps)));
   PetscCall(so->unset("-output"));
   PetscCall(so->set("-error", "false"));
   PetscCall(so->set("-snapshot_every", "0"));
@@ -130,18 +132,19 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   PetscCall(targetFamilies(ctx.comm(), t, &fams));
   PetscCall(probeOptions(ctx, dim, aspect, &output));
   if (!t.cost_model.empty()) PetscCall(cost.load(ctx.comm(), t.cost_model));
-  auto runner = [&](const mc::Family& f, long long n, bool final, mc::RunResult* r) -> PetscErrorCode {
+  auto runner = [&](const mc::Family& f, long long n, mc::RunKind kind, mc::RunResult* r) -> PetscErrorCode {
     mc::ScopedOptions so;
     PetscFunctionBeginUser;
-    PetscCall(applyRunOptions(f, n, final, aspect, dim, &so));
+    PetscCall(applyRunOptions(f, n, kind, aspect, dim, &so));
     EulerRun run(ctx, dim);
-    run.setQuiet(!final);
+    run.setQuiet(kind != mc::RunKind::final);
     PetscCall(run.readOptions());
     PetscCall(run.setup());
     PetscCall(run.solve());
-    PetscCall(run.densityField(&r->density));
+    if (kind != mc::RunKind::timing) PetscCall(run.densityField(&r->density));
     PetscCall(run.solveSeconds(&r->seconds));
-    if (final) exact_l1 = run.l1DensityError();
+    r->steps = run.steps();
+    if (kind == mc::RunKind::final) exact_l1 = run.l1DensityError();
     PetscCall(so.restore());
     PetscFunctionReturn(0);
   };

@@ -15,11 +15,12 @@ void writeColumn(H5AppendFile& h5, const std::string& name, const std::vector<T>
 }
 
 void writeRuns(H5AppendFile& h5, const std::string& group, const std::vector<RunRecord>& runs) {
-  std::vector<long long> fam, n;
+  std::vector<long long> fam, n, steps;
   std::vector<double> sec, diff, est;
   for (const RunRecord& r : runs)
     fam.push_back(r.family), n.push_back(r.n), sec.push_back(r.seconds), diff.push_back(r.difference),
-        est.push_back(r.estimate);
+        est.push_back(r.estimate), steps.push_back(r.steps);
+  writeColumn(h5, group + "/steps", steps);
   writeColumn(h5, group + "/family", fam);
   writeColumn(h5, group + "/n", n);
   writeColumn(h5, group + "/seconds", sec);
@@ -92,6 +93,7 @@ PetscErrorCode writeModelChoice(MPI_Comm comm, const std::string& path, const Mo
       writeTable(h5, chooser);
       writeRuns(h5, "/model_choice/pilots", chooser.pilots());
       writeRuns(h5, "/model_choice/finals", chooser.finals());
+      writeRuns(h5, "/model_choice/timings", chooser.timings());
       h5.close();
     } catch (const std::exception& e) {
       PetscCall(PetscSNPrintf(message, sizeof message, "%s", e.what()));

@@ -7,9 +7,10 @@
 
 namespace suite::model_choice {
 
-double ModelChooser::pilotSeconds() const {
+double ModelChooser::pilotSeconds() const { // pilots and timing runs: what the choice cost
   double s = 0.0;
   for (const RunRecord& r : pilots_) s += r.seconds;
+  for (const RunRecord& r : timings_) s += r.seconds;
   return s;
 }
 
@@ -35,9 +36,10 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
     RunResult r[3];
     for (int k = 0; k < 3; ++k) {
       const long long n = set_.n0 << k;
-      PetscCall(runner(families_[f], n, false, &r[k]));
-      if (!cost_.loaded()) cost_.add(families_[f].name, (double)n, r[k].seconds);
-      pilots_.push_back({(int)f, n, r[k].seconds, k ? l1Distance(r[k - 1].density, r[k].density) : NAN, NAN});
+      PetscCall(runner(families_[f], n, RunKind::pilot, &r[k]));
+      if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r[k].seconds, (double)r[k].steps, true});
+      const double d = k ? l1Distance(r[k - 1].density, r[k].density) : NAN;
+      pilots_.push_back({(int)f, n, r[k].seconds, r[k].steps, d, NAN});
     }
     const size_t last = pilots_.size() - 1;
     const double n0 = (double)set_.n0;
@@ -51,6 +53,22 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   std::vector<std::string> names;
   for (const Family& f : families_) names.push_back(f.name);
   PetscCall(cost_.checkCovers(comm_, names));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModelChooser::runTimings(const Runner& runner) {
+  PetscFunctionBeginUser;
+  if (cost_.loaded()) PetscFunctionReturn(0);
+  for (size_t f = 0; f < families_.size(); ++f)
+    for (long long n : {set_.n0 << 3, set_.n0 << 5}) {
+      RunResult r;
+      if (n > set_.n_max) n = set_.n_max;
+      if (n <= set_.n0 << 2 || (!timings_.empty() && timings_.back().family == (int)f && timings_.back().n == n))
+        continue;
+      PetscCall(runner(families_[f], n, RunKind::timing, &r));
+      cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
+      timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
+    }
   PetscFunctionReturn(0);
 }
 
@@ -127,10 +145,11 @@ PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& 
   RunResult r;
   const size_t f = (size_t)c.family;
   PetscFunctionBeginUser;
-  PetscCall(runner(families_[f], c.n, true, &r));
+  PetscCall(runner(families_[f], c.n, RunKind::final, &r));
+  if (!cost_.loaded()) cost_.add(families_[f].name, {(double)c.n, r.seconds, (double)r.steps, true});
   ObservedOrder& o = orders_[f];
   const long long n_ref = finest_n_[f];
-  RunRecord rec{c.family, c.n, r.seconds, NAN, o.errorAt((double)c.n)};
+  RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, o.errorAt((double)c.n)};
   ObservedOrder refit;
   if (c.n != n_ref) {
     rec.difference = l1Distance(finest_[f], r.density);
@@ -158,6 +177,7 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
   CandidateRow c;
   PetscFunctionBeginUser;
   PetscCall(runPilots(runner));
+  PetscCall(runTimings(runner));
   buildTable();
   std::vector<bool> done(table_.size(), false);
   PetscCall(choose(done, &c));
@@ -179,10 +199,10 @@ std::string ModelChooser::summary() const {
   const RunRecord& f = finals_.back();
   std::snprintf(b, sizeof b,
                 "model_choice: target error %.3g, walltime %.3g s: chose %s (predicted error %.3g, cost %.3g s); "
-                "estimated error %.3g (%s); pilots %zu runs %.3g s, final runs %zu %.3g s; most accurate "
+                "estimated error %.3g (%s); pilots and timings %zu runs %.3g s, final runs %zu %.3g s; most accurate "
                 "candidate %s would cost %.3g s (predicted error %.3g)",
                 set_.target_error, set_.target_walltime, label(chosen_.family, chosen_.n).c_str(), chosen_.error,
-                chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size(), pilotSeconds(),
+                chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size() + timings_.size(), pilotSeconds(),
                 finals_.size(), finalSeconds(), label(most_accurate_.family, most_accurate_.n).c_str(),
                 most_accurate_.cost, most_accurate_.error);
   return b;

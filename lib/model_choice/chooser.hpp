@@ -1,7 +1,8 @@
 // The chooser of an accuracy-target run: given candidate families (configurations as option values, see
 // candidate.hpp) and a target, it
-//   1. runs three pilots per family at n0, 2 n0, 4 n0 (timed: the cost model, unless one was loaded; their
-//      differences: the observed order and error constant, observed_order.hpp),
+//   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error constant,
+//      observed_order.hpp) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
+//      and 32 n0 (at most n_max): with the pilots' timings, the cost model (cost_model.hpp),
 //   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
 //      and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone, the
@@ -41,12 +42,17 @@ struct ChooserSettings {
   int per_octave = 4;
 };
 
+constexpr int kTimingSteps = 3; // steps of a timing run
+
+enum class RunKind { pilot, timing, final };
 struct RunResult {
-  GridField density; // the final density on the whole grid, the same on every rank
+  GridField density; // the final density on the whole grid, the same on every rank (not for timing runs)
   double seconds = 0.0;
+  long long steps = 0;
 };
-// Runs family f at resolution n; final: the run whose output is kept.
-using Runner = std::function<PetscErrorCode(const Family& f, long long n, bool final, RunResult* r)>;
+// Runs family f at resolution n: a pilot (to t_final, no output), a timing run (kTimingSteps steps, no output)
+// or a final run (to t_final, with the run's output).
+using Runner = std::function<PetscErrorCode(const Family& f, long long n, RunKind kind, RunResult* r)>;
 
 struct CandidateRow {
   int family = 0;
@@ -57,6 +63,7 @@ struct RunRecord {
   int family = 0;
   long long n = 0;
   double seconds = 0.0;
+  long long steps = 0;
   double difference = NAN; // L1 distance to the previous run of the family (pilots) / to the reference (final)
   double estimate = NAN;   // finals: the estimated error; pilots: the fit's error at n
 };
@@ -74,6 +81,7 @@ public:
   const std::vector<CandidateRow>& table() const { return table_; }
   const std::vector<RunRecord>& pilots() const { return pilots_; }
   const std::vector<RunRecord>& finals() const { return finals_; }
+  const std::vector<RunRecord>& timings() const { return timings_; }
   const CandidateRow& chosen() const { return chosen_; } // the last candidate run
   const CandidateRow& mostAccurate() const { return most_accurate_; }
   bool met() const { return met_; } // the final estimate is within the target (or no error target)
@@ -84,6 +92,7 @@ public:
 
 private:
   PetscErrorCode runPilots(const Runner& runner);
+  PetscErrorCode runTimings(const Runner& runner);
   void buildTable();
   bool feasible(const CandidateRow& r) const;
   bool better(const CandidateRow& a, const CandidateRow& b) const;
@@ -101,7 +110,7 @@ private:
   std::vector<long long> finest_n_, prev_n_; // per family: the finest run's n, the one before it
   std::vector<double> prev_d_;                // per family: the distance between those two
   std::vector<CandidateRow> table_;
-  std::vector<RunRecord> pilots_, finals_;
+  std::vector<RunRecord> pilots_, finals_, timings_;
   CandidateRow chosen_, most_accurate_;
   bool met_ = false;
 };

@@ -55,6 +55,23 @@ def density_wave():
     target_case("density_wave", [1e-6, 1e-7])
 
 
+def walltime():
+    """-target_walltime S: the chosen candidate is the most accurate one of the table whose predicted cost fits in
+    what the pilots left of S (a check of the choice against its own table, not of timings)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "w.h5")
+        log = run(["-problem", "sod", "-target_walltime", 0.5, "-error", "-output", out, "-quiet"])
+        check("model_choice: target error 0, walltime 0.5 s" in log, "summary names the walltime target")
+        with h5py.File(out, "r") as f:
+            g = f["model_choice"]
+            left = 0.5 - g.attrs["pilot_seconds"]
+            cost, err = g["candidates/predicted_cost"][:], g["candidates/predicted_error"][:]
+            fits = cost <= left
+            chosen = g.attrs["chosen_predicted_error"]
+            check(g.attrs["chosen_predicted_cost"] <= left, f"chosen fits in the {left:.3g} s left")
+            check(chosen == err[fits].min(), f"chosen is the most accurate that fits ({chosen:.3e})")
+
+
 def ranks():
     with tempfile.TemporaryDirectory() as tmp:
         one, two = os.path.join(tmp, "one.h5"), os.path.join(tmp, "two.h5")
