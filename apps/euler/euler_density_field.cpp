@@ -31,7 +31,8 @@ PetscErrorCode EulerRun::densityField(suite::model_choice::GridField* g) const {
     size_t c = (size_t)displs[r];
     for (int k = b[2]; k < b[2] + b[5]; ++k)
       for (int j = b[1]; j < b[1] + b[4]; ++j)
-        for (int i = b[0]; i < b[0] + b[3]; ++i, ++c) g->values[(size_t)(i + g->n[0] * (j + g->n[1] * k))] = all[c];
+        for (int i = b[0]; i < b[0] + b[3]; ++i, ++c)
+          g->values[(size_t)(i + g->n[0] * (j + g->n[1] * k))] = all[c];
   }
   PetscFunctionReturn(0);
 }

@@ -20,14 +20,16 @@ PetscErrorCode readTargetOptions(MPI_Comm comm, int dim, TargetOptions* t) {
   PetscBool set_e = PETSC_FALSE, set_w = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "Euler accuracy-target runs", "");
-  PetscCall(suite::optionsReal(PetscOptionsObject, "-target_error",
-                               "Accuracy target: the cheapest (scheme, N) whose estimated L1 density error at "
-                               "t_final is <= this (pilot runs measure the observed order)",
-                               "", t->error, &t->error, &set_e));
-  PetscCall(suite::optionsReal(PetscOptionsObject, "-target_walltime",
-                               "Accuracy-target run: the most accurate (scheme, N) predicted to finish within "
-                               "this many seconds, pilots included",
-                               "", t->walltime, &t->walltime, &set_w));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-target_error",
+                         "Accuracy target: the cheapest (scheme, N) whose estimated L1 density error at "
+                         "t_final is <= this (pilot runs measure the observed order)",
+                         "", t->error, &t->error, &set_e));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-target_walltime",
+                         "Accuracy-target run: the most accurate (scheme, N) predicted to finish within "
+                         "this many seconds, pilots included",
+                         "", t->walltime, &t->walltime, &set_w));
   PetscCall(suite::optionsString(PetscOptionsObject, "-target_schemes",
                                  "Accuracy-target run: the candidate schemes (comma list)", &t->schemes));
   PetscCall(suite::optionsInt(PetscOptionsObject, "-target_pilot_n",
@@ -85,7 +87,8 @@ PetscErrorCode applyRunOptions(const mc::Family& f, long long n, mc::RunKind kin
   PetscFunctionBeginUser;
   PetscCall(so->setAll(f.options));
   for (int d = 0; d < dim; ++d)
-    PetscCall(so->set(axes[d], std::to_string(std::max(1LL, std::llround((double)n * aspect[d] / aspect[0])))));
+    PetscCall(
+        so->set(axes[d], std::to_string(std::max(1LL, std::llround((double)n * aspect[d] / aspect[0])))));
   if (kind == mc::RunKind::final) PetscFunctionReturn(0);
   if (kind == mc::RunKind::timing) PetscCall(so->set("-max_steps", std::to_string(mc::kTimingSteps)));
   PetscCall(so->unset("-output"));
@@ -155,11 +158,12 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   if (std::isfinite(exact_l1))
     PetscCall(PetscSNPrintf(exact, sizeof exact, "; L1 error against the exact solution %.3e", exact_l1));
   PetscCall(suite::logInfo(ctx.comm(), false, "%s%s", chooser.summary().c_str(), exact));
-  PetscCheck(chooser.met(), ctx.comm(), PETSC_ERR_NOT_CONVERGED,
-             "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s); best "
-             "reachable is about that",
-             t.error, chooser.finals().back().estimate, chooser.finals().size() - 1,
-             chooser.label(chooser.chosen().family, chooser.chosen().n).c_str());
+  PetscCheck(
+      chooser.met(), ctx.comm(), PETSC_ERR_NOT_CONVERGED,
+      "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s); best "
+      "reachable is about that",
+      t.error, chooser.finals().back().estimate, chooser.finals().size() - 1,
+      chooser.label(chooser.chosen().family, chooser.chosen().n).c_str());
   PetscFunctionReturn(0);
 }
 

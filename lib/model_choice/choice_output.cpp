@@ -8,8 +8,7 @@
 namespace suite::model_choice {
 
 namespace {
-template <typename T>
-void writeColumn(H5AppendFile& h5, const std::string& name, const std::vector<T>& v) {
+template <typename T> void writeColumn(H5AppendFile& h5, const std::string& name, const std::vector<T>& v) {
   h5.createFixed<T>(name, v.size(), T(0));
   if (!v.empty()) h5.writeAt<T>(name, 0, v.data(), v.size());
 }

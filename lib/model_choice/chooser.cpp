@@ -63,7 +63,8 @@ PetscErrorCode ModelChooser::runTimings(const Runner& runner) {
     for (long long n : {set_.n0 << 3, set_.n0 << 5}) {
       RunResult r;
       if (n > set_.n_max) n = set_.n_max;
-      if (n <= set_.n0 << 2 || (!timings_.empty() && timings_.back().family == (int)f && timings_.back().n == n))
+      if (n <= set_.n0 << 2 ||
+          (!timings_.empty() && timings_.back().family == (int)f && timings_.back().n == n))
         continue;
       PetscCall(runner(families_[f], n, RunKind::timing, &r));
       cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
@@ -78,7 +79,8 @@ void ModelChooser::buildTable() {
     for (int k = 0;; ++k) {
       const long long n = std::llround((double)set_.n0 * std::exp2((double)k / set_.per_octave));
       if (n > set_.n_max) break;
-      table_.push_back({(int)f, n, cost_.predict(families_[f].name, (double)n), orders_[f].errorAt((double)n)});
+      table_.push_back(
+          {(int)f, n, cost_.predict(families_[f].name, (double)n), orders_[f].errorAt((double)n)});
     }
   most_accurate_ = table_.empty() ? CandidateRow() : table_[0];
   for (const CandidateRow& r : table_)
@@ -123,10 +125,11 @@ PetscErrorCode ModelChooser::explainUnreachable() const {
              "up to -target_max_n %lld, safety factor %g)",
              set_.target_error, set_.target_walltime > 0 ? " within -target_walltime" : "", best.error,
              label(best.family, best.n).c_str(), best.cost, set_.n_max, set_.safety);
-  SETERRQ(comm_, PETSC_ERR_ARG_OUTOFRANGE,
-          "-target_walltime %g s cannot be met: %.3g s of pilots, then the cheapest candidate (%s) is predicted "
-          "to take %.3g s",
-          set_.target_walltime, pilotSeconds(), label(cheapest.family, cheapest.n).c_str(), cheapest.cost);
+  SETERRQ(
+      comm_, PETSC_ERR_ARG_OUTOFRANGE,
+      "-target_walltime %g s cannot be met: %.3g s of pilots, then the cheapest candidate (%s) is predicted "
+      "to take %.3g s",
+      set_.target_walltime, pilotSeconds(), label(cheapest.family, cheapest.n).c_str(), cheapest.cost);
 }
 
 // The problem's regularity bounds every family's order: a lower order observed at finer levels caps the others,
@@ -197,14 +200,15 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
 std::string ModelChooser::summary() const {
   char b[1024];
   const RunRecord& f = finals_.back();
-  std::snprintf(b, sizeof b,
-                "model_choice: target error %.3g, walltime %.3g s: chose %s (predicted error %.3g, cost %.3g s); "
-                "estimated error %.3g (%s); pilots and timings %zu runs %.3g s, final runs %zu %.3g s; most accurate "
-                "candidate %s would cost %.3g s (predicted error %.3g)",
-                set_.target_error, set_.target_walltime, label(chosen_.family, chosen_.n).c_str(), chosen_.error,
-                chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size() + timings_.size(), pilotSeconds(),
-                finals_.size(), finalSeconds(), label(most_accurate_.family, most_accurate_.n).c_str(),
-                most_accurate_.cost, most_accurate_.error);
+  std::snprintf(
+      b, sizeof b,
+      "model_choice: target error %.3g, walltime %.3g s: chose %s (predicted error %.3g, cost %.3g s); "
+      "estimated error %.3g (%s); pilots and timings %zu runs %.3g s, final runs %zu %.3g s; most accurate "
+      "candidate %s would cost %.3g s (predicted error %.3g)",
+      set_.target_error, set_.target_walltime, label(chosen_.family, chosen_.n).c_str(), chosen_.error,
+      chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size() + timings_.size(), pilotSeconds(),
+      finals_.size(), finalSeconds(), label(most_accurate_.family, most_accurate_.n).c_str(),
+      most_accurate_.cost, most_accurate_.error);
   return b;
 }
 

@@ -64,8 +64,9 @@ struct RunRecord {
   long long n = 0;
   double seconds = 0.0;
   long long steps = 0;
-  double difference = NAN; // L1 distance to the previous run of the family (pilots) / to the reference (final)
-  double estimate = NAN;   // finals: the estimated error; pilots: the fit's error at n
+  double difference =
+      NAN;               // L1 distance to the previous run of the family (pilots) / to the reference (final)
+  double estimate = NAN; // finals: the estimated error; pilots: the fit's error at n
 };
 
 class ModelChooser {
@@ -108,7 +109,7 @@ private:
   std::vector<ObservedOrder> orders_;
   std::vector<GridField> finest_; // per family: the finest run so far (the reference of the next check)
   std::vector<long long> finest_n_, prev_n_; // per family: the finest run's n, the one before it
-  std::vector<double> prev_d_;                // per family: the distance between those two
+  std::vector<double> prev_d_;               // per family: the distance between those two
   std::vector<CandidateRow> table_;
   std::vector<RunRecord> pilots_, finals_, timings_;
   CandidateRow chosen_, most_accurate_;

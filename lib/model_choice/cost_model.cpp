@@ -46,7 +46,8 @@ void fitPerStep(const std::vector<TimedRun>& runs, double* c0, double* c1, doubl
     if (a0 < 0) a0 = 0.0, a1 = r1 / s11; // no negative overhead
     if (!(a1 > 0)) continue;
     double res = 0;
-    for (const TimedRun& r : runs) res += std::pow((a0 + a1 * std::pow(r.n, e)) * r.steps / r.seconds - 1.0, 2);
+    for (const TimedRun& r : runs)
+      res += std::pow((a0 + a1 * std::pow(r.n, e)) * r.steps / r.seconds - 1.0, 2);
     if (res < best - 1e-12) best = res, *c0 = a0, *c1 = a1, *b = e;
   }
 }
@@ -97,7 +98,8 @@ PetscErrorCode readRuns(const suite::H5Input& in, const std::string& table, std:
   const char* names[4] = {"family", "n", "seconds", "steps"};
   suite::Dims dims;
   PetscFunctionBeginUser;
-  for (int c = 0; c < 4; ++c) PetscCall(in.readAll("/model_choice/" + table + "/" + names[c], &cols[c], &dims));
+  for (int c = 0; c < 4; ++c)
+    PetscCall(in.readAll("/model_choice/" + table + "/" + names[c], &cols[c], &dims));
   PetscFunctionReturn(0);
 }
 } // namespace
@@ -110,9 +112,10 @@ PetscErrorCode CostModel::load(MPI_Comm comm, const std::string& path) {
   PetscFunctionBeginUser;
   PetscCall(in.open(comm, path));
   PetscCall(in.hasObject("/model_choice/timings/steps", &has));
-  PetscCheck(has, comm, PETSC_ERR_FILE_UNEXPECTED,
-             "-cost_model %s: no /model_choice/pilots and /timings (write one with a -target_error run's -output)",
-             path.c_str());
+  PetscCheck(
+      has, comm, PETSC_ERR_FILE_UNEXPECTED,
+      "-cost_model %s: no /model_choice/pilots and /timings (write one with a -target_error run's -output)",
+      path.c_str());
   PetscCall(in.readAttribute("/model_choice", "families", &names));
   PetscCall(readRuns(in, "pilots", cols[0]));
   PetscCall(readRuns(in, "timings", cols[1]));
@@ -122,7 +125,8 @@ PetscErrorCode CostModel::load(MPI_Comm comm, const std::string& path) {
     for (size_t i = 0; i < cols[t][0].size(); ++i) {
       const long long f = (long long)cols[t][0][i];
       const double n = cols[t][1][i], sec = cols[t][2][i], steps = cols[t][3][i];
-      PetscCheck(f >= 0 && f < (long long)list.size() && n > 0 && std::isfinite(sec) && sec >= 0 && steps >= 1,
+      PetscCheck(f >= 0 && f < (long long)list.size() && n > 0 && std::isfinite(sec) && sec >= 0 &&
+                     steps >= 1,
                  comm, PETSC_ERR_FILE_UNEXPECTED, "-cost_model %s: run %zu of /model_choice/%s is malformed",
                  path.c_str(), i, t ? "timings" : "pilots");
       add(list[(size_t)f], {n, sec, steps, t == 0});

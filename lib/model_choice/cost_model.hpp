@@ -36,8 +36,8 @@ public:
 
 private:
   struct Fit {
-    double log_s = 0.0, q = 0.0;         // steps
-    double c0 = 0.0, c1 = 0.0, b = 0.0;  // seconds per step
+    double log_s = 0.0, q = 0.0;        // steps
+    double c0 = 0.0, c1 = 0.0, b = 0.0; // seconds per step
   };
   Fit fit(const std::string& family) const;
   std::map<std::string, std::vector<TimedRun>> runs_;

@@ -17,9 +17,9 @@ namespace suite::model_choice {
 
 struct GridField {
   int dim = 1;
-  std::array<long long, 3> n = {1, 1, 1};                  // cells per axis (1 beyond dim)
-  std::array<double, 3> lo = {0, 0, 0}, hi = {1, 1, 1};    // the box
-  std::vector<double> values;                              // x fastest: i + n0 (j + n1 k)
+  std::array<long long, 3> n = {1, 1, 1};               // cells per axis (1 beyond dim)
+  std::array<double, 3> lo = {0, 0, 0}, hi = {1, 1, 1}; // the box
+  std::vector<double> values;                           // x fastest: i + n0 (j + n1 k)
   long long cells() const { return n[0] * n[1] * n[2]; }
 };
 

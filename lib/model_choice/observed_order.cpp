@@ -6,7 +6,9 @@
 
 namespace suite::model_choice {
 
-double ObservedOrder::errorAt(double n) const { return valid ? a * std::pow(n, -p) : INFINITY; }
+double ObservedOrder::errorAt(double n) const {
+  return valid ? a * std::pow(n, -p) : INFINITY;
+}
 
 namespace {
 double differenceRatio(double a, double b, double c, double p) {
