@@ -31,8 +31,8 @@ PetscErrorCode EulerRun::schemeSpectrum() {
   const size_t m = smooth.size();
   std::vector<double> cols[6];
   for (auto& c : cols) c.resize(m);
-  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "%-10s %-12s %-12s %-12s %-12s %-12s", "k dx",
-                           "smooth re", "smooth im", "shock re", "shock im", "Pade exact"));
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "%-10s %-12s %-12s %-12s %-12s %-12s", "k dx", "smooth re",
+                           "smooth im", "shock re", "shock im", "Pade exact"));
   for (size_t i = 0; i < m; ++i) {
     cols[0][i] = smooth[i].w, cols[1][i] = smooth[i].re, cols[2][i] = smooth[i].im;
     cols[3][i] = shock[i].re, cols[4][i] = shock[i].im,

@@ -133,8 +133,7 @@ PetscErrorCode EulerRun::start(PetscInt step, double t, bool restarted) {
   // TSSolve's start of a fresh solve (a multistep integrator starts with its one-step method).
   if (!restarted) PetscCall(TSRestartStep(ts_));
   if (restarted && opt_.time == "bdf2")
-    PetscCall(
-        suite::logInfo(ctx_.comm(), quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
   PetscCall(checkState(U_, step, t));
   // The x-t image starts with the state the run starts from (recorded at t = 0 as before the time loop).
   if (opt_.spacetime_every > 0) PetscCall(recordSpacetime(U_, 0.0));
