@@ -54,6 +54,7 @@ public:
   PetscErrorCode densityField(suite::model_choice::GridField* g) const;
   PetscErrorCode solveSeconds(double* seconds) const;
   PetscInt steps() const { return step_; }
+  double finalTime() const { return time_; }
   double l1DensityError() const { return err_.have ? err_.l1[0] : NAN; }
 
 private:

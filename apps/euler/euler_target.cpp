@@ -113,6 +113,22 @@ PetscErrorCode probeOptions(const suite::RunContext& ctx, int dim, PetscInt aspe
   PetscFunctionReturn(0);
 }
 
+// Every pilot and final run must reach t_final (their differences are the error estimate): options that stop a
+// run early or start it from a checkpoint do not go with a target.
+PetscErrorCode checkRunsComplete(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  for (const char* name : {"-max_steps", "-restart"}) {
+    PetscBool has = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &has));
+    PetscCheck(
+        !has, comm, PETSC_ERR_ARG_INCOMP,
+        "%s cannot be combined with -target_error / -target_walltime: every run of the choice must go from "
+        "the initial state to t_final",
+        name);
+  }
+  PetscFunctionReturn(0);
+}
+
 mc::ChooserSettings chooserSettings(const TargetOptions& t) {
   mc::ChooserSettings s;
   s.target_error = t.error;
@@ -133,6 +149,7 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   double exact_l1 = NAN;
   PetscFunctionBeginUser;
   PetscCall(targetFamilies(ctx.comm(), t, &fams));
+  PetscCall(checkRunsComplete(ctx.comm()));
   PetscCall(probeOptions(ctx, dim, aspect, &output));
   if (!t.cost_model.empty()) PetscCall(cost.load(ctx.comm(), t.cost_model));
   auto runner = [&](const mc::Family& f, long long n, mc::RunKind kind, mc::RunResult* r) -> PetscErrorCode {
@@ -144,6 +161,14 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
     PetscCall(run.readOptions());
     PetscCall(run.setup());
     PetscCall(run.solve());
+    const double t_final = run.options().t_final;
+    PetscCheck(kind == mc::RunKind::timing ||
+                   std::abs(run.finalTime() - t_final) <= 1e-12 * std::max(1.0, t_final),
+               ctx.comm(), PETSC_ERR_NOT_CONVERGED,
+               "accuracy-target run: the run of %s at N = %lld stopped at t = %g before t_final = %g "
+               "(-max_walltime or "
+               "a signal)",
+               f.name.c_str(), n, run.finalTime(), t_final);
     if (kind != mc::RunKind::timing) PetscCall(run.densityField(&r->density));
     PetscCall(run.solveSeconds(&r->seconds));
     r->steps = run.steps();
