@@ -2,6 +2,7 @@
 // own error check, bounded escalation.
 #include "model_choice/chooser.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -24,52 +25,99 @@ std::string ModelChooser::label(int family, long long n) const {
   return families_[(size_t)family].name + " n=" + std::to_string(n);
 }
 
+// Pilot k (n0 2^k) of family f: timed, compared with the family's previous pilot.
+PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
+  RunResult r;
+  const long long n = set_.n0 << k;
+  PetscFunctionBeginUser;
+  PetscCall(runner(families_[f], n, RunKind::pilot, &r));
+  if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, true});
+  const double d = k ? l1Distance(finest_[f], r.density) : NAN;
+  pilots_.push_back({(int)f, n, r.seconds, r.steps, d, NAN});
+  pilot_seconds_[f][(size_t)k] = r.seconds;
+  prev_n_[f] = finest_n_[f], prev_d_[f] = d;
+  finest_[f] = std::move(r.density), finest_n_[f] = n;
+  if (k < 2) PetscFunctionReturn(0);
+  const double n0 = (double)set_.n0;
+  const size_t last = pilots_.size() - 1;
+  orders_[f] = fitObservedOrder(n0, 2 * n0, 4 * n0, pilots_[last - 1].difference, pilots_[last].difference);
+  for (size_t q = last - 2; q <= last; ++q) pilots_[q].estimate = orders_[f].errorAt((double)pilots_[q].n);
+  PetscFunctionReturn(0);
+}
+
+// True when pilot k of family f is predicted to cost more than the cheapest candidate already known to meet the
+// target: then the family cannot lower the whole cost (its pilot alone exceeds what the known candidate costs).
+// The pilot's cost: from a loaded cost model, else the family's previous pilot times the median ratio measured
+// between the same levels on the families completed.
+bool ModelChooser::pilotTooDear(size_t f, int k, const std::vector<size_t>& completed) {
+  if (set_.target_error <= 0 || completed.empty()) return false;
+  buildTable();
+  CandidateRow best;
+  choose(std::vector<bool>(table_.size(), false), &best);
+  if (best.n == 0) return false;
+  double pilot = 0.0;
+  if (cost_.loaded())
+    pilot = cost_.predict(families_[f].name, (double)(set_.n0 << k));
+  else {
+    std::vector<double> ratios;
+    for (size_t g : completed)
+      ratios.push_back(pilot_seconds_[g][(size_t)k] / pilot_seconds_[g][(size_t)k - 1]);
+    std::sort(ratios.begin(), ratios.end());
+    pilot = pilot_seconds_[f][(size_t)k - 1] * ratios[ratios.size() / 2];
+  }
+  return pilot > best.cost;
+}
+
+// Pilots at n0 for every family, then, cheapest family first, its pilots at 2 n0 and 4 n0 and its timing runs,
+// unless a pilot is too dear (pilotTooDear: the family is left out).
 PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   PetscFunctionBeginUser;
   const size_t nf = families_.size();
   orders_.assign(nf, ObservedOrder());
   finest_.assign(nf, GridField());
-  finest_n_.assign(nf, 0);
-  prev_n_.assign(nf, 0);
-  prev_d_.assign(nf, 0.0);
-  for (size_t f = 0; f < nf; ++f) {
-    RunResult r[3];
-    for (int k = 0; k < 3; ++k) {
-      const long long n = set_.n0 << k;
-      PetscCall(runner(families_[f], n, RunKind::pilot, &r[k]));
-      if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r[k].seconds, (double)r[k].steps, true});
-      const double d = k ? l1Distance(r[k - 1].density, r[k].density) : NAN;
-      pilots_.push_back({(int)f, n, r[k].seconds, r[k].steps, d, NAN});
+  finest_n_.assign(nf, 0), prev_n_.assign(nf, 0), prev_d_.assign(nf, 0.0);
+  pilot_seconds_.assign(nf, {0.0, 0.0, 0.0});
+  for (size_t f = 0; f < nf; ++f) PetscCall(runPilot(runner, f, 0));
+  std::vector<size_t> order(nf), completed;
+  for (size_t f = 0; f < nf; ++f) order[f] = f;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return cost_.loaded() ? cost_.predict(families_[a].name, (double)set_.n0) <
+                                cost_.predict(families_[b].name, (double)set_.n0)
+                          : pilot_seconds_[a][0] < pilot_seconds_[b][0];
+  });
+  for (size_t f : order) {
+    bool pruned = false;
+    for (int k = 1; k <= 2 && !pruned; ++k) {
+      pruned = pilotTooDear(f, k, completed);
+      if (!pruned) PetscCall(runPilot(runner, f, k));
     }
-    const size_t last = pilots_.size() - 1;
-    const double n0 = (double)set_.n0;
-    orders_[f] = fitObservedOrder(n0, 2 * n0, 4 * n0, pilots_[last - 1].difference, pilots_[last].difference);
-    for (size_t k = last - 2; k <= last; ++k) pilots_[k].estimate = orders_[f].errorAt((double)pilots_[k].n);
-    finest_[f] = std::move(r[2].density);
-    finest_n_[f] = set_.n0 << 2;
-    prev_n_[f] = set_.n0 << 1;
-    prev_d_[f] = pilots_[last].difference;
+    if (pruned) {
+      orders_[f] = ObservedOrder();
+      orders_[f].why = "left out: its next pilot would cost more than a candidate already meeting the target";
+      continue;
+    }
+    PetscCall(runTimings(runner, f));
+    completed.push_back(f);
   }
   std::vector<std::string> names;
-  for (const Family& f : families_) names.push_back(f.name);
+  for (size_t f : completed) names.push_back(families_[f].name);
   PetscCall(cost_.checkCovers(comm_, names));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModelChooser::runTimings(const Runner& runner) {
+PetscErrorCode ModelChooser::runTimings(const Runner& runner, size_t f) {
   PetscFunctionBeginUser;
   if (cost_.loaded()) PetscFunctionReturn(0);
-  for (size_t f = 0; f < families_.size(); ++f)
-    for (long long n : {set_.n0 << 3, set_.n0 << 5}) {
-      RunResult r;
-      if (n > set_.n_max) n = set_.n_max;
-      if (n <= set_.n0 << 2 ||
-          (!timings_.empty() && timings_.back().family == (int)f && timings_.back().n == n))
-        continue;
-      PetscCall(runner(families_[f], n, RunKind::timing, &r));
-      cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
-      timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
-    }
+  long long previous = 0;
+  for (long long n : {set_.n0 << 3, set_.n0 << 5}) {
+    RunResult r;
+    n = std::min(n, set_.n_max);
+    if (n <= set_.n0 << 2 || n == previous) continue;
+    previous = n;
+    PetscCall(runner(families_[f], n, RunKind::timing, &r));
+    cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
+    timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
+  }
   PetscFunctionReturn(0);
 }
 
@@ -180,7 +228,6 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
   CandidateRow c;
   PetscFunctionBeginUser;
   PetscCall(runPilots(runner));
-  PetscCall(runTimings(runner));
   buildTable();
   std::vector<bool> done(table_.size(), false);
   PetscCall(choose(done, &c));

@@ -2,7 +2,9 @@
 // candidate.hpp) and a target, it
 //   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error constant,
 //      observed_order.hpp) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
-//      and 32 n0 (at most n_max): with the pilots' timings, the cost model (cost_model.hpp),
+//      and 32 n0 (at most n_max): with the pilots' timings, the cost model (cost_model.hpp). Families go
+//      cheapest first (by their n0 pilot); with an error target, a family whose next pilot is predicted to cost
+//      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
 //   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
 //      and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone, the
@@ -25,6 +27,7 @@
 
 #include <petscsys.h>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -93,7 +96,9 @@ public:
 
 private:
   PetscErrorCode runPilots(const Runner& runner);
-  PetscErrorCode runTimings(const Runner& runner);
+  PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
+  bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
+  PetscErrorCode runTimings(const Runner& runner, size_t f);
   void buildTable();
   bool feasible(const CandidateRow& r) const;
   bool better(const CandidateRow& a, const CandidateRow& b) const;
@@ -110,6 +115,8 @@ private:
   std::vector<GridField> finest_; // per family: the finest run so far (the reference of the next check)
   std::vector<long long> finest_n_, prev_n_; // per family: the finest run's n, the one before it
   std::vector<double> prev_d_;               // per family: the distance between those two
+  std::vector<std::array<double, 3>>
+      pilot_seconds_; // per family: the seconds of its pilots at n0, 2 n0, 4 n0
   std::vector<CandidateRow> table_;
   std::vector<RunRecord> pilots_, finals_, timings_;
   CandidateRow chosen_, most_accurate_;

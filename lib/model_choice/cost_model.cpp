@@ -77,17 +77,29 @@ double CostModel::exponent(const std::string& family) const {
   return f.q + (per_step > 0 ? f.b * f.c1 * std::pow(n, f.b) / per_step : 0.0);
 }
 
+namespace {
+size_t completeResolutions(const std::map<std::string, std::vector<TimedRun>>& runs,
+                           const std::string& name) {
+  std::set<double> ns;
+  auto it = runs.find(name);
+  if (it != runs.end())
+    for (const TimedRun& r : it->second)
+      if (r.complete) ns.insert(r.n);
+  return ns.size();
+}
+} // namespace
+
+bool CostModel::covers(const std::string& family) const {
+  return completeResolutions(runs_, family) >= 2;
+}
+
 PetscErrorCode CostModel::checkCovers(MPI_Comm comm, const std::vector<std::string>& families) const {
   PetscFunctionBeginUser;
   for (const std::string& name : families) {
-    std::set<double> ns;
-    auto it = runs_.find(name);
-    if (it != runs_.end())
-      for (const TimedRun& r : it->second)
-        if (r.complete) ns.insert(r.n);
-    PetscCheck(ns.size() >= 2, comm, PETSC_ERR_ARG_WRONG,
+    const size_t ns = completeResolutions(runs_, name);
+    PetscCheck(ns >= 2, comm, PETSC_ERR_ARG_WRONG,
                "-cost_model %s: no complete runs of %s at two resolutions or more (it has %zu)",
-               source_.empty() ? "(pilots)" : source_.c_str(), name.c_str(), ns.size());
+               source_.empty() ? "(pilots)" : source_.c_str(), name.c_str(), ns);
   }
   PetscFunctionReturn(0);
 }

@@ -31,6 +31,7 @@ public:
   const std::string& source() const { return source_; }
   // Collective check: every family has complete runs at two resolutions or more.
   PetscErrorCode checkCovers(MPI_Comm comm, const std::vector<std::string>& families) const;
+  bool covers(const std::string& family) const;              // complete runs at two resolutions or more
   double predict(const std::string& family, double n) const; // seconds
   double exponent(const std::string& family) const;          // d log seconds / d log n at the finest sample
 

@@ -14,7 +14,7 @@ import h5py
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from euler_harness import check, error, run  # noqa: E402
 
-ATTRS = ["families", "target_error", "chosen_label", "chosen_n", "chosen_predicted_error", "chosen_predicted_cost",
+ATTRS = ["families", "target_error", "chosen_family", "chosen_label", "chosen_n", "chosen_predicted_error", "chosen_predicted_cost",
          "estimated_error", "target_met", "pilot_seconds", "final_seconds", "total_seconds",
          "most_accurate_label", "most_accurate_predicted_cost", "most_accurate_predicted_error", "summary"]
 COLUMNS = {"candidates": ["family", "n", "predicted_cost", "predicted_error"],
@@ -29,7 +29,10 @@ def check_group(path, target):
         missing += [f"{t}/{c}" for t, cols in COLUMNS.items() for c in cols if f"{t}/{c}" not in g]
         check(not missing, f"/model_choice complete (missing: {missing})")
         fams = g.attrs["families"].split(",")
-        check(len(g["pilots/n"]) == 3 * len(fams), f"{len(g['pilots/n'])} pilots: 3 per family ({len(fams)})")
+        per = [int((g["pilots/family"][:] == i).sum()) for i in range(len(fams))]
+        chosen = int(g.attrs["chosen_family"])
+        check(all(1 <= k <= 3 for k in per) and per[chosen] == 3,
+              f"pilots per family {per}: every family at n0, the chosen one ({fams[chosen]}) at n0, 2 n0, 4 n0")
         check(len(g["candidates/n"]) > 0 and all(g["candidates/predicted_cost"][:] > 0), "candidate table costed")
         check(g.attrs["target_met"] == 1 and g.attrs["estimated_error"] <= target,
               f"estimated error {g.attrs['estimated_error']:.3e} <= target {target:g}")
