@@ -2,9 +2,12 @@
 candidate of /model_choice (lib/model_choice/choice_output.hpp) as predicted L1 error against predicted cost,
 one line per family (scheme), the target, the chosen candidate, the final run's estimated error (at its measured
 cost) and, when the run had -error, the error against the exact solution.
+``python -m postprocess model-choice-bench targets.csv`` draws scripts/bench/euler-target-error's table: the
+achieved error against the target per problem, with the lines E and E/4.
 """
 from __future__ import annotations
 
+import csv
 import math
 
 import h5py
@@ -67,6 +70,44 @@ def plot_choice(path, output):
     return [output]
 
 
+def read_bench(path):
+    """{problem: (targets, achieved)} of the runs that completed."""
+    out = {}
+    with open(path, newline="") as f:
+        for r in csv.DictReader(f):
+            if r.get("achieved"):
+                t, a = out.setdefault(r["problem"], ([], []))
+                t.append(float(r["target"]))
+                a.append(float(r["achieved"]))
+    return out
+
+
+def plot_bench(path, output):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    data = read_bench(path)
+    fig, ax = plt.subplots(figsize=(6, 5))
+    lo, hi = math.inf, 0.0
+    for name, (t, a) in data.items():
+        ax.loglog(t, a, "o", label=name)
+        lo, hi = min(lo, *t, *a), max(hi, *t, *a)
+    if hi > 0:
+        x = np.array([lo / 2, hi * 2])
+        ax.loglog(x, x, "k-", lw=1, label="achieved = E")
+        ax.loglog(x, x / 4, "k:", lw=1, label="E / 4")
+    ax.set_xlabel("target E (L1 density)")
+    ax.set_ylabel("achieved L1 error against the exact solution")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(output, dpi=120)
+    plt.close(fig)
+    return [output]
+
+
 def register(sub):
     p = sub.add_parser("model-choice",
                        help="accuracy-target run: candidates' predicted error vs cost, the choice, its estimate")
@@ -79,3 +120,13 @@ def register(sub):
         return 0
 
     p.set_defaults(func=run)
+    q = sub.add_parser("model-choice-bench", help="euler-target-error benchmark: achieved error vs target")
+    q.add_argument("csv", help="targets.csv written by scripts/bench/euler-target-error")
+    q.add_argument("-o", "--output", default="target_error.png")
+
+    def run_bench(a):
+        for x in plot_bench(a.csv, a.output):
+            print(f"wrote {x}")
+        return 0
+
+    q.set_defaults(func=run_bench)

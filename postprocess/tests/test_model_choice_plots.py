@@ -52,3 +52,14 @@ def test_missing_group_is_an_error(tmp_path):
     p = tmp_path / "plain.h5"
     h5py.File(p, "w").close()
     assert main(["model-choice", str(p), "-o", str(tmp_path / "x.png")]) == 2
+
+
+def test_bench_figure(tmp_path):
+    p = tmp_path / "targets.csv"
+    p.write_text("problem,target,failure,chosen,achieved\nsod,1e-3,,weno5 n=512,7e-4\nsod,1e-4,exit 1,,\n"
+                 "density_wave,1e-6,,weno5 n=64,2.8e-7\n")
+    data = mc.read_bench(p)
+    assert data == {"sod": ([1e-3], [7e-4]), "density_wave": ([1e-6], [2.8e-7])}
+    out = tmp_path / "b.png"
+    assert main(["model-choice-bench", str(p), "-o", str(out)]) == 0
+    assert out.stat().st_size > 1000
