@@ -32,11 +32,10 @@ PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
   PetscFunctionBeginUser;
   PetscCall(runner(families_[f], n, RunKind::pilot, &r));
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, true});
-  const double d = k ? l1Distance(finest_[f], r.density) : NAN;
+  const double d = k ? l1Distance(runs_[f].at(n / 2), r.density) : NAN;
   pilots_.push_back({(int)f, n, r.seconds, r.steps, d, NAN});
   pilot_seconds_[f][(size_t)k] = r.seconds;
-  prev_n_[f] = finest_n_[f], prev_d_[f] = d;
-  finest_[f] = std::move(r.density), finest_n_[f] = n;
+  runs_[f][n] = std::move(r.density);
   if (k < 2) PetscFunctionReturn(0);
   const double n0 = (double)set_.n0;
   const size_t last = pilots_.size() - 1;
@@ -74,8 +73,7 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   PetscFunctionBeginUser;
   const size_t nf = families_.size();
   orders_.assign(nf, ObservedOrder());
-  finest_.assign(nf, GridField());
-  finest_n_.assign(nf, 0), prev_n_.assign(nf, 0), prev_d_.assign(nf, 0.0);
+  runs_.assign(nf, {});
   pilot_seconds_.assign(nf, {0.0, 0.0, 0.0});
   for (size_t f = 0; f < nf; ++f) PetscCall(runPilot(runner, f, 0));
   std::vector<size_t> order(nf), completed;
@@ -185,42 +183,65 @@ PetscErrorCode ModelChooser::explainUnreachable() const {
 void ModelChooser::capOrders(double p) {
   for (size_t f = 0; f < orders_.size(); ++f)
     if (orders_[f].valid && orders_[f].p > p) {
-      const double n = (double)finest_n_[f], e = orders_[f].errorAt(n);
+      const double n = (double)runs_[f].rbegin()->first, e = orders_[f].errorAt(n);
       orders_[f].p = p, orders_[f].a = e * std::pow(n, p);
     }
 }
 
-// Runs c and estimates its error against the finest earlier run of its family (see the header); a miss
-// replaces the family's fit by what the final run showed.
+namespace {
+// The finest run of the family with n <= limit (0: none).
+long long finestUpTo(const std::map<long long, GridField>& runs, double limit) {
+  long long best = 0;
+  for (const auto& [n, field] : runs)
+    if ((double)n <= limit) best = n;
+  return best;
+}
+} // namespace
+
+// The error of the run at n (density u) from the family's earlier runs, at resolution ratios of 2 or more (at
+// closer ratios the sub-cell placement of discontinuities dominates the L1 difference of two runs): b = the
+// finest run at <= n/2, a = the finest at <= b/2: the order observed again from a, b, n; without a, the pair
+// estimate with the order so far; below 2 n0 the pair estimate against the coarsest run at >= 2n. *refit: the
+// new fit, when there was one.
+double ModelChooser::checkEstimate(size_t f, long long n, const GridField& u, RunRecord* rec,
+                                   ObservedOrder* refit) {
+  const std::map<long long, GridField>& runs = runs_[f];
+  const ObservedOrder& o = orders_[f];
+  if (runs.count(n)) return o.errorAt((double)n); // a pilot's resolution: the fit of the pilots
+  const long long b = finestUpTo(runs, 0.5 * (double)n), a = b ? finestUpTo(runs, 0.5 * (double)b) : 0;
+  if (!b) {
+    const auto up = runs.lower_bound(2 * n);
+    if (up == runs.end()) return o.errorAt((double)n);
+    rec->difference = l1Distance(up->second, u);
+    return pairEstimate((double)up->first, (double)n, rec->difference, o.p);
+  }
+  rec->difference = l1Distance(runs.at(b), u);
+  if (a)
+    *refit = fitObservedOrder((double)a, (double)b, (double)n, l1Distance(runs.at(a), runs.at(b)),
+                              rec->difference);
+  return refit->valid ? refit->errorAt((double)n) : pairEstimate((double)b, (double)n, rec->difference, o.p);
+}
+
+// Runs c and checks its estimate (checkEstimate); a miss replaces the family's fit by what the final run showed.
 PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& c) {
   RunResult r;
+  ObservedOrder refit;
   const size_t f = (size_t)c.family;
   PetscFunctionBeginUser;
   PetscCall(runner(families_[f], c.n, RunKind::final, &r));
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)c.n, r.seconds, (double)r.steps, true});
-  ObservedOrder& o = orders_[f];
-  const long long n_ref = finest_n_[f];
-  RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, o.errorAt((double)c.n)};
-  ObservedOrder refit;
-  if (c.n != n_ref) {
-    rec.difference = l1Distance(finest_[f], r.density);
-    rec.estimate = pairEstimate((double)n_ref, (double)c.n, rec.difference, o.p);
-    if ((double)c.n >= kRefitRatio * (double)n_ref)
-      refit = fitObservedOrder((double)prev_n_[f], (double)n_ref, (double)c.n, prev_d_[f], rec.difference);
-    if (refit.valid) rec.estimate = refit.errorAt((double)c.n);
-  }
+  RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, NAN};
+  rec.estimate = checkEstimate(f, c.n, r.density, &rec, &refit);
   finals_.push_back(rec);
   chosen_ = c;
   met_ = set_.target_error <= 0 || rec.estimate <= set_.target_error;
+  ObservedOrder& o = orders_[f];
   if (refit.valid && refit.p < o.p) capOrders(refit.p);
   if (refit.valid)
     o = refit;
   else if (rec.estimate > o.errorAt((double)c.n))
     o.a = rec.estimate * std::pow((double)c.n, o.p);
-  if (c.n > n_ref) {
-    finest_[f] = std::move(r.density);
-    prev_n_[f] = n_ref, prev_d_[f] = rec.difference, finest_n_[f] = c.n;
-  }
+  runs_[f][c.n] = std::move(r.density);
   PetscFunctionReturn(0);
 }
 

@@ -9,10 +9,10 @@
 //      and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone, the
 //      most accurate one predicted to finish within the time left), runs it through the caller's runner,
-//   4. checks its own estimate: the final run against the finest earlier run of its family: when it is at least
-//      kRefitRatio times finer, the order is observed again from the last three levels of the family
-//      (fitObservedOrder on the previous, the finest and the final run), otherwise the observed order stays and
-//      the pair estimate is used (a lower order observed this way caps every family's order: the problem's
+//   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and the
+//      finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder), or without a the pair
+//      estimate with the order so far (ratios of 2 or more: closer runs of a flow with discontinuities differ
+//      mostly by the sub-cell placement of the jumps) (a lower order observed this way caps every family's order: the problem's
 //      regularity bounds them all); when the estimate misses the target the family's fit is replaced by what the
 //      final run showed and the next candidate is run (at most max_escalations times).
 // A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
@@ -29,12 +29,11 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace suite::model_choice {
-
-constexpr double kRefitRatio = 1.4; // a final run this much finer than the reference: observe the order again
 
 struct ChooserSettings {
   double target_error = 0.0;    // 0: none (then target_walltime must be set)
@@ -106,15 +105,14 @@ private:
   PetscErrorCode explainUnreachable() const;
   PetscErrorCode runFinal(const Runner& runner, const CandidateRow& c);
   void capOrders(double p);
+  double checkEstimate(size_t f, long long n, const GridField& u, RunRecord* rec, ObservedOrder* refit);
 
   MPI_Comm comm_;
   std::vector<Family> families_;
   ChooserSettings set_;
   CostModel cost_;
   std::vector<ObservedOrder> orders_;
-  std::vector<GridField> finest_; // per family: the finest run so far (the reference of the next check)
-  std::vector<long long> finest_n_, prev_n_; // per family: the finest run's n, the one before it
-  std::vector<double> prev_d_;               // per family: the distance between those two
+  std::vector<std::map<long long, GridField>> runs_; // per family: the density of every run so far, by n
   std::vector<std::array<double, 3>>
       pilot_seconds_; // per family: the seconds of its pilots at n0, 2 n0, 4 n0
   std::vector<CandidateRow> table_;

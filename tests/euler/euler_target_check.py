@@ -33,7 +33,10 @@ def check_group(path, target):
         chosen = int(g.attrs["chosen_family"])
         check(all(1 <= k <= 3 for k in per) and per[chosen] == 3,
               f"pilots per family {per}: every family at n0, the chosen one ({fams[chosen]}) at n0, 2 n0, 4 n0")
-        check(len(g["candidates/n"]) > 0 and all(g["candidates/predicted_cost"][:] > 0), "candidate table costed")
+        full = [i for i, k in enumerate(per) if k == 3]  # families piloted to 4 n0: costed and estimated
+        rows = [i for i, fam in enumerate(g["candidates/family"][:]) if fam in full]
+        cost, err = g["candidates/predicted_cost"][:], g["candidates/predicted_error"][:]
+        check(rows and all(cost[i] > 0 and err[i] > 0 for i in rows), "candidate table costed and estimated")
         check(g.attrs["target_met"] == 1 and g.attrs["estimated_error"] <= target,
               f"estimated error {g.attrs['estimated_error']:.3e} <= target {target:g}")
         achieved = f.attrs["error_l1_rho"] if "error_l1_rho" in f.attrs else f["errors"].attrs["l1_rho"]
