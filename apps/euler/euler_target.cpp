@@ -86,9 +86,12 @@ PetscErrorCode applyRunOptions(const mc::Family& f, long long n, mc::RunKind kin
   const char* axes[3] = {"-nx", "-ny", "-nz"};
   PetscFunctionBeginUser;
   PetscCall(so->setAll(f.options));
-  for (int d = 0; d < dim; ++d)
+  for (int d = 0; d < dim;
+       ++d) { // the options' aspect ratio, at least 6 cells across (the stencil) or as given
+    const long long scaled = std::llround((double)n * aspect[d] / aspect[0]);
     PetscCall(
-        so->set(axes[d], std::to_string(std::max(1LL, std::llround((double)n * aspect[d] / aspect[0])))));
+        so->set(axes[d], std::to_string(d == 0 ? n : std::max(scaled, std::min<long long>(aspect[d], 6)))));
+  }
   if (kind == mc::RunKind::final) PetscFunctionReturn(0);
   if (kind == mc::RunKind::timing) PetscCall(so->set("-max_steps", std::to_string(mc::kTimingSteps)));
   PetscCall(so->unset("-output"));

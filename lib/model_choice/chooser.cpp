@@ -166,11 +166,13 @@ PetscErrorCode ModelChooser::explainUnreachable() const {
              "-target_error/-target_walltime: no candidate family's pilots converge (n0 = %lld: %s); raise "
              "-target_pilot_n",
              set_.n0, orders_.empty() ? "" : orders_[0].why.c_str());
-  PetscCheck(set_.target_error <= 0, comm_, PETSC_ERR_ARG_OUTOFRANGE,
-             "-target_error %g cannot be reached%s: best reachable is %.3e (%s, predicted %.3g s; candidates "
-             "up to -target_max_n %lld, safety factor %g)",
-             set_.target_error, set_.target_walltime > 0 ? " within -target_walltime" : "", best.error,
-             label(best.family, best.n).c_str(), best.cost, set_.n_max, set_.safety);
+  PetscCheck(
+      set_.target_error <= 0, comm_, PETSC_ERR_ARG_OUTOFRANGE,
+      "-target_error %g cannot be reached%s: best reachable is %.3e (%s, predicted %.3g s; a candidate "
+      "must be predicted at <= target / safety factor %g = %.3g; candidates up to -target_max_n %lld)",
+      set_.target_error, set_.target_walltime > 0 ? " within -target_walltime" : "", best.error,
+      label(best.family, best.n).c_str(), best.cost, set_.safety, set_.target_error / set_.safety,
+      set_.n_max);
   SETERRQ(
       comm_, PETSC_ERR_ARG_OUTOFRANGE,
       "-target_walltime %g s cannot be met: %.3g s of pilots, then the cheapest candidate (%s) is predicted "
