@@ -125,8 +125,9 @@ void ModelChooser::buildTable() {
     for (int k = 0;; ++k) {
       const long long n = std::llround((double)set_.n0 * std::exp2((double)k / set_.per_octave));
       if (n > set_.n_max) break;
-      table_.push_back(
-          {(int)f, n, cost_.predict(families_[f].name, (double)n), orders_[f].errorAt((double)n)});
+      const std::string& name = families_[f].name; // a family left out has no cost law: NaN
+      table_.push_back({(int)f, n, cost_.covers(name) ? cost_.predict(name, (double)n) : NAN,
+                        orders_[f].errorAt((double)n)});
     }
   most_accurate_ = table_.empty() ? CandidateRow() : table_[0];
   for (const CandidateRow& r : table_)
