@@ -144,6 +144,52 @@ mc::ChooserSettings chooserSettings(const TargetOptions& t) {
 }
 } // namespace
 
+namespace {
+// One run of the choice (the chooser's Runner): family f at resolution n in this process, its final density on
+// every rank, its solve's CPU seconds (maximum over the ranks) and steps; *exact_l1: a final run's -error.
+PetscErrorCode runCandidate(const suite::RunContext& ctx, int dim, const PetscInt aspect[3],
+                            const mc::Family& f, long long n, mc::RunKind kind, mc::RunResult* r,
+                            double* exact_l1) {
+  mc::ScopedOptions so;
+  PetscFunctionBeginUser;
+  PetscCall(applyRunOptions(f, n, kind, aspect, dim, &so));
+  EulerRun run(ctx, dim);
+  run.setQuiet(kind != mc::RunKind::final);
+  PetscCall(run.readOptions());
+  PetscCall(run.setup());
+  PetscCall(run.solve());
+  const double t_final = run.options().t_final;
+  PetscCheck(
+      kind == mc::RunKind::timing || std::abs(run.finalTime() - t_final) <= 1e-12 * std::max(1.0, t_final),
+      ctx.comm(), PETSC_ERR_NOT_CONVERGED,
+      "accuracy-target run: the run of %s at N = %lld stopped at t = %g before t_final = %g (-max_walltime "
+      "or a signal)",
+      f.name.c_str(), n, run.finalTime(), t_final);
+  if (kind != mc::RunKind::timing) PetscCall(run.densityField(&r->density));
+  PetscCall(run.solveSeconds(&r->seconds));
+  r->steps = run.steps();
+  if (kind == mc::RunKind::final) *exact_l1 = run.l1DensityError();
+  PetscCall(so.restore());
+  PetscFunctionReturn(0);
+}
+
+// The summary line (with the error against the exact solution under -error), and a miss as the run's error.
+PetscErrorCode reportChoice(MPI_Comm comm, const mc::ModelChooser& chooser, double target, double exact_l1) {
+  char exact[64] = "";
+  PetscFunctionBeginUser;
+  if (std::isfinite(exact_l1))
+    PetscCall(PetscSNPrintf(exact, sizeof exact, "; L1 error against the exact solution %.3e", exact_l1));
+  PetscCall(suite::logInfo(comm, false, "%s%s", chooser.summary().c_str(), exact));
+  PetscCheck(
+      chooser.met(), comm, PETSC_ERR_NOT_CONVERGED,
+      "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s); best "
+      "reachable is about that",
+      target, chooser.finals().back().estimate, chooser.finals().size() - 1,
+      chooser.label(chooser.chosen().family, chooser.chosen().n).c_str());
+  PetscFunctionReturn(0);
+}
+} // namespace
+
 PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const TargetOptions& t) {
   std::vector<mc::Family> fams;
   PetscInt aspect[3] = {1, 1, 1};
@@ -155,43 +201,13 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   PetscCall(checkRunsComplete(ctx.comm()));
   PetscCall(probeOptions(ctx, dim, aspect, &output));
   if (!t.cost_model.empty()) PetscCall(cost.load(ctx.comm(), t.cost_model));
-  auto runner = [&](const mc::Family& f, long long n, mc::RunKind kind, mc::RunResult* r) -> PetscErrorCode {
-    mc::ScopedOptions so;
-    PetscFunctionBeginUser;
-    PetscCall(applyRunOptions(f, n, kind, aspect, dim, &so));
-    EulerRun run(ctx, dim);
-    run.setQuiet(kind != mc::RunKind::final);
-    PetscCall(run.readOptions());
-    PetscCall(run.setup());
-    PetscCall(run.solve());
-    const double t_final = run.options().t_final;
-    PetscCheck(kind == mc::RunKind::timing ||
-                   std::abs(run.finalTime() - t_final) <= 1e-12 * std::max(1.0, t_final),
-               ctx.comm(), PETSC_ERR_NOT_CONVERGED,
-               "accuracy-target run: the run of %s at N = %lld stopped at t = %g before t_final = %g "
-               "(-max_walltime or "
-               "a signal)",
-               f.name.c_str(), n, run.finalTime(), t_final);
-    if (kind != mc::RunKind::timing) PetscCall(run.densityField(&r->density));
-    PetscCall(run.solveSeconds(&r->seconds));
-    r->steps = run.steps();
-    if (kind == mc::RunKind::final) exact_l1 = run.l1DensityError();
-    PetscCall(so.restore());
-    PetscFunctionReturn(0);
+  auto runner = [&](const mc::Family& f, long long n, mc::RunKind kind, mc::RunResult* r) {
+    return runCandidate(ctx, dim, aspect, f, n, kind, r, &exact_l1);
   };
   mc::ModelChooser chooser(ctx.comm(), fams, chooserSettings(t), cost);
   PetscCall(chooser.run(runner));
   if (!output.empty()) PetscCall(mc::writeModelChoice(ctx.comm(), output, chooser));
-  char exact[64] = "";
-  if (std::isfinite(exact_l1))
-    PetscCall(PetscSNPrintf(exact, sizeof exact, "; L1 error against the exact solution %.3e", exact_l1));
-  PetscCall(suite::logInfo(ctx.comm(), false, "%s%s", chooser.summary().c_str(), exact));
-  PetscCheck(
-      chooser.met(), ctx.comm(), PETSC_ERR_NOT_CONVERGED,
-      "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s); best "
-      "reachable is about that",
-      t.error, chooser.finals().back().estimate, chooser.finals().size() - 1,
-      chooser.label(chooser.chosen().family, chooser.chosen().n).c_str());
+  PetscCall(reportChoice(ctx.comm(), chooser, t.error, exact_l1));
   PetscFunctionReturn(0);
 }
 
