@@ -1,6 +1,8 @@
 // The accuracy-target concept (lib/model_choice) on synthetic data with known answers: the observed order and
 // error constant from three runs (any ratios), the pair estimate, the grid transfer (sixth order on smooth
-// data, no overshoot at a jump), the cost law, and the chooser on a family whose runs are exact + A n^-p g(x).
+// data, no overshoot at a jump), the cost law, the chooser on a family whose runs are exact + A n^-p g(x), and
+// the scoped options of a candidate.
+#include "model_choice/candidate.hpp"
 #include "model_choice/chooser.hpp"
 #include "model_choice/cost_model.hpp"
 #include "model_choice/grid_distance.hpp"
@@ -110,4 +112,25 @@ TEST(Chooser, PicksTheCheapestMeetingTheTargetAndEstimatesItsError) {
   EXPECT_NEAR(c.finals().back().estimate / (c_true / (double)c.chosen().n), 1.0, 0.02);
   EXPECT_NEAR(c.orders()[0].p, 1.0, 0.02);
   EXPECT_EQ(c.pilots().size(), 3u);
+}
+
+TEST(ScopedOptions, SetsAndRestoresTheOptionsDatabase) {
+  char buf[64];
+  PetscBool set;
+  ASSERT_EQ(PetscOptionsSetValue(nullptr, "-mc_test_kept", "old"), 0);
+  {
+    ScopedOptions so;
+    ASSERT_EQ(so.setAll({{"-mc_test_kept", "new"}, {"-mc_test_added", "7"}}), 0);
+    ASSERT_EQ(so.set("-mc_test_kept", "newer"), 0); // the first value is the one restored
+    ASSERT_EQ(PetscOptionsGetString(nullptr, nullptr, "-mc_test_kept", buf, sizeof buf, &set), 0);
+    EXPECT_STREQ(buf, "newer");
+    ASSERT_EQ(PetscOptionsGetString(nullptr, nullptr, "-mc_test_added", buf, sizeof buf, &set), 0);
+    EXPECT_TRUE(set);
+  }
+  ASSERT_EQ(PetscOptionsGetString(nullptr, nullptr, "-mc_test_kept", buf, sizeof buf, &set), 0);
+  EXPECT_TRUE(set);
+  EXPECT_STREQ(buf, "old");
+  ASSERT_EQ(PetscOptionsHasName(nullptr, nullptr, "-mc_test_added", &set), 0);
+  EXPECT_FALSE(set);
+  ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_kept"), 0);
 }
