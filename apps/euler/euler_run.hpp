@@ -47,8 +47,9 @@ public:
   PetscErrorCode writeFinal(const suite::LoopSummary& summary) override;
 
   // For the accuracy-target driver (euler_target.cpp): runs whose log lines are left out (pilots), the options
-  // read, the final density on the whole grid on every rank (euler_density_field.cpp), the solve's wall time
-  // (CPU seconds, the maximum over the ranks), its steps and the L1 density error of -error (NaN without).
+  // read, the final density on the whole grid on every rank (euler_density_field.cpp), the solve's cost (CPU
+  // seconds, the maximum over the ranks), its steps, its end time and the L1 density error of -error (NaN
+  // without).
   void setQuiet(bool q) { quiet_ = q; }
   const Options& options() const { return opt_; }
   PetscErrorCode densityField(suite::model_choice::GridField* g) const;
