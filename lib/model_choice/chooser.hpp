@@ -12,9 +12,9 @@
 //   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and the
 //      finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder), or without a the pair
 //      estimate with the order so far (ratios of 2 or more: closer runs of a flow with discontinuities differ
-//      mostly by the sub-cell placement of the jumps) (a lower order observed this way caps every family's order: the problem's
-//      regularity bounds them all); when the estimate misses the target the family's fit is replaced by what the
-//      final run showed and the next candidate is run (at most max_escalations times).
+//      mostly by the sub-cell placement of the jumps). A lower order observed this way caps every family's
+//      order (the problem's regularity bounds them all). When the estimate misses the target the family's fit
+//      is replaced by what the final run showed and the next candidate is run (at most max_escalations times).
 // A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
 // same decisions: the runner must return the same density field and the same seconds (e.g. the maximum over
 // the ranks) on every rank.
