@@ -32,14 +32,15 @@ PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
   PetscFunctionBeginUser;
   PetscCall(runner(families_[f], n, RunKind::pilot, &r));
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, true});
+  // the previous pilot of the family (the latest, so that an extra level is compared with the one before it)
   const double d = k ? l1Distance(runs_[f].at(n / 2), r.density) : NAN;
   pilots_.push_back({(int)f, n, r.seconds, r.steps, d, NAN});
   pilot_seconds_[f][(size_t)k] = r.seconds;
   runs_[f][n] = std::move(r.density);
   if (k < 2) PetscFunctionReturn(0);
-  const double n0 = (double)set_.n0;
+  const double a = (double)(n / 4);
   const size_t last = pilots_.size() - 1;
-  orders_[f] = fitObservedOrder(n0, 2 * n0, 4 * n0, pilots_[last - 1].difference, pilots_[last].difference);
+  orders_[f] = fitObservedOrder(a, 2 * a, 4 * a, pilots_[last - 1].difference, pilots_[last].difference);
   for (size_t q = last - 2; q <= last; ++q) pilots_[q].estimate = orders_[f].errorAt((double)pilots_[q].n);
   PetscFunctionReturn(0);
 }
@@ -58,13 +59,23 @@ bool ModelChooser::pilotTooDear(size_t f, int k, const std::vector<size_t>& comp
   if (cost_.loaded())
     pilot = cost_.predict(families_[f].name, (double)(set_.n0 << k));
   else {
-    std::vector<double> ratios;
+    std::vector<double> ratios; // families that ran level k; else this family's own last ratio
     for (size_t g : completed)
-      ratios.push_back(pilot_seconds_[g][(size_t)k] / pilot_seconds_[g][(size_t)k - 1]);
+      if (pilot_seconds_[g][(size_t)k] > 0)
+        ratios.push_back(pilot_seconds_[g][(size_t)k] / pilot_seconds_[g][(size_t)k - 1]);
+    if (ratios.empty()) ratios.push_back(pilot_seconds_[f][(size_t)k - 1] / pilot_seconds_[f][(size_t)k - 2]);
     std::sort(ratios.begin(), ratios.end());
     pilot = pilot_seconds_[f][(size_t)k - 1] * ratios[ratios.size() / 2];
   }
   return pilot > best.cost;
+}
+
+// After pilots up to level k - 1: whether the family needs pilot k, its order not yet observed in the asymptotic
+// range (below kAsymptoticOrder or not converging) and pilot k within the levels allowed and 4 n0 2^k <= n_max.
+bool ModelChooser::preAsymptotic(size_t f, int k) const {
+  const ObservedOrder& o = orders_[f];
+  return k < kMaxPilotLevels && (set_.n0 << (k + 2)) <= set_.n_max &&
+         !(o.valid && o.p_observed >= kAsymptoticOrder);
 }
 
 // Pilots at n0 for every family, then, cheapest family first, its pilots at 2 n0 and 4 n0 and its timing runs,
@@ -74,7 +85,7 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   const size_t nf = families_.size();
   orders_.assign(nf, ObservedOrder());
   runs_.assign(nf, {});
-  pilot_seconds_.assign(nf, {0.0, 0.0, 0.0});
+  pilot_seconds_.assign(nf, std::array<double, kMaxPilotLevels>{});
   for (size_t f = 0; f < nf; ++f) PetscCall(runPilot(runner, f, 0));
   std::vector<size_t> order(nf), completed;
   for (size_t f = 0; f < nf; ++f) order[f] = f;
@@ -85,7 +96,7 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   });
   for (size_t f : order) {
     bool pruned = false;
-    for (int k = 1; k <= 2 && !pruned; ++k) {
+    for (int k = 1; !pruned && (k <= 2 || preAsymptotic(f, k)); ++k) {
       pruned = pilotTooDear(f, k, completed);
       if (!pruned) PetscCall(runPilot(runner, f, k));
     }

@@ -1,7 +1,7 @@
 // The chooser of an accuracy-target run: given candidate families (configurations as option values, see
 // candidate.hpp) and a target, it
 //   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error constant,
-//      observed_order.hpp) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
+//      observed_order.hpp; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0, refitting each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
 //      and 32 n0 (at most n_max): with the pilots' timings, the cost model (cost_model.hpp). Families go
 //      cheapest first (by their n0 pilot); with an error target, a family whose next pilot is predicted to cost
 //      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
@@ -44,7 +44,11 @@ struct ChooserSettings {
   int per_octave = 4;
 };
 
-constexpr int kTimingSteps = 3; // steps of a timing run
+constexpr int kTimingSteps = 3;    // steps of a timing run
+constexpr int kMaxPilotLevels = 5; // pilots at n0 .. 16 n0 at most
+// An observed order below this from pilots at n0, 2n0, 4n0: not yet asymptotic (e.g. Shu-Osher's entropy waves
+// unresolved at 32..128 cells); a further pilot level (8 n0, then 16 n0) refits the order from the last three.
+constexpr double kAsymptoticOrder = 0.5;
 
 enum class RunKind { pilot, timing, final };
 struct RunResult {
@@ -97,6 +101,7 @@ private:
   PetscErrorCode runPilots(const Runner& runner);
   PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
+  bool preAsymptotic(size_t f, int k) const;
   PetscErrorCode runTimings(const Runner& runner, size_t f);
   void buildTable();
   bool feasible(const CandidateRow& r) const;
@@ -113,8 +118,7 @@ private:
   CostModel cost_;
   std::vector<ObservedOrder> orders_;
   std::vector<std::map<long long, GridField>> runs_; // per family: the density of every run so far, by n
-  std::vector<std::array<double, 3>>
-      pilot_seconds_; // per family: the seconds of its pilots at n0, 2 n0, 4 n0
+  std::vector<std::array<double, kMaxPilotLevels>> pilot_seconds_; // per family: its pilots' seconds by level
   std::vector<CandidateRow> table_;
   std::vector<RunRecord> pilots_, finals_, timings_;
   CandidateRow chosen_, most_accurate_;
