@@ -35,8 +35,8 @@ PetscErrorCode EulerRun::writeSpectrum(const std::string& group) {
   PetscCall(out_.writeReplicated(group + "/E", E.data(), {(unsigned long long)E.size()}, ""));
   PetscCall(out_.writeAttribute(group, "field", "sqrt(rho) u"));
   PetscCall(out_.writeAttribute(group, "sum_E", total));
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "spectrum %s: %zu shells, sum E(k) = %.12e",
-                           group.c_str(), E.size(), total));
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "spectrum %s: %zu shells, sum E(k) = %.12e", group.c_str(),
+                           E.size(), total));
   PetscFunctionReturn(0);
 }
 

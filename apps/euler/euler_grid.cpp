@@ -145,8 +145,12 @@ PetscErrorCode EulerRun::setupSweep() {
   if (dim() == 2) sweep4_ = std::make_unique<DirectionSweep<4>>(scheme_, lo);
   if (dim() == 3) sweep5_ = std::make_unique<DirectionSweep<5>>(scheme_, lo);
   const char* stages[3] = {"Euler lines x", "Euler lines y", "Euler lines z"};
-  if (dim() > 1) // one log stage per direction of the grid
-    for (int d = 0; d < dim(); ++d) PetscCall(PetscLogStageRegister(stages[d], &stage_lines_[d]));
+  // One log stage per direction of the grid, registered once per process (a target run sets up many runs).
+  if (dim() > 1)
+    for (int d = 0; d < dim(); ++d) {
+      PetscCall(PetscLogStageGetId(stages[d], &stage_lines_[d]));
+      if (stage_lines_[d] < 0) PetscCall(PetscLogStageRegister(stages[d], &stage_lines_[d]));
+    }
   PetscFunctionReturn(0);
 }
 

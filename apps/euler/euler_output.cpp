@@ -202,7 +202,7 @@ PetscErrorCode EulerRun::writeOutput() {
   PetscCall(writeFields("/final", U_, time_));
   PetscCall(writeXdmf());
   PetscCall(out_.commit(&ctx_));
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: wrote %s and %s", opt_.output.c_str(),
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: wrote %s and %s", opt_.output.c_str(),
                            xdmfPathFor(opt_.output).c_str()));
   PetscFunctionReturn(0);
 }

@@ -18,11 +18,11 @@ PetscErrorCode EulerRun::reportConservation() {
     const char* name = c == nv() - 1 ? "energy" : dim() == 1 && c == 1 ? "momentum" : names[c];
     const double change = std::abs(tot[c] - totals0_[c]);
     if (totals0_[c] == 0.0) // no scale to relate the change to (e.g. the momentum of a fluid at rest)
-      PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+      PetscCall(suite::logInfo(ctx_.comm(), quiet(),
                                "conservation %s: initial %.15e final %.15e abs_change %.3e (initial zero)",
                                name, totals0_[c], tot[c], change));
     else
-      PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+      PetscCall(suite::logInfo(ctx_.comm(), quiet(),
                                "conservation %s: initial %.15e final %.15e rel_change %.3e", name,
                                totals0_[c], tot[c], change / std::abs(totals0_[c])));
   }
@@ -49,7 +49,7 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
   // Shock rows and the rows examined, summed over the ranks (each rank examines its own rows) in every dim.
   long long rows[2] = {c.counts[0], c.sensor_rows};
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, rows, 2, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(),
                            "euler: shock sensor: %lld shock rows of %lld rows examined (fraction %.3e)",
                            rows[0], rows[1], rows[1] > 0 ? (double)rows[0] / (double)rows[1] : 0.0));
   if (dim() == 1) c.counts[0] = rows[0];
@@ -60,14 +60,14 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
       "rank 0 CPU %.3f s); steps retried %lld, shock rows %lld, limited faces %lld";
   if (dim() == 1) { // the line's counts are rank 0's, but for the shock rows (summed)
     const std::string fmt = std::string(head) + ", line solves %lld (exact fallbacks %lld)";
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
                              c.solves, c.counts[2]));
   } else { // shock rows, limited faces and fallbacks summed over the ranks; the solve calls and lines are rank 0's
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, c.counts, 3, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
     const std::string fmt =
         std::string(head) + "; rank 0: %lld batched line solves of %lld lines; exact fallbacks %lld";
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
                              c.solves, c.lines, c.counts[2]));
   }
@@ -75,7 +75,7 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
   PetscInt failures, rejections;
   PetscCall(TSGetSNESFailures(ts_, &failures));
   PetscCall(TSGetStepRejections(ts_, &rejections));
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(),
                            "implicit: %" PetscInt_FMT " Newton failures, %" PetscInt_FMT
                            " steps retried at half the time step",
                            failures, rejections));

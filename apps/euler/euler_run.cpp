@@ -4,6 +4,7 @@
 #include "euler_run.hpp"
 
 #include "core/option_value.hpp"
+#include "euler_target.hpp"
 
 namespace euler_app {
 
@@ -33,6 +34,12 @@ PetscErrorCode runEuler(const suite::RunContext& ctx) {
   PetscOptionsEnd();
   PetscCheck(dim >= 1 && dim <= 3, ctx.comm(), PETSC_ERR_ARG_OUTOFRANGE,
              "Invalid -dim %" PetscInt_FMT ": 1, 2 or 3", dim);
+  TargetOptions target;
+  PetscCall(readTargetOptions(ctx.comm(), (int)dim, &target));
+  if (target.on() && !ctx.helpRequested()) {
+    PetscCall(runTargetEuler(ctx, (int)dim, target));
+    PetscFunctionReturn(0);
+  }
   EulerRun run(ctx, (int)dim);
   PetscCall(run.readOptions());
   if (ctx.helpRequested() || run.spectrumOnly()) {

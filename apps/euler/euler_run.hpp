@@ -12,11 +12,13 @@
 #include "euler_options.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/h5_output.hpp"
+#include "model_choice/grid_distance.hpp"
 
 #include <petscdmda.h>
 #include <petscts.h>
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,7 +46,20 @@ public:
   PetscErrorCode writeSnapshot(PetscInt step, double t) override;
   PetscErrorCode writeFinal(const suite::LoopSummary& summary) override;
 
+  // For the accuracy-target driver (euler_target.cpp): runs whose log lines are left out (pilots), the options
+  // read, the final density on the whole grid on every rank (euler_density_field.cpp), the solve's cost (CPU
+  // seconds, the maximum over the ranks), its steps, its end time and the L1 density error of -error (NaN
+  // without).
+  void setQuiet(bool q) { quiet_ = q; }
+  const Options& options() const { return opt_; }
+  PetscErrorCode densityField(suite::model_choice::GridField* g) const;
+  PetscErrorCode solveSeconds(double* seconds) const;
+  PetscInt steps() const { return step_; }
+  double finalTime() const { return time_; }
+  double l1DensityError() const { return err_.have ? err_.l1[0] : NAN; }
+
 private:
+  bool quiet() const { return quiet_ || ctx_.quiet(); }
   int dim() const { return opt_.dim; }
   int nv() const { return opt_.nv(); }
   PetscInt localCells() const { return m_[0] * m_[1] * m_[2]; }
@@ -118,6 +133,7 @@ private:
   PetscErrorCode checkpointIo(bool write, const std::string& path, PetscInt* step, double* time);
 
   const suite::RunContext& ctx_;
+  bool quiet_ = false;
   Options opt_;
   suite::euler::Problem line_;      // -dim 1: the 1D problem (names, boundary attributes)
   suite::euler::ProblemND problem_; // every dim: the problem on the grid

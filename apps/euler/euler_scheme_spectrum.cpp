@@ -31,14 +31,14 @@ PetscErrorCode EulerRun::schemeSpectrum() {
   const size_t m = smooth.size();
   std::vector<double> cols[6];
   for (auto& c : cols) c.resize(m);
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "%-10s %-12s %-12s %-12s %-12s %-12s", "k dx",
-                           "smooth re", "smooth im", "shock re", "shock im", "Pade exact"));
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "%-10s %-12s %-12s %-12s %-12s %-12s", "k dx", "smooth re",
+                           "smooth im", "shock re", "shock im", "Pade exact"));
   for (size_t i = 0; i < m; ++i) {
     cols[0][i] = smooth[i].w, cols[1][i] = smooth[i].re, cols[2][i] = smooth[i].im;
     cols[3][i] = shock[i].re, cols[4][i] = shock[i].im,
     cols[5][i] = suite::euler::padeModifiedWavenumber(smooth[i].w);
     if (m <= 64 || i % (m / 32) == 0 || i + 1 == m)
-      PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "%-10.5f %-12.6f %-12.6f %-12.6f %-12.6f %-12.6f",
+      PetscCall(suite::logInfo(ctx_.comm(), quiet(), "%-10.5f %-12.6f %-12.6f %-12.6f %-12.6f %-12.6f",
                                cols[0][i], cols[1][i], cols[2][i], cols[3][i], cols[4][i], cols[5][i]));
   }
   if (!opt_.output.empty()) PetscCall(writeSchemeSpectrum(n, cols));
@@ -57,7 +57,7 @@ PetscErrorCode EulerRun::writeSchemeSpectrum(int n, const std::vector<double> co
   for (int c = 0; c < 6; ++c)
     PetscCall(out_.writeReplicated(std::string("/scheme_spectrum/") + names[c], cols[c].data(), {m}, ""));
   PetscCall(out_.commit(&ctx_));
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: wrote %s", opt_.output.c_str()));
+  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: wrote %s", opt_.output.c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -133,18 +133,17 @@ PetscErrorCode EulerRun::start(PetscInt step, double t, bool restarted) {
   // TSSolve's start of a fresh solve (a multistep integrator starts with its one-step method).
   if (!restarted) PetscCall(TSRestartStep(ts_));
   if (restarted && opt_.time == "bdf2")
-    PetscCall(
-        suite::logInfo(ctx_.comm(), ctx_.quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
   PetscCall(checkState(U_, step, t));
   // The x-t image starts with the state the run starts from (recorded at t = 0 as before the time loop).
   if (opt_.spacetime_every > 0) PetscCall(recordSpacetime(U_, 0.0));
   if (dim() == 1)
     PetscCall(suite::logInfo(
-        ctx_.comm(), ctx_.quiet(),
+        ctx_.comm(), quiet(),
         "euler: problem %s, scheme %s, time %s, nx %" PetscInt_FMT ", t_final %g, %d rank(s)",
         opt_.problem.c_str(), opt_.scheme.c_str(), opt_.time.c_str(), opt_.n[0], opt_.t_final, ctx_.size()));
   else
-    PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(),
                              "euler: problem %s, dim %d, scheme %s, time %s, grid %" PetscInt_FMT
                              " x %" PetscInt_FMT " x %" PetscInt_FMT ", t_final %g, %d rank(s)",
                              opt_.problem.c_str(), dim(), opt_.scheme.c_str(), opt_.time.c_str(), opt_.n[0],

@@ -1,0 +1,297 @@
+// The chooser of an accuracy-target run (see chooser.hpp): pilots, candidate table, choice, final run with its
+// own error check, bounded escalation.
+#include "model_choice/chooser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace suite::model_choice {
+
+double ModelChooser::pilotSeconds() const { // pilots and timing runs: what the choice cost
+  double s = 0.0;
+  for (const RunRecord& r : pilots_) s += r.seconds;
+  for (const RunRecord& r : timings_) s += r.seconds;
+  return s;
+}
+
+double ModelChooser::finalSeconds() const {
+  double s = 0.0;
+  for (const RunRecord& r : finals_) s += r.seconds;
+  return s;
+}
+
+std::string ModelChooser::label(int family, long long n) const {
+  return families_[(size_t)family].name + " n=" + std::to_string(n);
+}
+
+// Pilot k (n0 2^k) of family f: timed, compared with the family's previous pilot.
+PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
+  RunResult r;
+  const long long n = set_.n0 << k;
+  PetscFunctionBeginUser;
+  PetscCall(runner(families_[f], n, RunKind::pilot, &r));
+  if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, true});
+  // the previous pilot of the family (the latest, so that an extra level is compared with the one before it)
+  const double d = k ? l1Distance(runs_[f].at(n / 2), r.density) : NAN;
+  pilots_.push_back({(int)f, n, r.seconds, r.steps, d, NAN});
+  pilot_seconds_[f][(size_t)k] = r.seconds;
+  runs_[f][n] = std::move(r.density);
+  if (k < 2) PetscFunctionReturn(0);
+  const double a = (double)(n / 4);
+  const size_t last = pilots_.size() - 1;
+  orders_[f] = fitObservedOrder(a, 2 * a, 4 * a, pilots_[last - 1].difference, pilots_[last].difference);
+  for (size_t q = last - 2; q <= last; ++q) pilots_[q].estimate = orders_[f].errorAt((double)pilots_[q].n);
+  PetscFunctionReturn(0);
+}
+
+// True when pilot k of family f is predicted to cost more than the cheapest candidate already known to meet the
+// target: then the family cannot lower the whole cost (its pilot alone exceeds what the known candidate costs).
+// The pilot's cost: from a loaded cost model, else the family's previous pilot times the median ratio measured
+// between the same levels on the families completed.
+bool ModelChooser::pilotTooDear(size_t f, int k, const std::vector<size_t>& completed) {
+  if (set_.target_error <= 0 || completed.empty()) return false;
+  buildTable();
+  CandidateRow best;
+  choose(std::vector<bool>(table_.size(), false), &best);
+  if (best.n == 0) return false;
+  double pilot = 0.0;
+  if (cost_.loaded())
+    pilot = cost_.predict(families_[f].name, (double)(set_.n0 << k));
+  else {
+    std::vector<double> ratios; // families that ran level k; else this family's own last ratio
+    for (size_t g : completed)
+      if (pilot_seconds_[g][(size_t)k] > 0)
+        ratios.push_back(pilot_seconds_[g][(size_t)k] / pilot_seconds_[g][(size_t)k - 1]);
+    if (ratios.empty()) ratios.push_back(pilot_seconds_[f][(size_t)k - 1] / pilot_seconds_[f][(size_t)k - 2]);
+    std::sort(ratios.begin(), ratios.end());
+    pilot = pilot_seconds_[f][(size_t)k - 1] * ratios[ratios.size() / 2];
+  }
+  return pilot > best.cost;
+}
+
+// After pilots up to level k - 1: whether the family needs pilot k, its order not yet observed in the asymptotic
+// range (below kAsymptoticOrder or not converging) and pilot k within the levels allowed and 4 n0 2^k <= n_max.
+bool ModelChooser::preAsymptotic(size_t f, int k) const {
+  const ObservedOrder& o = orders_[f];
+  return k < kMaxPilotLevels && (set_.n0 << (k + 2)) <= set_.n_max &&
+         !(o.valid && o.p_observed >= kAsymptoticOrder);
+}
+
+// Pilots at n0 for every family, then, cheapest family first, its pilots at 2 n0 and 4 n0 and its timing runs,
+// unless a pilot is too dear (pilotTooDear: the family is left out).
+PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
+  PetscFunctionBeginUser;
+  const size_t nf = families_.size();
+  orders_.assign(nf, ObservedOrder());
+  runs_.assign(nf, {});
+  pilot_seconds_.assign(nf, std::array<double, kMaxPilotLevels>{});
+  for (size_t f = 0; f < nf; ++f) PetscCall(runPilot(runner, f, 0));
+  std::vector<size_t> order(nf), completed;
+  for (size_t f = 0; f < nf; ++f) order[f] = f;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return cost_.loaded() ? cost_.predict(families_[a].name, (double)set_.n0) <
+                                cost_.predict(families_[b].name, (double)set_.n0)
+                          : pilot_seconds_[a][0] < pilot_seconds_[b][0];
+  });
+  for (size_t f : order) {
+    bool pruned = false;
+    for (int k = 1; !pruned && (k <= 2 || preAsymptotic(f, k)); ++k) {
+      pruned = pilotTooDear(f, k, completed);
+      if (!pruned) PetscCall(runPilot(runner, f, k));
+    }
+    if (pruned) {
+      orders_[f] = ObservedOrder();
+      orders_[f].why = "left out: its next pilot would cost more than a candidate already meeting the target";
+      continue;
+    }
+    PetscCall(runTimings(runner, f));
+    completed.push_back(f);
+  }
+  std::vector<std::string> names;
+  for (size_t f : completed) names.push_back(families_[f].name);
+  PetscCall(cost_.checkCovers(comm_, names));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModelChooser::runTimings(const Runner& runner, size_t f) {
+  PetscFunctionBeginUser;
+  if (cost_.loaded()) PetscFunctionReturn(0);
+  long long previous = 0;
+  for (long long n : {set_.n0 << 3, set_.n0 << 5}) {
+    RunResult r;
+    n = std::min(n, set_.n_max);
+    if (n <= set_.n0 << 2 || n == previous) continue;
+    previous = n;
+    PetscCall(runner(families_[f], n, RunKind::timing, &r));
+    cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
+    timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
+  }
+  PetscFunctionReturn(0);
+}
+
+void ModelChooser::buildTable() {
+  table_.clear();
+  for (size_t f = 0; f < families_.size(); ++f)
+    for (int k = 0;; ++k) {
+      const long long n = std::llround((double)set_.n0 * std::exp2((double)k / set_.per_octave));
+      if (n > set_.n_max) break;
+      const std::string& name = families_[f].name; // a family left out has no cost law: NaN
+      table_.push_back({(int)f, n, cost_.covers(name) ? cost_.predict(name, (double)n) : NAN,
+                        orders_[f].errorAt((double)n)});
+    }
+  most_accurate_ = table_.empty() ? CandidateRow() : table_[0];
+  for (const CandidateRow& r : table_)
+    if (r.error < most_accurate_.error || (r.error == most_accurate_.error && r.cost < most_accurate_.cost))
+      most_accurate_ = r;
+}
+
+bool ModelChooser::feasible(const CandidateRow& r) const {
+  if (!std::isfinite(r.error)) return false;
+  if (set_.target_error > 0 && !(r.error <= set_.target_error / set_.safety)) return false;
+  return set_.target_walltime <= 0 || pilotSeconds() + finalSeconds() + r.cost <= set_.target_walltime;
+}
+
+bool ModelChooser::better(const CandidateRow& a, const CandidateRow& b) const {
+  if (set_.target_error > 0) return a.cost < b.cost || (a.cost == b.cost && a.error < b.error);
+  return a.error < b.error || (a.error == b.error && a.cost < b.cost);
+}
+
+// The best feasible row not yet run (done[i]); out->n = 0 when there is none.
+PetscErrorCode ModelChooser::choose(const std::vector<bool>& done, CandidateRow* out) const {
+  PetscFunctionBeginUser;
+  *out = CandidateRow();
+  for (size_t i = 0; i < table_.size(); ++i)
+    if (!done[i] && feasible(table_[i]) && (out->n == 0 || better(table_[i], *out))) *out = table_[i];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModelChooser::explainUnreachable() const {
+  PetscFunctionBeginUser;
+  CandidateRow best = table_.empty() ? CandidateRow() : table_[0], cheapest = best;
+  for (const CandidateRow& r : table_) {
+    const bool in_time = set_.target_walltime <= 0 || pilotSeconds() + r.cost <= set_.target_walltime;
+    if (in_time && (r.error < best.error || !std::isfinite(best.error))) best = r;
+    if (r.cost < cheapest.cost) cheapest = r;
+  }
+  PetscCheck(std::isfinite(best.error), comm_, PETSC_ERR_NOT_CONVERGED,
+             "-target_error/-target_walltime: no candidate family's pilots converge (n0 = %lld: %s); raise "
+             "-target_pilot_n",
+             set_.n0, orders_.empty() ? "" : orders_[0].why.c_str());
+  PetscCheck(
+      set_.target_error <= 0, comm_, PETSC_ERR_ARG_OUTOFRANGE,
+      "-target_error %g cannot be reached%s: best reachable is %.3e (%s, predicted %.3g s; a candidate "
+      "must be predicted at <= target / safety factor %g = %.3g; candidates up to -target_max_n %lld)",
+      set_.target_error, set_.target_walltime > 0 ? " within -target_walltime" : "", best.error,
+      label(best.family, best.n).c_str(), best.cost, set_.safety, set_.target_error / set_.safety,
+      set_.n_max);
+  SETERRQ(
+      comm_, PETSC_ERR_ARG_OUTOFRANGE,
+      "-target_walltime %g s cannot be met: %.3g s of pilots, then the cheapest candidate (%s) is predicted "
+      "to take %.3g s",
+      set_.target_walltime, pilotSeconds(), label(cheapest.family, cheapest.n).c_str(), cheapest.cost);
+}
+
+// The problem's regularity bounds every family's order: a lower order observed at finer levels caps the others,
+// each re-anchored at its finest run (same error there, slower decay beyond).
+void ModelChooser::capOrders(double p) {
+  for (size_t f = 0; f < orders_.size(); ++f)
+    if (orders_[f].valid && orders_[f].p > p) {
+      const double n = (double)runs_[f].rbegin()->first, e = orders_[f].errorAt(n);
+      orders_[f].p = p, orders_[f].a = e * std::pow(n, p);
+    }
+}
+
+namespace {
+// The finest run of the family with n <= limit (0: none).
+long long finestUpTo(const std::map<long long, GridField>& runs, double limit) {
+  long long best = 0;
+  for (const auto& [n, field] : runs)
+    if ((double)n <= limit) best = n;
+  return best;
+}
+} // namespace
+
+// The error of the run at n (density u) from the family's earlier runs, at resolution ratios of 2 or more (at
+// closer ratios the sub-cell placement of discontinuities dominates the L1 difference of two runs): b = the
+// finest run at <= n/2, a = the finest at <= b/2: the order observed again from a, b, n; without a, the pair
+// estimate with the order so far; below 2 n0 the pair estimate against the coarsest run at >= 2n. *refit: the
+// new fit, when there was one.
+double ModelChooser::checkEstimate(size_t f, long long n, const GridField& u, RunRecord* rec,
+                                   ObservedOrder* refit) {
+  const std::map<long long, GridField>& runs = runs_[f];
+  const ObservedOrder& o = orders_[f];
+  if (runs.count(n)) return o.errorAt((double)n); // a pilot's resolution: the fit of the pilots
+  const long long b = finestUpTo(runs, 0.5 * (double)n), a = b ? finestUpTo(runs, 0.5 * (double)b) : 0;
+  if (!b) {
+    const auto up = runs.lower_bound(2 * n);
+    if (up == runs.end()) return o.errorAt((double)n);
+    rec->difference = l1Distance(up->second, u);
+    return pairEstimate((double)up->first, (double)n, rec->difference, o.p);
+  }
+  rec->difference = l1Distance(runs.at(b), u);
+  if (a)
+    *refit = fitObservedOrder((double)a, (double)b, (double)n, l1Distance(runs.at(a), runs.at(b)),
+                              rec->difference);
+  return refit->valid ? refit->errorAt((double)n) : pairEstimate((double)b, (double)n, rec->difference, o.p);
+}
+
+// Runs c and checks its estimate (checkEstimate); a miss replaces the family's fit by what the final run showed.
+PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& c) {
+  RunResult r;
+  ObservedOrder refit;
+  const size_t f = (size_t)c.family;
+  PetscFunctionBeginUser;
+  PetscCall(runner(families_[f], c.n, RunKind::final, &r));
+  if (!cost_.loaded()) cost_.add(families_[f].name, {(double)c.n, r.seconds, (double)r.steps, true});
+  RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, NAN};
+  rec.estimate = checkEstimate(f, c.n, r.density, &rec, &refit);
+  finals_.push_back(rec);
+  chosen_ = c;
+  met_ = set_.target_error <= 0 || rec.estimate <= set_.target_error;
+  ObservedOrder& o = orders_[f];
+  if (refit.valid && refit.p < o.p) capOrders(refit.p);
+  if (refit.valid)
+    o = refit;
+  else if (rec.estimate > o.errorAt((double)c.n))
+    o.a = rec.estimate * std::pow((double)c.n, o.p);
+  runs_[f][c.n] = std::move(r.density);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModelChooser::run(const Runner& runner) {
+  CandidateRow c;
+  PetscFunctionBeginUser;
+  PetscCall(runPilots(runner));
+  buildTable();
+  std::vector<bool> done(table_.size(), false);
+  PetscCall(choose(done, &c));
+  if (c.n == 0) PetscCall(explainUnreachable());
+  for (int escalation = 0;; ++escalation) {
+    PetscCall(runFinal(runner, c));
+    if (met_ || escalation == set_.max_escalations) break;
+    buildTable(); // the same rows, with the missed family's errors raised
+    for (size_t i = 0; i < table_.size(); ++i)
+      done[i] = done[i] || (table_[i].family == c.family && table_[i].n <= c.n);
+    PetscCall(choose(done, &c));
+    if (c.n == 0) break; // nothing left that is predicted to do better: report the miss
+  }
+  PetscFunctionReturn(0);
+}
+
+std::string ModelChooser::summary() const {
+  char b[1024];
+  const RunRecord& f = finals_.back();
+  std::snprintf(
+      b, sizeof b,
+      "model_choice: target error %.3g, walltime %.3g s: chose %s (predicted error %.3g, cost %.3g s); "
+      "estimated error %.3g (%s); pilots and timings %zu runs %.3g s, final runs %zu %.3g s; most accurate "
+      "candidate %s would cost %.3g s (predicted error %.3g)",
+      set_.target_error, set_.target_walltime, label(chosen_.family, chosen_.n).c_str(), chosen_.error,
+      chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size() + timings_.size(), pilotSeconds(),
+      finals_.size(), finalSeconds(), label(most_accurate_.family, most_accurate_.n).c_str(),
+      most_accurate_.cost, most_accurate_.error);
+  return b;
+}
+
+} // namespace suite::model_choice

@@ -1,0 +1,128 @@
+// The chooser of an accuracy-target run: given candidate families (configurations as option values, see
+// candidate.hpp) and a target, it
+//   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error constant,
+//      observed_order.hpp; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0, refitting each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
+//      and 32 n0 (at most n_max): with the pilots' timings, the cost model (cost_model.hpp). Families go
+//      cheapest first (by their n0 pilot); with an error target, a family whose next pilot is predicted to cost
+//      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
+//   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
+//      and predicted error,
+//   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone, the
+//      most accurate one predicted to finish within the time left), runs it through the caller's runner,
+//   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and the
+//      finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder), or without a the pair
+//      estimate with the order so far (ratios of 2 or more: closer runs of a flow with discontinuities differ
+//      mostly by the sub-cell placement of the jumps). A lower order observed this way caps every family's
+//      order (the problem's regularity bounds them all). When the estimate misses the target the family's fit
+//      is replaced by what the final run showed and the next candidate is run (at most max_escalations times).
+// A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
+// same decisions: the runner must return the same density field and the same seconds (e.g. the maximum over
+// the ranks) on every rank.
+#pragma once
+
+#include "model_choice/candidate.hpp"
+#include "model_choice/cost_model.hpp"
+#include "model_choice/grid_distance.hpp"
+#include "model_choice/observed_order.hpp"
+
+#include <petscsys.h>
+
+#include <array>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace suite::model_choice {
+
+struct ChooserSettings {
+  double target_error = 0.0;    // 0: none (then target_walltime must be set)
+  double target_walltime = 0.0; // seconds for the whole run, pilots included; 0: none
+  double safety = 2.0;          // a candidate must be predicted to reach target_error / safety
+  int max_escalations = 2;
+  long long n0 = 25, n_max = 3200;
+  int per_octave = 4;
+};
+
+constexpr int kTimingSteps = 3;    // steps of a timing run
+constexpr int kMaxPilotLevels = 5; // pilots at n0 .. 16 n0 at most
+// An observed order below this from pilots at n0, 2n0, 4n0: not yet asymptotic (e.g. Shu-Osher's entropy waves
+// unresolved at 32..128 cells); a further pilot level (8 n0, then 16 n0) refits the order from the last three.
+constexpr double kAsymptoticOrder = 0.5;
+
+enum class RunKind { pilot, timing, final };
+struct RunResult {
+  GridField density; // the final density on the whole grid, the same on every rank (not for timing runs)
+  double seconds = 0.0;
+  long long steps = 0;
+};
+// Runs family f at resolution n: a pilot (to t_final, no output), a timing run (kTimingSteps steps, no output)
+// or a final run (to t_final, with the run's output).
+using Runner = std::function<PetscErrorCode(const Family& f, long long n, RunKind kind, RunResult* r)>;
+
+struct CandidateRow {
+  int family = 0;
+  long long n = 0;
+  double cost = 0.0, error = 0.0; // predicted seconds, predicted L1 error
+};
+struct RunRecord {
+  int family = 0;
+  long long n = 0;
+  double seconds = 0.0;
+  long long steps = 0;
+  double difference =
+      NAN;               // L1 distance to the previous run of the family (pilots) / to the reference (final)
+  double estimate = NAN; // finals: the estimated error; pilots: the fit's error at n
+};
+
+class ModelChooser {
+public:
+  ModelChooser(MPI_Comm comm, std::vector<Family> families, const ChooserSettings& s, const CostModel& loaded)
+      : comm_(comm), families_(std::move(families)), set_(s), cost_(loaded) {}
+  PetscErrorCode run(const Runner& runner);
+
+  const std::vector<Family>& families() const { return families_; }
+  const ChooserSettings& settings() const { return set_; }
+  const CostModel& costModel() const { return cost_; }
+  const std::vector<ObservedOrder>& orders() const { return orders_; }
+  const std::vector<CandidateRow>& table() const { return table_; }
+  const std::vector<RunRecord>& pilots() const { return pilots_; }
+  const std::vector<RunRecord>& finals() const { return finals_; }
+  const std::vector<RunRecord>& timings() const { return timings_; }
+  const CandidateRow& chosen() const { return chosen_; } // the last candidate run
+  const CandidateRow& mostAccurate() const { return most_accurate_; }
+  bool met() const { return met_; } // the final estimate is within the target (or no error target)
+  double pilotSeconds() const;
+  double finalSeconds() const;
+  std::string label(int family, long long n) const;
+  std::string summary() const; // one line
+
+private:
+  PetscErrorCode runPilots(const Runner& runner);
+  PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
+  bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
+  bool preAsymptotic(size_t f, int k) const;
+  PetscErrorCode runTimings(const Runner& runner, size_t f);
+  void buildTable();
+  bool feasible(const CandidateRow& r) const;
+  bool better(const CandidateRow& a, const CandidateRow& b) const;
+  PetscErrorCode choose(const std::vector<bool>& done, CandidateRow* out) const;
+  PetscErrorCode explainUnreachable() const;
+  PetscErrorCode runFinal(const Runner& runner, const CandidateRow& c);
+  void capOrders(double p);
+  double checkEstimate(size_t f, long long n, const GridField& u, RunRecord* rec, ObservedOrder* refit);
+
+  MPI_Comm comm_;
+  std::vector<Family> families_;
+  ChooserSettings set_;
+  CostModel cost_;
+  std::vector<ObservedOrder> orders_;
+  std::vector<std::map<long long, GridField>> runs_; // per family: the density of every run so far, by n
+  std::vector<std::array<double, kMaxPilotLevels>> pilot_seconds_; // per family: its pilots' seconds by level
+  std::vector<CandidateRow> table_;
+  std::vector<RunRecord> pilots_, finals_, timings_;
+  CandidateRow chosen_, most_accurate_;
+  bool met_ = false;
+};
+
+} // namespace suite::model_choice

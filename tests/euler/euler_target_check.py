@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""euler -target_error (issue #17): the chooser's achieved error against the exact solution is <= the target
+on Sod, the density wave and the 2D isentropic vortex for two targets a decade apart, the /model_choice group is complete, and a 2-rank
+run given the 1-rank run's cost model (-cost_model) takes the same choice. Each case runs in a few seconds.
+
+Usage: euler_target_check.py sod|density_wave|vortex|walltime|ranks
+"""
+import os
+import sys
+import tempfile
+
+import h5py
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from euler_harness import check, error, run  # noqa: E402
+
+ATTRS = ["families", "target_error", "chosen_family", "chosen_label", "chosen_n", "chosen_predicted_error", "chosen_predicted_cost",
+         "estimated_error", "target_met", "pilot_seconds", "final_seconds", "total_seconds",
+         "most_accurate_label", "most_accurate_predicted_cost", "most_accurate_predicted_error", "summary"]
+COLUMNS = {"candidates": ["family", "n", "predicted_cost", "predicted_error"],
+           "pilots": ["family", "n", "seconds", "difference", "estimate"],
+           "finals": ["family", "n", "seconds", "difference", "estimate"]}
+
+
+def check_group(path, target):
+    with h5py.File(path, "r") as f:
+        g = f["model_choice"]
+        missing = [a for a in ATTRS if a not in g.attrs]
+        missing += [f"{t}/{c}" for t, cols in COLUMNS.items() for c in cols if f"{t}/{c}" not in g]
+        check(not missing, f"/model_choice complete (missing: {missing})")
+        fams = g.attrs["families"].split(",")
+        per = [int((g["pilots/family"][:] == i).sum()) for i in range(len(fams))]
+        chosen = int(g.attrs["chosen_family"])
+        check(all(1 <= k <= 3 for k in per) and per[chosen] == 3,
+              f"pilots per family {per}: every family at n0, the chosen one ({fams[chosen]}) at n0, 2 n0, 4 n0")
+        full = [i for i, k in enumerate(per) if k == 3]  # families piloted to 4 n0: costed and estimated
+        rows = [i for i, fam in enumerate(g["candidates/family"][:]) if fam in full]
+        cost, err = g["candidates/predicted_cost"][:], g["candidates/predicted_error"][:]
+        check(rows and all(cost[i] > 0 and err[i] > 0 for i in rows), "candidate table costed and estimated")
+        check(g.attrs["target_met"] == 1 and g.attrs["estimated_error"] <= target,
+              f"estimated error {g.attrs['estimated_error']:.3e} <= target {target:g}")
+        achieved = f.attrs["error_l1_rho"] if "error_l1_rho" in f.attrs else f["errors"].attrs["l1_rho"]
+        return g.attrs["chosen_label"], achieved
+
+
+def target_case(problem, targets, extra=()):
+    with tempfile.TemporaryDirectory() as tmp:
+        for e in targets:
+            out = os.path.join(tmp, f"{problem}.h5")
+            log = run([*extra[:2], "-problem", problem, "-target_error", e, "-error", "-output", out, "-quiet", *extra[2:]])
+            check("model_choice: target error" in log, "one-line summary printed")
+            label, achieved = check_group(out, e)
+            check(abs(achieved - error(log)) <= 1e-6 * achieved, "the output's error is the final run's")
+            check(achieved <= e, f"{problem}: achieved L1 error {achieved:.3e} <= target {e:g} ({label})")
+
+
+def sod():
+    target_case("sod", [5e-3, 5e-4], ["-dim", 1])
+
+
+def density_wave():
+    target_case("density_wave", [1e-6, 1e-7], ["-dim", 1])
+
+
+def walltime():
+    """-target_walltime S: the chosen candidate is the most accurate one of the table whose predicted cost fits in
+    what the pilots left of S (a check of the choice against its own table, not of timings)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "w.h5")
+        log = run(["-problem", "sod", "-target_walltime", 0.5, "-error", "-output", out, "-quiet"])
+        check("model_choice: target error 0, walltime 0.5 s" in log, "summary names the walltime target")
+        with h5py.File(out, "r") as f:
+            g = f["model_choice"]
+            left = 0.5 - g.attrs["pilot_seconds"]
+            cost, err = g["candidates/predicted_cost"][:], g["candidates/predicted_error"][:]
+            fits = cost <= left
+            chosen = g.attrs["chosen_predicted_error"]
+            check(g.attrs["chosen_predicted_cost"] <= left, f"chosen fits in the {left:.3g} s left")
+            check(chosen == err[fits].min(), f"chosen is the most accurate that fits ({chosen:.3e})")
+
+
+def vortex():
+    """2D: the isentropic vortex to t = 0.5, weno5 and muscl2 up to 128 x 128."""
+    target_case("isentropic_vortex", [1e-4, 1e-5],
+                ["-dim", 2, "-t_final", 0.5, "-target_schemes", "weno5,muscl2", "-target_max_n", 128])
+
+
+def ranks():
+    with tempfile.TemporaryDirectory() as tmp:
+        one, two = os.path.join(tmp, "one.h5"), os.path.join(tmp, "two.h5")
+        args = ["-problem", "sod", "-target_error", 2e-3, "-error", "-quiet"]
+        run(args + ["-output", one])
+        run(args + ["-output", two, "-cost_model", one], np_=2)
+        a, ea = check_group(one, 2e-3)
+        b, eb = check_group(two, 2e-3)
+        check(a == b, f"1 rank chose {a}, 2 ranks (same cost model) chose {b}")
+        check(abs(ea - eb) <= 1e-12 * ea, f"achieved errors {ea:.15e} and {eb:.15e} agree")
+
+
+if __name__ == "__main__":
+    globals()[sys.argv[1]]()

@@ -1,0 +1,136 @@
+// The accuracy-target concept (lib/model_choice) on synthetic data with known answers: the observed order and
+// error constant from three runs (any ratios), the pair estimate, the grid transfer (sixth order on smooth
+// data, no overshoot at a jump), the cost law, the chooser on a family whose runs are exact + A n^-p g(x), and
+// the scoped options of a candidate.
+#include "model_choice/candidate.hpp"
+#include "model_choice/chooser.hpp"
+#include "model_choice/cost_model.hpp"
+#include "model_choice/grid_distance.hpp"
+#include "model_choice/observed_order.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace suite::model_choice;
+
+namespace {
+GridField line(long long n, double (*f)(double)) {
+  GridField g;
+  g.n = {n, 1, 1};
+  g.lo = {0, 0, 0}, g.hi = {1, 1, 1};
+  for (long long i = 0; i < n; ++i) g.values.push_back(f((i + 0.5) / (double)n));
+  return g;
+}
+double smooth(double x) {
+  return 1.0 + 0.2 * std::sin(2 * M_PI * x);
+}
+double step(double x) {
+  return x < 0.5 ? 1.0 : 0.125;
+}
+} // namespace
+
+TEST(ObservedOrder, RecoversOrderAndConstantFromAnyRatios) {
+  const double a = 3.0, p = 1.7, n[3] = {40, 90, 250};
+  auto e = [&](double m) { return a * std::pow(m, -p); };
+  const ObservedOrder o = fitObservedOrder(n[0], n[1], n[2], e(n[0]) - e(n[1]), e(n[1]) - e(n[2]));
+  ASSERT_TRUE(o.valid);
+  EXPECT_NEAR(o.p, p, 1e-9);
+  EXPECT_NEAR(o.a, a, 1e-7);
+  EXPECT_NEAR(o.errorAt(1000), e(1000), 1e-12);
+  EXPECT_NEAR(pairEstimate(250, 600, e(250) - e(600), p), e(600), 1e-14); // the finer run
+  EXPECT_NEAR(pairEstimate(600, 250, e(250) - e(600), p), e(250), 1e-14); // the coarser run
+}
+
+TEST(ObservedOrder, NotConvergingIsInvalid) {
+  const ObservedOrder o = fitObservedOrder(32, 64, 128, 1e-3, 2e-3); // differences growing
+  EXPECT_FALSE(o.valid);
+  EXPECT_FALSE(std::isfinite(o.errorAt(1000)));
+  EXPECT_FALSE(fitObservedOrder(32, 64, 128, NAN, 1e-3).valid);
+}
+
+TEST(GridDistance, SixthOrderOnSmoothData) {
+  // The same smooth function sampled on 40 and 80 cells (no centre in common): the distance is the
+  // interpolation error alone.
+  const double d = l1Distance(line(40, smooth), line(80, smooth));
+  EXPECT_LT(d, 1e-7);
+  const double d2 = l1Distance(line(80, smooth), line(160, smooth));
+  EXPECT_GT(d / d2, 40.0); // halving h: at least 2^5.3
+}
+
+TEST(GridDistance, NoOvershootAtAJump) {
+  // A jump on a face of both grids: cell values agree wherever the coarse cell is on one side of it.
+  const GridField coarse = line(20, step), fine = line(80, step);
+  EXPECT_LT(l1Distance(coarse, fine), 1e-14);
+  for (int i = 0; i < 40; ++i) {
+    const double v = interpolateLine(fine.values.data(), 80, 0.0, 1.0, (i + 0.5) / 40.0);
+    EXPECT_GE(v, 0.125 - 1e-14);
+    EXPECT_LE(v, 1.0 + 1e-14);
+  }
+}
+
+TEST(GridDistance, TwoDimensions) {
+  auto grid = [](long long n) {
+    GridField g;
+    g.dim = 2, g.n = {n, n, 1};
+    for (long long j = 0; j < n; ++j)
+      for (long long i = 0; i < n; ++i)
+        g.values.push_back(smooth((i + 0.5) / (double)n) * smooth((j + 0.5) / (double)n + 0.1));
+    return g;
+  };
+  EXPECT_LT(l1Distance(grid(32), grid(64)), 1e-6);
+}
+
+TEST(CostModel, StepsTimesPerStepCostIsRecovered) {
+  CostModel m;
+  auto t = [](double n) { return 2.0 * n * (1e-4 + 3e-8 * std::pow(n, 1.5)); }; // steps x seconds per step
+  for (double n : {32.0, 64.0, 128.0}) m.add("f", {n, t(n), 2.0 * n, true});
+  for (double n : {256.0, 1024.0}) m.add("f", {n, t(n) * 3.0 / (2.0 * n), 3.0, false}); // 3-step timing runs
+  EXPECT_NEAR(m.predict("f", 2048.0) / t(2048.0), 1.0, 1e-6);
+  EXPECT_NEAR(m.predict("f", 500.0) / t(500.0), 1.0, 1e-6);
+}
+
+TEST(Chooser, PicksTheCheapestMeetingTheTargetAndEstimatesItsError) {
+  const double a = 0.5, p = 1.0, target = 1e-3;
+  Runner runner = [&](const Family&, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    r->density = line(n, smooth);
+    for (long long i = 0; i < n; ++i)
+      r->density.values[(size_t)i] += a * std::pow((double)n, -p) * 2.0 * std::cos(3 * M_PI * (i + 0.5) / n);
+    r->steps = 2 * n;
+    r->seconds = 1e-6 * (double)n * (double)n;
+    return 0;
+  };
+  ChooserSettings s;
+  s.target_error = target, s.n0 = 32, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"only", {{"-scheme", "x"}}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  // The true error of run n: a n^-p mean|2 cos| = a n^-p 4/pi; the chosen n is the first ladder n predicted to
+  // reach target / safety.
+  const double c_true = a * 4.0 / M_PI;
+  EXPECT_TRUE(c.met());
+  EXPECT_LE(c_true / (double)c.chosen().n, target);
+  EXPECT_NEAR(c.finals().back().estimate / (c_true / (double)c.chosen().n), 1.0, 0.02);
+  EXPECT_NEAR(c.orders()[0].p, 1.0, 0.02);
+  EXPECT_EQ(c.pilots().size(), 3u);
+}
+
+TEST(ScopedOptions, SetsAndRestoresTheOptionsDatabase) {
+  char buf[64];
+  PetscBool set;
+  ASSERT_EQ(PetscOptionsSetValue(nullptr, "-mc_test_kept", "old"), 0);
+  {
+    ScopedOptions so;
+    ASSERT_EQ(so.setAll({{"-mc_test_kept", "new"}, {"-mc_test_added", "7"}}), 0);
+    ASSERT_EQ(so.set("-mc_test_kept", "newer"), 0); // the first value is the one restored
+    ASSERT_EQ(PetscOptionsGetString(nullptr, nullptr, "-mc_test_kept", buf, sizeof buf, &set), 0);
+    EXPECT_STREQ(buf, "newer");
+    ASSERT_EQ(PetscOptionsGetString(nullptr, nullptr, "-mc_test_added", buf, sizeof buf, &set), 0);
+    EXPECT_TRUE(set);
+  }
+  ASSERT_EQ(PetscOptionsGetString(nullptr, nullptr, "-mc_test_kept", buf, sizeof buf, &set), 0);
+  EXPECT_TRUE(set);
+  EXPECT_STREQ(buf, "old");
+  ASSERT_EQ(PetscOptionsHasName(nullptr, nullptr, "-mc_test_added", &set), 0);
+  EXPECT_FALSE(set);
+  ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_kept"), 0);
+}
