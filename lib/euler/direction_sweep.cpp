@@ -449,7 +449,7 @@ void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, 
 // ENO-Pade row's weights are the Pade weights to ~1e-18 (beta_k ~ (1e-12 q)^2 against epsilon ~ 1e-6 q^2,
 // weno5.hpp), so the row is the Pade row (crweno_cu6.hpp) and is assembled as one, without the characteristic
 // projection and the weights: a round-off change that saves most of a shocked line's row cost where the line is
-// at rest (the 3D explosion at 64^3: ENO-Pade / WENO5 cost 3.17 -> 2.68, docs/euler_nd.md).
+// at rest (the 3D explosion at 64^3: ENO-Pade / WENO5 cost 3.17 -> 3.04, docs/euler_nd.md).
 template <int NV> static bool uniformStencil(const typename LineGas<NV>::V* qs) {
   double scale[NV] = {}, diff[NV] = {};
   for (int m = 0; m < 6; ++m)
@@ -551,8 +551,7 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
       const int l = blocks_[c0 + ib];
       V* hl = h + (size_t)l * nface;
       if (rfChar()) {
-        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, nown, periodic, alpha,
-                  &shock_[(size_t)l * nown], x0, x1, hl);
+        rfCombine(q + (size_t)l * (xm + 2 * kGhost), n, xs, xm, periodic, alpha, x0, x1, hl);
         continue;
       }
       for (int k = 0; k < nface; ++k)
@@ -594,18 +593,17 @@ static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, con
 
 // rf-char face fluxes h[0 .. xm] of one block line (q: its cells) from the solutions x0, x1 of its systems (the
 // left- and right-biased rows of f): per characteristic field, Lax-Friedrichs dissipation for the fields of
-// mixed sign at the split rows (CRWENO5 and ENO-Pade rows, WENO closures); at the Pade rows and central closures
-// of enopade6 h = (x0 + x1) / 2 (both are central there).
+// mixed sign at the split faces (every interior face of a block line; WENO closures); at the central closures of
+// enopade6 h = (x0 + x1) / 2 (both are central there).
 template <int NV>
-void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic,
-                                   double alpha, const char* shocks, const double* x0, const double* x1,
-                                   V* h) {
+void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, bool periodic, double alpha,
+                                   const double* x0, const double* x1, V* h) {
   for (int k = 0; k <= xm; ++k) {
-    // The hybrid's block lines (markBlockLines) split their ENO-Pade rows and average at their Pade rows (uniform
-    // stencils) and closures; the face past the owned rows is classified on the same cells as on its owner.
-    bool split = !scheme_->hybrid;
-    if (scheme_->hybrid && !boundaryFace(periodic, xs + k, n))
-      split = k < nown ? shocks[k] != 0 : !uniformStencil<NV>(q + k);
+    // Every interior face of the hybrid's block lines is split (markBlockLines: ENO-Pade rows, and at uniform
+    // stencils Pade rows, which are those rows to round-off; averaging at the latter instead would switch the
+    // face flux on a threshold and turn round-off into 1e-9 differences between rank counts); boundary faces are
+    // explicit closures.
+    const bool split = !scheme_->hybrid || !boundaryFace(periodic, xs + k, n);
     if (!split) {
       for (int c = 0; c < NV; ++c) h[k][c] = 0.5 * (x0[NV * k + c] + x1[NV * k + c]);
       continue;

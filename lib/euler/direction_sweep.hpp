@@ -124,8 +124,8 @@ private:
   void blockBatchRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                       int c0, int cn);
   void blockBatchSolve(MPI_Comm comm, int nown, bool periodic, long long xs, int nface, int cn);
-  void rfCombine(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
-                 const char* shocks, const double* x0, const double* x1, V* h);
+  void rfCombine(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, const double* x0,
+                 const double* x1, V* h);
   // rf-char upwinding in effect (characteristic rows only).
   bool rfChar() const { return opt_.rf_char && opt_.characteristic; }
   void limitFaces(const V* q, int nlines, int xm, double lambda, V* h);

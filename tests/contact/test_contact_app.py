@@ -6,35 +6,18 @@
 - a failing solver is replaced by the fallback and the run records it;
 - results identical at 1 and 2 ranks; every sample scene runs without NaN; no energy gain in a drop.
 """
-import os
-import subprocess
 import sys
-import tempfile
-from pathlib import Path
 
 import h5py
+from contact_harness import Harness
 import numpy as np
 
 APP = sys.argv[1]
 G = 9.81
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-TMP = Path(tempfile.mkdtemp(prefix="contact_test_"))
-failures = []
+H = Harness(APP, "contact_test_")
+run, check, TMP = H.run, H.check, H.tmp
 
 
-def run(name, *args, np_=1):
-    out = TMP / f"{name}.h5"
-    cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), APP, *map(str, args), "-output", str(out), "-quiet"]
-    p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if p.returncode != 0:
-        raise SystemExit(f"FAILED: {' '.join(cmd)}\n{p.stdout}")
-    return h5py.File(out, "r")
-
-
-def check(cond, what):
-    print(("ok    " if cond else "FAIL  ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def downhill(theta):
@@ -121,7 +104,4 @@ for name, args in {
             inc = np.max(np.diff(e)) / abs(e[0])
             check(inc <= 1e-8, f"{name}: energy never increases (largest relative step change {inc:.2e})")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all contact app checks passed")
+H.finish("contact app")

@@ -12,37 +12,20 @@
 - a checkpoint written at 2 ranks, restarted at 1 rank, ends bitwise where the uninterrupted run ends;
 - -dump_problems with islands writes every island's problems (at least one per island and step).
 """
-import os
-import subprocess
 import sys
-import tempfile
-from pathlib import Path
 
 import h5py
+from contact_harness import Harness
 import numpy as np
 
 APP = sys.argv[1]
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-TMP = Path(tempfile.mkdtemp(prefix="contact_islands_"))
+H = Harness(APP, "contact_islands_")
+run, check, TMP = H.run, H.check, H.tmp
 GRID = ["-scene", "pile_grid", "-piles", 6, "-pyramid_base", 4, "-steps", 60]
 SMALL = ["-scene", "pile_grid", "-piles", 4, "-pyramid_base", 2, "-steps", 60]  # polyhedral: dense Lemke
 TOL_X, TOL_V = 1e-8, 1e-7
-failures = []
 
 
-def run(name, *args, np_=1):
-    out = TMP / f"{name}.h5"
-    cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), APP, *map(str, args), "-output", str(out), "-quiet"]
-    p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if p.returncode != 0:
-        raise SystemExit(f"FAILED: {' '.join(cmd)}\n{p.stdout}")
-    return h5py.File(out, "r")
-
-
-def check(cond, what):
-    print(("ok    " if cond else "FAIL  ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def frames(f):
@@ -93,7 +76,4 @@ f = run("dump", *GRID[:-1], 2, "-contact_islands", "on", "-dump_problems", dump,
 n = len(list(dump.parent.glob("p_step*.h5")))
 check(n >= 12 and f["/steps/islands"][0] == 6, f"-dump_problems with islands: {n} problems for 2 steps of 6 islands")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all contact islands checks passed")
+H.finish("contact islands")

@@ -6,36 +6,19 @@
   registry);
 - a pyramid of base 3 on the dense path (-contact_dense_max_rows 1000) stays at rest: drift <= 1e-6 m in 1 s.
 """
-import os
-import subprocess
 import sys
-import tempfile
-from pathlib import Path
 
 import h5py
+from contact_harness import Harness
 import numpy as np
 
 APP = sys.argv[1]
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-TMP = Path(tempfile.mkdtemp(prefix="contact_auto_"))
+H = Harness(APP, "contact_auto_")
+run, check, TMP = H.run, H.check, H.tmp
 REGISTRY = {"lemke", "keller", "cottle_dantzig", "murty", "bpp", "pgs", "pgs_block", "fb_newton",
             "smoothed_newton", "petsc_ssls", "petsc_rsls", "lemke_rf"}
-failures = []
 
 
-def run(name, *args):
-    out = TMP / f"{name}.h5"
-    cmd = [APP, *map(str, args), "-output", str(out), "-quiet"]
-    p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if p.returncode != 0:
-        raise SystemExit(f"FAILED: {' '.join(cmd)}\n{p.stdout}")
-    return h5py.File(out, "r")
-
-
-def check(cond, what):
-    print(("ok    " if cond else "FAIL  ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def solvers(f):
@@ -62,7 +45,4 @@ names, idx = solvers(pyr)
 check(drift <= 1e-6 and idx.min() >= 0, f"pyramid 3 (dense), auto: drift {drift:.2e} m <= 1e-6, solvers "
       f"{', '.join(f'{n} {int((idx == k).sum())}' for k, n in enumerate(names))}")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all contact lcp auto checks passed")
+H.finish("contact lcp auto")
