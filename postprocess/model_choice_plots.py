@@ -62,6 +62,11 @@ def plot_choice(path, output):
     ax.set_xlabel("predicted cost [s] (final: measured)")
     ax.set_ylabel("L1 density error (predicted)")
     ax.set_title(f"model choice: pilots {a['pilot_seconds']:.3g} s, total {a['total_seconds']:.3g} s", fontsize=10)
+    return _finish(plt, fig, ax, output)
+
+
+def _finish(plt, fig, ax, output):
+    """Grid, legend, and the figure written to output and closed; returns [output]."""
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
@@ -100,12 +105,7 @@ def plot_bench(path, output):
         ax.loglog(x, x / 4, "k:", lw=1, label="E / 4")
     ax.set_xlabel("target E (L1 density)")
     ax.set_ylabel("achieved L1 error against the exact solution")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(output, dpi=120)
-    plt.close(fig)
-    return [output]
+    return _finish(plt, fig, ax, output)
 
 
 def register(sub):
