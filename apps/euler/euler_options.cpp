@@ -143,8 +143,8 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
                                "Characteristic-wise reconstruction (false: component-wise)", "",
                                o->characteristic, &o->characteristic, nullptr));
   PetscCall(suite::optionsChoice(PetscOptionsObject, "-upwinding",
-                                 "Flux upwinding of the flux-split schemes (default: rf-char for crweno5 and "
-                                 "weno5, llf for enopade6 and implicit steps; muscl2 upwinds by HLLC)",
+                                 "Flux upwinding of the flux-split schemes (default: rf-char for enopade6, "
+                                 "crweno5 and weno5, llf for implicit steps; muscl2 upwinds by HLLC)",
                                  kUpwindings, &o->upwinding));
   PetscCall(suite::optionsBool(PetscOptionsObject, "-local_lf",
                                "Local Lax-Friedrichs splitting (false: global; implicit default)", "",
