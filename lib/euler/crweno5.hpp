@@ -15,6 +15,8 @@ namespace suite::euler {
 
 // Left-biased CRWENO5-Z row at x_{j+1/2} from v[0..5] = f_{j-2} .. f_{j+3} (v[5] unused).
 Row crweno5Row(const double* v);
+// The CRWENO5 row of candidate weights w[0..2] (summing to 1).
+Row crweno5RowFromWeights(const double* v, const double w[3]);
 // The same row with the optimal (linear) weights: the fifth-order upwind compact scheme.
 Row compactUpwind5Row(const double* v);
 

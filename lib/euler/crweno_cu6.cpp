@@ -10,8 +10,9 @@
 namespace suite::euler {
 
 namespace {
-constexpr double kC = 30.0;                          // the weights' constant C (header: why 30)
-constexpr double kOptimal[4] = {0.1, 0.4, 0.4, 0.1}; // the weights of the Pade row
+constexpr double kC = 30.0;                            // the weights' constant C (header: why 30)
+constexpr double kOptimal[4] = {0.1, 0.4, 0.4, 0.1};   // the weights of the Pade row
+constexpr double kCrweno5Optimal[3] = {0.2, 0.5, 0.3}; // CRWENO5's (crweno5.cpp)
 } // namespace
 
 double cu6Smoothness(const double* v) {
@@ -25,9 +26,16 @@ double cu6Smoothness(const double* v) {
   return s / 120960.0;
 }
 
+static void cu6WeightsFromBeta(const double* v, double beta[4], double w[4]);
+
 void cu6Weights(const double* v, double w[4]) {
   double beta[4];
   weno5Smoothness(v, beta);
+  cu6WeightsFromBeta(v, beta, w);
+}
+
+// beta[0..2]: the Jiang-Shu indicators of v (weno5Smoothness); beta[3] is set here.
+static void cu6WeightsFromBeta(const double* v, double beta[4], double w[4]) {
   beta[3] = cu6Smoothness(v);
   const double tau = std::abs(beta[3] - (beta[0] + 4.0 * beta[1] + beta[2]) / 6.0);
   double ms = 0.0;
@@ -56,12 +64,14 @@ Row crwenoCu6Row(const double* v) {
 }
 
 Row enoPadeBlendRow(const double* v) {
-  double w[4];
-  cu6Weights(v, w);
+  double beta[4], w[4], w5[3];
+  weno5Smoothness(v, beta);
+  cu6WeightsFromBeta(v, beta, w);
   const Row cu6 = cu6RowFromWeights(v, w);
   const double s = std::min(1.0, w[3] / kOptimal[3]), theta = s * s;
   if (theta == 1.0) return cu6;
-  const Row up = crweno5Row(v);
+  wenoZWeightsFromBeta(v, beta, kCrweno5Optimal, w5); // the CRWENO5-Z row on the same indicators
+  const Row up = crweno5RowFromWeights(v, w5);
   return {theta * cu6.a + (1.0 - theta) * up.a, theta * cu6.b + (1.0 - theta) * up.b,
           theta * cu6.c + (1.0 - theta) * up.c, theta * cu6.r + (1.0 - theta) * up.r};
 }

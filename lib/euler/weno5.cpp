@@ -17,6 +17,10 @@ void weno5Smoothness(const double* v, double beta[3]) {
 void wenoZWeights(const double* v, const double d[3], double w[3]) {
   double beta[3];
   weno5Smoothness(v, beta);
+  wenoZWeightsFromBeta(v, beta, d, w);
+}
+
+void wenoZWeightsFromBeta(const double* v, const double beta[3], const double d[3], double w[3]) {
   const double tau = std::abs(beta[0] - beta[2]);
   const double kEps =
       kWenoEpsAbs + kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;

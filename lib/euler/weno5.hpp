@@ -31,6 +31,8 @@ constexpr double kWenoEpsRel = 1e-6, kWenoEpsAbs = 1e-40;
 void weno5Smoothness(const double* v, double beta[3]);
 // WENO-Z nonlinear weights for linear weights d[3], from v[0..4] = f_{j-2} .. f_{j+2}.
 void wenoZWeights(const double* v, const double d[3], double w[3]);
+// The same from the indicators beta[0..2] of v already computed (weno5Smoothness).
+void wenoZWeightsFromBeta(const double* v, const double beta[3], const double d[3], double w[3]);
 // Left-biased fifth-order WENO-Z value f_{j+1/2} from v[0..4] = f_{j-2} .. f_{j+2}.
 double weno5Value(const double* v);
 // The same from the five values, inline so that loops over many stencils vectorise (Weno5Line). Four divisions
