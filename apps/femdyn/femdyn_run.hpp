@@ -92,6 +92,7 @@ public:
   explicit FemdynRun(const suite::RunContext& ctx) : ctx_(ctx) {}
   PetscErrorCode readOptions();
   const Options& options() const { return opt_; }
+  suite::CheckpointPolicy& checkpointPolicy() { return policy_; }
   PetscErrorCode setup();
   // The static solve or the time loop, then the output (written by the loop's final write).
   PetscErrorCode solve();
@@ -147,6 +148,7 @@ private:
 
 PetscErrorCode runFemdyn(const suite::RunContext& ctx);
 // -backend plex (femdyn_plex.cpp): the distributed DMPlex run, from the options read by FemdynRun.
-PetscErrorCode runPlexFemdyn(const suite::RunContext& ctx, const Options& opt);
+PetscErrorCode runPlexFemdyn(const suite::RunContext& ctx, const Options& opt,
+                             suite::CheckpointPolicy& policy);
 
 } // namespace femdyn_app

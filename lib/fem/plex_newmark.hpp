@@ -40,7 +40,11 @@ public:
   // Mean of component comp (times sign) of u over the vertices on the plane x = x0 (each counted once).
   PetscErrorCode planeMean(double x0, int comp, double sign, double* mean) const;
   Vec displacement() const { return u_; }
+  Vec velocity() const { return v_; }
+  Vec acceleration() const { return a_; }
   double time() const { return t_; }
+  // After a restart has filled u, v, a: the time of that state.
+  void setTime(double t) { t_ = t; }
 
 private:
   PetscErrorCode tipLoad(double P);

@@ -11,6 +11,9 @@ Usage: test_femdyn_plex.py FEMDYN
 - distribution: at 3 ranks every rank holds cells (/partition/cells, summing to the global count), and with
   -plex_rank_cap 2500 (a 30x2x2 beam holds 3,933 mesh points) the 1-rank run stops with a clear error while the
   3-rank run fits under the cap and gives the uncapped 1-rank tip deflection;
+- a checkpoint written at 3 ranks restarts at 2 ranks and ends on the uninterrupted run (1e-10); the output is in
+  the replicated path's node numbering (coordinates and /final/u row by row); a restart with another material
+  is refused;
 - the XDMF sidecar names /final/u; options the path does not have are refused by name.
 """
 import os
@@ -84,6 +87,25 @@ def main():
             ok = tip.shape == tip_ref.shape and rel(tip, tip_ref) <= TOL
             check(ok, f"StVK Newmark, {n} ranks, {name}: tip history vs CHOLMOD {rel(tip, tip_ref) if ok else tip.shape}")
             compare_field(f"StVK Newmark, {n} ranks, {name}", f, ref_d)
+
+        # A checkpoint written at 3 ranks (step 5 of 10) restarts at 2: the uninterrupted run's history and field.
+        ck = p("ck")
+        full = run(3, p("full3.h5"), *dynamic, "-backend", "plex", "-ksp_rtol", 1e-14, "-checkpoint_dir", ck,
+                   "-checkpoint_every", 5)
+        rs = run(2, p("rs2.h5"), *dynamic, "-backend", "plex", "-ksp_rtol", 1e-14, "-restart",
+                 os.path.join(ck, "femdyn_0000000005.h5"))
+        ta, tb = full["steps/tip_deflection"][:], rs["steps/tip_deflection"][:]
+        du = rel(rs["final/u"][:], full["final/u"][:])
+        check(ta.shape == tb.shape == (10,) and rel(tb, ta) <= TOL and du <= TOL,
+              f"checkpoint at 3 ranks, restart at 2: tip history {rel(tb, ta):.1e}, field {du:.1e} (<= {TOL:g})")
+        check(np.array_equal(rs["mesh/tets"][:].shape, (384 // 2, 4)) and
+              np.abs(rs["mesh/coordinates"][:] - ref_d["mesh/coordinates"][:]).max() == 0.0 and
+              rel(rs["final/u"][:], ref_d["final/u"][:]) <= TOL,
+              "output in the replicated path's node numbering: same coordinates and /final/u rows")
+        other = launch(2, p("bad_rs.h5"), "-material", "linear", *dynamic[2:], "-backend", "plex", "-restart",
+                       os.path.join(ck, "femdyn_0000000005.h5"))
+        check(other.returncode != 0 and "material stvk, this run linear" in other.stdout,
+              "restart with another material: refused, naming it")
 
         f3 = run(3, p("part.h5"), *static, "-backend", "plex")
         cells = f3["partition/cells"][:]
