@@ -49,8 +49,7 @@ PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
     PetscCheck(!set, comm, PETSC_ERR_SUP, "%s is not available with -backend plex (the distributed path)", n);
   }
   PetscCheck(o.mesh == "beam", comm, PETSC_ERR_SUP, "-backend plex generates the beam only (-mesh beam)");
-  PetscCheck(o.material == "linear" || o.material == "stvk", comm, PETSC_ERR_SUP,
-             "-backend plex has -material linear and stvk, not %s", o.material.c_str());
+  PetscCheck(o.material != "auto", comm, PETSC_ERR_SUP, "-backend plex has no -material auto (yet)");
   PetscCheck(o.dirichlet == "x=0", comm, PETSC_ERR_SUP,
              "-backend plex clamps the plane x=0 only (-dirichlet %s)", o.dirichlet.c_str());
   PetscFunctionReturn(0);
@@ -59,7 +58,6 @@ PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
 } // namespace
 
 PlexRun::~PlexRun() {
-  DMDestroy(&aux_);
   DMDestroy(&dm_);
 }
 
@@ -89,12 +87,10 @@ PetscErrorCode PlexRun::setup() {
   PetscCall(lameFromYoung(comm, o_.young, o_.poisson, &lame));
   PetscCall(createPlexBeam(comm, o_.beam, o_.plex_rank_cap, &dm_));
   PlexElasticParams p;
-  p.law = o_.material, p.lambda = lame.lambda, p.mu = lame.mu, p.rho = o_.density;
+  p.law = o_.material, p.lame = lame, p.rho = o_.density;
   std::copy(o_.gravity, o_.gravity + 3, p.gravity);
-  PetscCall(setupPlexElasticity(dm_, p, &aux_));
   const auto& n = o_.newmark;
-  PetscCall(
-      nm_.setup(dm_, aux_, p, o_.tip_load, n.beta, n.gamma, n.newton_rtol, n.newton_atol, n.newton_max_it));
+  PetscCall(nm_.setup(dm_, p, o_.tip_load, n.beta, n.gamma, n.newton_rtol, n.newton_atol, n.newton_max_it));
   PetscCall(ctx_.checkUnusedOptions()); // after SNESSetFromOptions: -snes_*, -ksp_*, -pc_* are used now
   PetscCall(nat_.setup(dm_, o_.beam));
   PetscCall(plexGlobalSizes(dm_, &nv_, &nc_));

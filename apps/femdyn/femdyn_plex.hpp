@@ -51,7 +51,7 @@ private:
   const suite::RunContext& ctx_;
   const Options& o_;
   suite::CheckpointPolicy& policy_;
-  DM dm_ = nullptr, aux_ = nullptr;
+  DM dm_ = nullptr;
   suite::fem::PlexNewmark nm_;
   suite::fem::PlexNaturalOrder nat_;
   long long nv_ = 0, nc_ = 0;

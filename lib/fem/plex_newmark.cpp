@@ -9,11 +9,10 @@ PlexNewmark::~PlexNewmark() {
   Vec* vecs[] = {&u_, &v_, &a_, &f_, &b_, &un_, &b_local_};
   for (Vec* v : vecs) VecDestroy(v);
   SNESDestroy(&snes_);
-  DMDestroy(&aux_);
   DMDestroy(&dm_);
 }
 
-PetscErrorCode PlexNewmark::setup(DM dm, DM aux_dm, const PlexElasticParams& p, double tip_load, double beta,
+PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p, double tip_load, double beta,
                                   double gamma, double newton_rtol, double newton_atol,
                                   PetscInt newton_max_it) {
   KSP ksp;
@@ -21,19 +20,21 @@ PetscErrorCode PlexNewmark::setup(DM dm, DM aux_dm, const PlexElasticParams& p, 
   SNESLineSearch ls;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectReference((PetscObject)dm));
-  PetscCall(PetscObjectReference((PetscObject)aux_dm));
-  dm_ = dm, aux_ = aux_dm, p_ = p, beta_ = beta, gamma_ = gamma;
+  dm_ = dm, beta_ = beta, gamma_ = gamma;
+  PetscCall(el_.setup(dm_, p));
   Vec* vecs[] = {&u_, &v_, &a_, &f_, &b_, &un_};
   for (Vec* v : vecs) {
     PetscCall(DMCreateGlobalVector(dm_, v));
     PetscCall(VecZeroEntries(*v));
   }
   PetscCall(PetscObjectSetName((PetscObject)u_, "displacement"));
-  PetscCall(DMCreateLocalVector(aux_, &b_local_));
+  PetscCall(DMCreateLocalVector(dm_, &b_local_));
+  PetscCall(VecZeroEntries(b_local_));
+  el_.setInertiaVector(b_local_);
   PetscCall(tipLoad(tip_load));
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm_), &snes_));
   PetscCall(SNESSetDM(snes_, dm_));
-  PetscCall(DMPlexSetSNESLocalFEM(dm_, nullptr, nullptr, nullptr));
+  PetscCall(el_.attach(snes_));
   PetscCall(SNESSetTolerances(snes_, newton_atol, newton_rtol, 0.0, newton_max_it, PETSC_DEFAULT));
   PetscCall(SNESGetLineSearch(snes_, &ls));
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC)); // full Newton steps, as fem::Newmark
@@ -82,23 +83,18 @@ PetscErrorCode PlexNewmark::tipLoad(double P) {
   PetscFunctionReturn(0);
 }
 
-// The auxiliary field b (inertia of plex_elasticity.hpp) from a global vector.
+// The inertia vector b (plex_elasticity.hpp) from a global vector.
 PetscErrorCode PlexNewmark::setAux(Vec b_global) {
-  Vec loc;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(dm_, &loc));
-  PetscCall(VecZeroEntries(loc)); // the clamped dofs: b = 0 there
-  PetscCall(DMGlobalToLocal(dm_, b_global, INSERT_VALUES, loc));
-  PetscCall(VecCopy(loc, b_local_));
-  PetscCall(DMRestoreLocalVector(dm_, &loc));
-  PetscCall(DMSetAuxiliaryVec(dm_, nullptr, 0, 0, b_local_));
+  PetscCall(VecZeroEntries(b_local_)); // the clamped DOFs: b = 0 there
+  PetscCall(DMGlobalToLocal(dm_, b_global, INSERT_VALUES, b_local_));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode PlexNewmark::solve(double mass, double stiffness, Vec x, PlexStepStats* st) {
   SNESConvergedReason reason;
   PetscFunctionBeginUser;
-  PetscCall(setPlexStepWeights(dm_, p_, PlexStepWeights{mass, stiffness}));
+  el_.setWeights(PlexStepWeights{mass, stiffness});
   PetscCall(SNESSolve(snes_, f_, x));
   PetscCall(SNESGetConvergedReason(snes_, &reason));
   PetscCheck(

@@ -1,10 +1,10 @@
 // Newmark time stepping (Newmark 1959; average acceleration beta = 1/4, gamma = 1/2 by default) of
 // M a + f_int(u) = f_ext on a distributed DMPlex (plex_elasticity.hpp): the state u, v, a and every work vector
 // are distributed Vecs of the DM's global section; each step solves R(u_{n+1}) = f_tip with SNES (Newton; the
-// inertia rho (c u - b) of plex_elasticity.hpp with c = 1/(beta dt^2)), then
+// inertia M (c u - b) of plex_elasticity.hpp with c = 1/(beta dt^2)), then
 //   a_{n+1} = c (u_{n+1} - u_n) - v_n / (beta dt) - (1/(2 beta) - 1) a_n,
 //   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}),
-// the same equations as fem::Newmark (newmark.hpp) on the replicated path. The initial acceleration solves
+// the same equations as fem::Newmark (newmark.hpp) on the replicated path (R: plex_elasticity.hpp). The initial acceleration solves
 // M a_0 = f_ext - f_int(u_0) (u_0 = 0). Linear solves: KSP (default CG + GAMG with the rigid-body near-null
 // space, relative tolerance 1e-10; -ksp_type, -pc_type, -snes_* as usual). The tip load: a total force P along
 // -y spread uniformly over the "tip" faces (consistent nodal loads area/3 per vertex, as beam_loads.hpp).
@@ -28,9 +28,9 @@ public:
   PlexNewmark& operator=(const PlexNewmark&) = delete;
   ~PlexNewmark();
 
-  // dm: set up by setupPlexElasticity; takes a reference to dm and aux_dm. Collective.
-  PetscErrorCode setup(DM dm, DM aux_dm, const PlexElasticParams& p, double tip_load, double beta,
-                       double gamma, double newton_rtol, double newton_atol, PetscInt newton_max_it);
+  // dm: the beam of createPlexBeam (labels "clamped", "tip"); sets up its field and the SNES. Collective.
+  PetscErrorCode setup(DM dm, const PlexElasticParams& p, double tip_load, double beta, double gamma,
+                       double newton_rtol, double newton_atol, PetscInt newton_max_it);
   // a_0 from M a_0 = f_ext (u = v = 0).
   PetscErrorCode initialize();
   // One step of dt. Errors (step time and SNES reason) when Newton diverges.
@@ -51,11 +51,11 @@ private:
   PetscErrorCode setAux(Vec b_global);
   PetscErrorCode solve(double mass, double stiffness, Vec x, PlexStepStats* st);
 
-  DM dm_ = nullptr, aux_ = nullptr;
+  DM dm_ = nullptr;
+  PlexElasticity el_;
   SNES snes_ = nullptr;
   Vec u_ = nullptr, v_ = nullptr, a_ = nullptr, f_ = nullptr, b_ = nullptr, un_ = nullptr;
-  Vec b_local_ = nullptr; // b on the auxiliary DM, local (with the clamped dofs)
-  PlexElasticParams p_;
+  Vec b_local_ = nullptr; // b as a local vector (with the clamped DOFs, 0)
   double beta_ = 0.25, gamma_ = 0.5, t_ = 0;
 };
 
