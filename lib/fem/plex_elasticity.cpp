@@ -4,6 +4,7 @@
 #include <petscds.h>
 #include <petscfe.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace suite::fem {
@@ -54,18 +55,6 @@ PetscErrorCode rigidBodyModes(DM dm, PetscInt field, PetscInt, MatNullSpace* sp)
   return DMPlexCreateRigidBody(dm, field, sp);
 }
 
-// RAII closure of a local vector on one cell.
-struct Closure {
-  DM dm;
-  Vec v;
-  PetscInt cell, n = 0;
-  PetscScalar* x = nullptr;
-  PetscErrorCode get() { return DMPlexVecGetClosure(dm, nullptr, v, cell, &n, &x); }
-  ~Closure() {
-    if (x) DMPlexVecRestoreClosure(dm, nullptr, v, cell, &n, &x);
-  }
-};
-
 } // namespace
 
 PetscErrorCode PlexElasticity::setup(DM dm, const PlexElasticParams& p) {
@@ -93,14 +82,97 @@ PetscErrorCode PlexElasticity::attach(SNES snes) {
   MatNullSpace rbm;
   PetscFunctionBeginUser;
   snes_ = snes;
+  PetscCall(prepareCells());
   PetscCall(DMSNESSetFunctionLocal(dm_, residualLocal, this));
   PetscCall(DMSNESSetJacobianLocal(dm_, jacobianLocal, this));
-  PetscCall(DMCreateMatrix(dm_, &J));
+  PetscCall(createJacobian(&J));
   PetscCall(DMPlexCreateRigidBody(dm_, 0, &rbm));
   PetscCall(MatSetNearNullSpace(J, rbm));
   PetscCall(MatNullSpaceDestroy(&rbm));
   PetscCall(SNESSetJacobian(snes, J, J, nullptr, nullptr));
   PetscCall(MatDestroy(&J));
+  PetscFunctionReturn(0);
+}
+
+// The 4 vertices of a cell's closure, in closure order.
+static PetscErrorCode cellVertices(DM dm, PetscInt cell, PetscInt v0, PetscInt v1, PetscInt vert[4]) {
+  PetscInt n = 0, *pts = nullptr, nv = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
+  for (PetscInt i = 0; i < 2 * n; i += 2)
+    if (pts[i] >= v0 && pts[i] < v1 && nv < 4) vert[nv++] = pts[i];
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
+  PetscCheck(nv == 4, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %d has %d vertices, not 4", (int)cell, (int)nv);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexElasticity::prepareCells() {
+  PetscSection ls, gs, cs;
+  Vec coords;
+  const PetscScalar* cx;
+  PetscInt c0, c1, v0, v1;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(dm_, &ls));
+  PetscCall(DMGetGlobalSection(dm_, &gs));
+  PetscCall(DMGetCoordinateSection(dm_, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMPlexGetHeightStratum(dm_, 0, &c0, &c1));
+  PetscCall(DMPlexGetDepthStratum(dm_, 0, &v0, &v1));
+  const size_t nc = (size_t)(c1 - c0);
+  vol_.resize(nc), grad_.resize(12 * nc), loc_.resize(12 * nc), glob_.resize(12 * nc);
+  PetscCall(VecGetArrayRead(coords, &cx));
+  for (PetscInt cell = c0; cell < c1; ++cell) {
+    const size_t e = (size_t)(cell - c0);
+    PetscInt vert[4];
+    PetscScalar x[12];
+    PetscCall(cellVertices(dm_, cell, v0, v1, vert));
+    for (int a = 0; a < 4; ++a) {
+      PetscInt off, goff, cdof;
+      PetscCall(PetscSectionGetOffset(cs, vert[a], &off));
+      for (int j = 0; j < 3; ++j) x[3 * a + j] = cx[off + j];
+      PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
+      PetscCall(PetscSectionGetOffset(gs, vert[a], &goff));
+      PetscCall(PetscSectionGetConstraintDof(gs, vert[a], &cdof));
+      if (goff < 0) goff = -(goff + 1); // owned by another rank
+      for (int i = 0; i < 3; ++i)
+        loc_[12 * e + 3 * a + i] = off + i, glob_[12 * e + 3 * a + i] = cdof ? -1 : goff + i;
+    }
+    Tet t;
+    PetscCheck(tetGeometry(x, &t), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "degenerate tetrahedron %d",
+               (int)cell);
+    vol_[e] = t.V;
+    std::copy(t.g, t.g + 12, &grad_[12 * e]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &cx));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexElasticity::createJacobian(Mat* J) const {
+  Mat pre;
+  Vec g;
+  PetscInt n, N;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(dm_, &g));
+  PetscCall(VecGetLocalSize(g, &n));
+  PetscCall(VecGetSize(g, &N));
+  PetscCall(DMRestoreGlobalVector(dm_, &g));
+  PetscCall(MatCreate(comm, &pre));
+  PetscCall(MatSetSizes(pre, n, n, N, N));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetUp(pre));
+  const double zeros[144] = {};
+  for (size_t e = 0; e < vol_.size(); ++e)
+    PetscCall(MatSetValues(pre, 12, &glob_[12 * e], 12, &glob_[12 * e], zeros, INSERT_VALUES));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(comm, J));
+  PetscCall(MatSetSizes(*J, n, n, N, N));
+  PetscCall(MatSetType(*J, MATAIJ));
+  PetscCall(MatSetBlockSize(*J, 3));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, *J));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
 
@@ -114,26 +186,25 @@ PetscErrorCode PlexElasticity::jacobianLocal(DM dm, Vec x, Mat J, Mat, void* ctx
 
 // Element by element: M (c u - b) + k V P g_a - rho g V / 4 into f (local; summed into the global residual).
 PetscErrorCode PlexElasticity::residual(DM dm, Vec x, Vec f) {
-  Vec coords;
-  PetscInt c0, c1;
+  const PetscScalar *xa, *ba;
+  PetscScalar* fa;
   bool admissible = true;
   PetscFunctionBeginUser;
   PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, x, 0.0, nullptr, nullptr, nullptr));
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &c0, &c1));
+  PetscCall(VecGetArrayRead(x, &xa));
+  PetscCall(VecGetArrayRead(b_, &ba));
+  PetscCall(VecGetArray(f, &fa));
   const double c = w_.mass, k = w_.stiffness, rho = p_.rho;
   energy_ = 0.0;
-  for (PetscInt cell = c0; cell < c1; ++cell) {
-    Closure xc{dm, coords, cell}, uc{dm, x, cell}, bc{dm, b_, cell};
-    PetscCall(xc.get());
-    PetscCall(uc.get());
-    PetscCall(bc.get());
+  for (size_t e = 0; e < vol_.size(); ++e) {
+    const PetscInt* li = &loc_[12 * e];
     Tet t;
-    PetscCheck(tetGeometry(xc.x, &t), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "degenerate tetrahedron %d",
-               (int)cell);
-    PetscScalar fe[12] = {};
+    t.V = vol_[e];
+    std::copy(&grad_[12 * e], &grad_[12 * e] + 12, t.g);
+    PetscScalar u[12], fe[12] = {};
+    for (int m = 0; m < 12; ++m) u[m] = xa[li[m]];
     if (k != 0.0) {
-      const Mat3 F = deformationGradient(uc.x, t);
+      const Mat3 F = deformationGradient(u, t);
       admissible = admissible && (material_->isLinear() || F.determinant() > 0.0);
       double W = 0.0;
       Mat3 P;
@@ -146,41 +217,42 @@ PetscErrorCode PlexElasticity::residual(DM dm, Vec x, Vec f) {
     for (int a = 0; a < 4; ++a)
       for (int i = 0; i < 3; ++i) {
         for (int b = 0; b < 4; ++b)
-          fe[3 * a + i] += massEntry(rho, t.V, a, b) * (c * uc.x[3 * b + i] - bc.x[3 * b + i]);
+          fe[3 * a + i] += massEntry(rho, t.V, a, b) * (c * u[3 * b + i] - ba[li[3 * b + i]]);
         fe[3 * a + i] -= rho * p_.gravity[i] * t.V / 4.0;
       }
-    PetscCall(DMPlexVecSetClosure(dm, nullptr, f, cell, fe, ADD_VALUES));
+    for (int m = 0; m < 12; ++m) fa[li[m]] += fe[m];
   }
+  PetscCall(VecRestoreArray(f, &fa));
+  PetscCall(VecRestoreArrayRead(b_, &ba));
+  PetscCall(VecRestoreArrayRead(x, &xa));
   if (!admissible && snes_) PetscCall(SNESSetFunctionDomainError(snes_)); // an inverted element: Newton fails
   PetscFunctionReturn(0);
 }
 
 // Element by element: c M + k K_T (the material's closed-form tangent, upper triangle, then mirrored).
 PetscErrorCode PlexElasticity::jacobian(DM dm, Vec x, Mat J) {
-  Vec coords;
-  PetscInt c0, c1;
+  const PetscScalar* xa;
   PetscFunctionBeginUser;
   PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, x, 0.0, nullptr, nullptr, nullptr));
   PetscCall(MatZeroEntries(J));
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &c0, &c1));
+  PetscCall(VecGetArrayRead(x, &xa));
   const double c = w_.mass, k = w_.stiffness, rho = p_.rho;
-  for (PetscInt cell = c0; cell < c1; ++cell) {
-    Closure xc{dm, coords, cell}, uc{dm, x, cell};
-    PetscCall(xc.get());
-    PetscCall(uc.get());
+  for (size_t e = 0; e < vol_.size(); ++e) {
     Tet t;
-    PetscCheck(tetGeometry(xc.x, &t), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "degenerate tetrahedron %d",
-               (int)cell);
+    t.V = vol_[e];
+    std::copy(&grad_[12 * e], &grad_[12 * e] + 12, t.g);
+    PetscScalar u[12];
+    for (int m = 0; m < 12; ++m) u[m] = xa[loc_[12 * e + m]];
     double ke[144] = {};
-    if (k != 0.0) material_->addElementTangent(deformationGradient(uc.x, t), t.g, 4, k * t.V, ke);
+    if (k != 0.0) material_->addElementTangent(deformationGradient(u, t), t.g, 4, k * t.V, ke);
     for (int a = 0; a < 4; ++a)
       for (int b = a; b < 4; ++b)
         for (int i = 0; i < 3; ++i) ke[(3 * a + i) * 12 + 3 * b + i] += c * massEntry(rho, t.V, a, b);
     for (int p = 0; p < 12; ++p)
       for (int q = 0; q < p; ++q) ke[p * 12 + q] = ke[q * 12 + p];
-    PetscCall(DMPlexMatSetClosure(dm, nullptr, nullptr, J, cell, ke, ADD_VALUES));
+    PetscCall(MatSetValues(J, 12, &glob_[12 * e], 12, &glob_[12 * e], ke, ADD_VALUES));
   }
+  PetscCall(VecRestoreArrayRead(x, &xa));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
