@@ -45,6 +45,13 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   split_errors.insert(split_errors.end(), s.split_errors.begin(), s.split_errors.end());
   split_ratios.insert(split_ratios.end(), s.split_ratios.begin(), s.split_ratios.end());
   split_offset.push_back((long long)split_errors.size());
+  friction_rung.push_back(s.friction_rung);
+  auto_solves.push_back(s.auto_solves);
+  target_missed.push_back(s.target_missed);
+  for (auto [from, to] : {std::pair{&s.problem_rungs, &problem_rung}, {&s.problem_rows, &problem_rows},
+                          {&s.problem_times, &problem_time}, {&s.problem_violations, &problem_violation}})
+    to->insert(to->end(), from->begin(), from->end());
+  problem_offset.push_back((long long)problem_rung.size());
 }
 
 } // namespace suite::contact

@@ -1,0 +1,111 @@
+// -friction auto: the ladder of friction models and the per-problem escalation (see friction_auto.hpp).
+#include "contact/friction_auto.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace suite::contact {
+
+namespace {
+std::vector<AutoRung> ladder(const StepperOptions& o) {
+  if (o.mu == 0) return {{"none", FrictionModel::None}};
+  return {{"box", FrictionModel::Box},
+          {"scaled_box", FrictionModel::ScaledBox},
+          {"splitting_3", FrictionModel::Splitting, 3},
+          {"splitting", FrictionModel::Splitting, o.splitting_max_it},
+          {"polyhedral_4", FrictionModel::Polyhedral, 0, 4},
+          {"polyhedral_8", FrictionModel::Polyhedral, 0, 8}};
+}
+} // namespace
+
+std::vector<std::string> autoRungNames(const StepperOptions& o) {
+  std::vector<std::string> v;
+  for (const AutoRung& r : ladder(o)) v.push_back(r.name);
+  return v;
+}
+
+AutoFriction::AutoFriction(const StepperOptions& o) : rungs_(ladder(o)) {
+  for (const AutoRung& r : rungs_) {
+    StepperOptions ro = o;
+    ro.friction = r.model;
+    if (r.passes > 0) ro.splitting_max_it = r.passes;
+    if (r.directions > 0) ro.polyhedral_directions = r.directions;
+    opts_.push_back(ro);
+    forms_.push_back(makeFrictionFormulation(ro));
+  }
+}
+
+int AutoFriction::startRung(const std::vector<int>& prev_rung, bool probe) const {
+  int r = prev_rung.empty() ? -1 : *std::max_element(prev_rung.begin(), prev_rung.end());
+  if (probe) r -= 1;
+  return std::clamp(r, 0, size() - 1);
+}
+
+namespace {
+// The problem's cone violation sum_i max(0, |lambda_t,i| - mu lambda_n,i) / sum_i lambda_n,i (forceMeasures'
+// measure) and +inf when friction acts without normal impulse (a box bound from the weight estimate on a
+// contact that separates), so that meeting E on every problem bounds the step's violation by E.
+double problemViolation(const std::vector<Contact>& cs, const std::vector<Vec3>& lam, double mu) {
+  double ratio = 0.0, violation = 0.0, fn = 0.0;
+  forceMeasures(cs, lam, mu, &ratio, &violation, &fn);
+  if (fn > 0) return violation;
+  for (const Vec3& l : lam)
+    if (std::hypot(l[1], l[2]) - mu * l[0] > 0) return std::numeric_limits<double>::infinity();
+  return 0.0;
+}
+
+// One rung's answer.
+struct RungAnswer {
+  std::vector<Vec3> v, w, lam;
+  StepStats st;
+  double violation = std::numeric_limits<double>::infinity();
+  int rung = -1;
+};
+} // namespace
+
+// From the start rung upward until a rung's cone violation is <= target_error; the best answer (smallest
+// violation, the lower rung on ties) is applied. Only the solve statistics of st are replaced: the step's
+// own fields (contacts, penetration) are kept.
+bool Stepper::solveAuto(const std::vector<Body>& bodies, const ProblemInput& in, std::vector<Vec3>* v,
+                        std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
+                        std::vector<lcp::Problem>* problems, lcp::Vec* solution) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool probe = steps_done_ % AutoFriction::kProbeEvery == 0;
+  RungAnswer best;
+  int solves = 0;
+  std::string why;
+  for (int r = auto_->startRung(in.prev_rung, probe); r < auto_->size(); ++r) {
+    RungAnswer a{*v, *w, {}, {}, 0.0, r};
+    ++solves;
+    if (!solveModel(auto_->formulation(r), auto_->options(r), bodies, in, &a.v, &a.w, &a.lam, &a.st, problems,
+                    solution)) {
+      why += auto_->rung(r).name + ": " + a.st.message + "; ";
+      continue;
+    }
+    a.violation = problemViolation(in.cs, a.lam, o_.mu);
+    if (best.rung < 0 || a.violation < best.violation) best = std::move(a);
+    if (best.violation <= o_.target_error) break;
+  }
+  const int contacts = st->contacts;
+  const double penetration = st->penetration;
+  if (best.rung < 0) {
+    st->failed = true;
+    st->message = "friction auto: no model of the ladder solved the problem (" + why + ")";
+    return false;
+  }
+  *st = best.st;
+  st->contacts = contacts, st->penetration = penetration;
+  st->friction_rung = best.rung;
+  st->auto_solves = solves;
+  st->target_missed = best.violation > o_.target_error;
+  st->problem_rungs = {(double)best.rung};
+  st->problem_rows = {(double)best.st.rows};
+  st->problem_times = {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+  st->problem_violations = {best.violation};
+  *v = std::move(best.v), *w = std::move(best.w), *lam = std::move(best.lam);
+  return true;
+}
+
+} // namespace suite::contact
