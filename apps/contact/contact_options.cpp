@@ -130,8 +130,7 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
       &islands));
   t->islands = islands == "on";
   const bool cone = t->friction == FrictionModel::Polyhedral || t->friction == FrictionModel::Auto;
-  PetscCheck(t->accuracy == ContactAccuracy::Exact || !cone, comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(t->accuracy == ContactAccuracy::Exact || !cone, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-contact_accuracy %s: needs -friction none, box, scaled_box or splitting", acc.c_str());
   PetscFunctionReturn(0);
 }

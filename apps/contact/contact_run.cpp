@@ -32,7 +32,8 @@ public:
         scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
     stepper_.keepProblems(!o.dump.empty());
     if (o.step.friction == FrictionModel::Auto)
-      for (const std::string& n : autoRungNames(o.step)) rec_.auto_rungs += (rec_.auto_rungs.empty() ? "" : ",") + n;
+      for (const std::string& n : autoRungNames(o.step))
+        rec_.auto_rungs += (rec_.auto_rungs.empty() ? "" : ",") + n;
     if (o.step.islands) {
       PetscCallAbort(ctx.comm(), suite::TaskDealer::create(ctx.comm(), &dealer_));
       stepper_.setTaskRunner(
@@ -96,7 +97,9 @@ PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suit
     PetscFunctionReturn(0);
   }
   if (st.failed) {
-    PetscCall(failed(step + 1, st, out));
+    StepStats f = st; // -friction auto: say that this was the retry
+    if (dt != o_.step.dt) f.message = "at half dt (" + std::to_string(dt) + " s) as well: " + f.message;
+    PetscCall(failed(step + 1, f, out));
     PetscFunctionReturn(0);
   }
   out->status = suite::StepStatus::Done;
@@ -158,7 +161,8 @@ PetscErrorCode ContactStepping::autoSummary() const {
   std::vector<long long> count(names.size(), 0);
   for (double r : rec_.problem_rung) count[(size_t)r] += 1;
   std::string rungs;
-  for (size_t k = 0; k < names.size(); ++k) rungs += (k ? ", " : "") + names[k] + " " + std::to_string(count[k]);
+  for (size_t k = 0; k < names.size(); ++k)
+    rungs += (k ? ", " : "") + names[k] + " " + std::to_string(count[k]);
   long long missed = 0, solves = 0;
   for (int m : rec_.target_missed) missed += m;
   for (int n : rec_.auto_solves) solves += n;
@@ -166,12 +170,13 @@ PetscErrorCode ContactStepping::autoSummary() const {
   for (double v : rec_.cone_violation) worst = std::max(worst, v);
   for (double t : rec_.problem_time) solve_time += t;
   for (double t : rec_.step_wall) step_time += t;
-  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                           "contact: friction auto (target_error %g): %zu problems (%s), %lld rung solves, %lld "
-                           "missed the target; largest step cone violation %.3e; contact solves %.3f s of %.3f s "
-                           "in steps",
-                           o_.step.target_error, rec_.problem_rung.size(), rungs.c_str(), solves, missed, worst,
-                           solve_time, step_time));
+  PetscCall(
+      suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                     "contact: friction auto (target_error %g): %zu problems (%s), %lld rung solves, %lld "
+                     "missed the target; largest step cone violation %.3e; contact solves %.3f s of %.3f s "
+                     "in steps",
+                     o_.step.target_error, rec_.problem_rung.size(), rungs.c_str(), solves, missed, worst,
+                     solve_time, step_time));
   PetscFunctionReturn(0);
 }
 

@@ -13,8 +13,8 @@ std::vector<AutoRung> ladder(const StepperOptions& o) {
   if (o.mu == 0) return {{"none", FrictionModel::None}};
   return {{"box", FrictionModel::Box},
           {"scaled_box", FrictionModel::ScaledBox},
-          {"splitting_3", FrictionModel::Splitting, 3},
-          {"splitting", FrictionModel::Splitting, o.splitting_max_it},
+          {"splitting_2", FrictionModel::Splitting, 2},
+          {"splitting_5", FrictionModel::Splitting, 5},
           {"polyhedral_4", FrictionModel::Polyhedral, 0, 4},
           {"polyhedral_8", FrictionModel::Polyhedral, 0, 8}};
 }
@@ -81,7 +81,9 @@ bool Stepper::solveAuto(const std::vector<Body>& bodies, const ProblemInput& in,
     ++solves;
     if (!solveModel(auto_->formulation(r), auto_->options(r), bodies, in, &a.v, &a.w, &a.lam, &a.st, problems,
                     solution)) {
-      why += auto_->rung(r).name + ": " + a.st.message + "; ";
+      std::string m = a.st.message;
+      while (!m.empty() && (m.back() == ' ' || m.back() == ';')) m.pop_back();
+      why += (why.empty() ? "" : "; ") + auto_->rung(r).name + ": " + m;
       continue;
     }
     a.violation = problemViolation(in.cs, a.lam, o_.mu);

@@ -48,8 +48,10 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   friction_rung.push_back(s.friction_rung);
   auto_solves.push_back(s.auto_solves);
   target_missed.push_back(s.target_missed);
-  for (auto [from, to] : {std::pair{&s.problem_rungs, &problem_rung}, {&s.problem_rows, &problem_rows},
-                          {&s.problem_times, &problem_time}, {&s.problem_violations, &problem_violation}})
+  for (auto [from, to] : {std::pair{&s.problem_rungs, &problem_rung},
+                          {&s.problem_rows, &problem_rows},
+                          {&s.problem_times, &problem_time},
+                          {&s.problem_violations, &problem_violation}})
     to->insert(to->end(), from->begin(), from->end());
   problem_offset.push_back((long long)problem_rung.size());
 }

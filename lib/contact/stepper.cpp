@@ -212,8 +212,8 @@ bool Stepper::solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* 
   matchPreviousImpulses(bodies, &prev, &has_prev, &prev_rung);
   rungs_.assign(contacts_.size(), -1);
   if (o_.islands) return solveIslands(bodies, prev, has_prev, prev_rung, v, w, lam, st);
-  const bool ok = solveProblem(bodies, {contacts_, prev, has_prev, prev_rung}, v, w, lam, st, &problems_,
-                               &solution_);
+  const bool ok =
+      solveProblem(bodies, {contacts_, prev, has_prev, prev_rung}, v, w, lam, st, &problems_, &solution_);
   if (ok) rungs_.assign(contacts_.size(), st->friction_rung);
   return ok;
 }

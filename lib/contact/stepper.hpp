@@ -226,8 +226,8 @@ private:
   void failedIsland(const std::vector<Body>& bodies, const std::vector<Island>& islands,
                     const IslandInput& in, int k, const std::vector<double>& result, StepStats* st);
   bool solveIslands(const std::vector<Body>& bodies, const std::vector<Vec3>& prev,
-                    const std::vector<bool>& has_prev, const std::vector<int>& prev_rung, std::vector<Vec3>* v,
-                    std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st);
+                    const std::vector<bool>& has_prev, const std::vector<int>& prev_rung,
+                    std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st);
   TaskRunner runner_;
   StepperOptions o_;
   std::shared_ptr<const FrictionFormulation> form_;

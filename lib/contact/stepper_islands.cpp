@@ -79,7 +79,8 @@ void mergeStats(const StepStats& s, int k, StepStats* st) {
   st->budget_stop = st->budget_stop || s.budget_stop;
   st->friction_rung = std::max(st->friction_rung, s.friction_rung);
   st->auto_solves += s.auto_solves, st->target_missed += s.target_missed;
-  for (auto [from, to] : {std::pair{&s.problem_rungs, &st->problem_rungs}, {&s.problem_rows, &st->problem_rows},
+  for (auto [from, to] : {std::pair{&s.problem_rungs, &st->problem_rungs},
+                          {&s.problem_rows, &st->problem_rows},
                           {&s.problem_times, &st->problem_times},
                           {&s.problem_violations, &st->problem_violations}})
     to->insert(to->end(), from->begin(), from->end());
@@ -129,7 +130,8 @@ std::vector<double> Stepper::solveIsland(const std::vector<Body>& bodies, const 
 
 bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Vec3>& prev,
                            const std::vector<bool>& has_prev, const std::vector<int>& prev_rung,
-                           std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st) {
+                           std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam,
+                           StepStats* st) {
   const std::vector<Island> islands = splitIslands(bodies, contacts_);
   const int n = (int)islands.size();
   st->islands = n;
