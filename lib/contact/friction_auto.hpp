@@ -3,9 +3,13 @@
 // violation sum_i max(0, |lambda_t,i| - mu lambda_n,i) / sum_i lambda_n,i (forceMeasures, the measure of the
 // speed-accuracy table, /steps/cone_violation) is <= E. The ladder (cheap and approximate first):
 //   mu = 0:  none (the only rung: no friction rows, no violation);
-//   mu > 0:  box, scaled_box, splitting 3 passes, splitting (converged, -splitting_max_it), polyhedral d = 4,
-//            polyhedral d = 8 (the full model; the d-gon is inscribed in the cone, so both polyhedral rungs
-//            violate it only by the cone-row compliance, ~0.3 -polyhedral_gamma_reg).
+//   mu > 0:  box, scaled_box, splitting 2 passes, splitting 5 passes, polyhedral d = 4, polyhedral d = 8 (the
+//            full model; the d-gon is inscribed in the cone, so both polyhedral rungs violate it only by the
+//            cone-row compliance, ~0.3 -polyhedral_gamma_reg). No converged-splitting rung: on the 40-log heap
+//            it was chosen for 2 of 383 problems, and each failed probe of a large island from polyhedral_4
+//            cost up to -splitting_max_it box solves (auto 25 s against 11.5 s with the 2/5-pass rungs).
+// A problem's violation is +inf when friction acts on it without any normal impulse (box bounds from the
+// weight estimate on separating contacts), so that every problem within E bounds the step's violation by E.
 // Warm choice: a problem starts at the highest rung its contacts used at the previous step (matched contacts;
 // the bottom rung when none matches) and climbs while the violation exceeds E. Coming back down: every
 // kProbeEvery-th step (the stepper's step count) a problem starts one rung below its warm rung. A rung whose
