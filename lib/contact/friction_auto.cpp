@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace suite::contact {
 
@@ -41,6 +42,22 @@ int AutoFriction::startRung(const std::vector<int>& prev_rung, bool probe) const
   int r = prev_rung.empty() ? -1 : *std::max_element(prev_rung.begin(), prev_rung.end());
   if (probe) r -= 1;
   return std::clamp(r, 0, size() - 1);
+}
+
+void Stepper::exportAutoState(std::vector<double>* s) const {
+  s->assign(prev_contacts_.size() + 1, -1.0);
+  for (size_t i = 0; i < prev_rungs_.size() && i < prev_contacts_.size(); ++i) (*s)[i] = prev_rungs_[i];
+  s->back() = (double)steps_done_;
+}
+
+void Stepper::importAutoState(const std::vector<double>& s) {
+  if (s.size() != prev_contacts_.size() + 1 || !(s.back() >= 0))
+    throw std::runtime_error("friction auto state: does not match the contacts");
+  prev_rungs_.assign(s.begin(), s.end() - 1);
+  for (int r : prev_rungs_)
+    if (r < -1 || r >= (auto_ ? auto_->size() : 0))
+      throw std::runtime_error("friction auto state: rung out of range");
+  steps_done_ = (long long)s.back();
 }
 
 namespace {

@@ -176,6 +176,10 @@ public:
   // Throws std::runtime_error on inconsistent sizes or body indices.
   void importState(int nbodies, const std::vector<double>& body_state,
                    const std::vector<double>& contact_state);
+  // -friction auto's part of that state: the rung of each contact of the last step (nc), then the count of
+  // steps (the probe schedule); import throws unless it matches the imported contacts (importState first).
+  void exportAutoState(std::vector<double>* state) const;
+  void importAutoState(const std::vector<double>& state);
   // Persistent identity of each contact of the last step: the id of the previous step's contact it was
   // matched to (same body pair, nearest point within 0.1 of the smaller bounding radius), else a new one.
   // Not part of the checkpoint (renumbered after a restart; the physics does not depend on them).

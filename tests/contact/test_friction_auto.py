@@ -7,7 +7,9 @@
 - every step's cone violation <= E, and every problem's (/friction_auto/cone_violation), in every run here;
 - mu = 0: the ladder is the frictionless rows alone;
 - pile_grid (4 pyramids of base 3, islands on): positions, orientations, velocities and the per-island rungs
-  bitwise identical at 1 and 2 ranks over 30 steps.
+  bitwise identical at 1 and 2 ranks over 30 steps;
+- a log heap of 10 checkpointed at step 25 (2 ranks) and restarted (1 rank) ends bitwise where the uninterrupted
+  run ends (the checkpoint holds the rungs and the probe schedule).
 """
 import sys
 
@@ -72,5 +74,17 @@ check(all(np.array_equal(x, y) for x, y in zip(frames(a), frames(b))),
 o = a["/friction_auto/offset"][:]
 check(a["/steps/islands"][-1] == 4 and o[-1] - o[-2] == 4, "pile_grid: one rung per island and step")
 within_target(a, "pile_grid")
+
+# a checkpoint holds every contact's rung and the probe schedule: a restart ends bitwise in the uninterrupted
+# run's state (the log heap: islands climb and come down between the rungs)
+HEAP = ["-scene", "log_heap", "-n_logs", 10, "-steps", 40, "-contact_islands", "on", *AUTO]
+ck = H.tmp / "ck"
+full = run("ck_full", *HEAP, "-checkpoint_dir", ck, "-checkpoint_every", 25, np_=2)
+rs = run("ck_restart", *HEAP, "-restart", ck / "contact_0000000025.h5")
+rungs = full["/friction_auto/rung"][:]
+check(np.array_equal(full["/frames/positions"][-1], rs["/frames/positions"][-1]) and len(set(rungs)) > 1,
+      f"restart at step 25 (1 rank) ends bitwise in the uninterrupted run's state (2 ranks; rungs used "
+      f"{sorted(int(r) for r in set(rungs))})")
+within_target(full, "log heap of 10")
 
 H.finish("friction auto")
