@@ -173,8 +173,9 @@ PetscErrorCode ContactStepping::autoSummary() const {
   PetscCall(
       suite::logInfo(ctx_.comm(), ctx_.quiet(),
                      "contact: friction auto (target_error %g): %zu problems (%s), %lld rung solves, %lld "
-                     "missed the target; largest step cone violation %.3e; contact solves %.3f s of %.3f s "
-                     "in steps",
+                     "missed the target; largest step cone violation %.3e; problem solves %.3f s (summed "
+                     "over islands), steps %.3f s (saving against polyhedral d = 8: "
+                     "scripts/bench/contact-friction-auto)",
                      o_.step.target_error, rec_.problem_rung.size(), rungs.c_str(), solves, missed, worst,
                      solve_time, step_time));
   PetscFunctionReturn(0);
