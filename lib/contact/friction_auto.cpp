@@ -82,18 +82,44 @@ struct RungAnswer {
 };
 } // namespace
 
-// From the start rung upward until a rung's cone violation is <= target_error; the best answer (smallest
-// violation, the lower rung on ties) is applied. Only the solve statistics of st are replaced: the step's
-// own fields (contacts, penetration) are kept.
+namespace {
+// The rungs to try: from the start rung up; below it (downwards) only while no rung has solved the problem.
+std::vector<int> rungOrder(int start, int size) {
+  std::vector<int> order;
+  for (int r = start; r < size; ++r) order.push_back(r);
+  for (int r = start - 1; r >= 0; --r) order.push_back(r);
+  return order;
+}
+
+// The chosen rung's statistics in st (the step's own fields, contacts and penetration, kept).
+void autoStats(const RungAnswer& best, int solves, double seconds, double target, StepStats* st) {
+  const int contacts = st->contacts;
+  const double penetration = st->penetration;
+  *st = best.st;
+  st->contacts = contacts, st->penetration = penetration;
+  st->friction_rung = best.rung;
+  st->auto_solves = solves;
+  st->target_missed = best.violation > target;
+  st->problem_rungs = {(double)best.rung};
+  st->problem_rows = {(double)best.st.rows};
+  st->problem_times = {seconds};
+  st->problem_violations = {best.violation};
+}
+} // namespace
+
+// From the start rung upward until a rung's cone violation is <= target_error (below the start rung only
+// when no rung above solved the problem); the best answer (smallest violation, the first tried on ties) is
+// applied.
 bool Stepper::solveAuto(const std::vector<Body>& bodies, const ProblemInput& in, std::vector<Vec3>* v,
                         std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
                         std::vector<lcp::Problem>* problems, lcp::Vec* solution) const {
   const auto t0 = std::chrono::steady_clock::now();
-  const bool probe = steps_done_ % AutoFriction::kProbeEvery == 0;
+  const int start = auto_->startRung(in.prev_rung, steps_done_ % AutoFriction::kProbeEvery == 0);
   RungAnswer best;
   int solves = 0;
   std::string why;
-  for (int r = auto_->startRung(in.prev_rung, probe); r < auto_->size(); ++r) {
+  for (int r : rungOrder(start, auto_->size())) {
+    if (best.rung >= 0 && (r < start || best.violation <= o_.target_error)) break;
     RungAnswer a{*v, *w, {}, {}, 0.0, r};
     ++solves;
     if (!solveModel(auto_->formulation(r), auto_->options(r), bodies, in, &a.v, &a.w, &a.lam, &a.st, problems,
@@ -105,24 +131,14 @@ bool Stepper::solveAuto(const std::vector<Body>& bodies, const ProblemInput& in,
     }
     a.violation = problemViolation(in.cs, a.lam, o_.mu);
     if (best.rung < 0 || a.violation < best.violation) best = std::move(a);
-    if (best.violation <= o_.target_error) break;
   }
-  const int contacts = st->contacts;
-  const double penetration = st->penetration;
   if (best.rung < 0) {
     st->failed = true;
     st->message = "friction auto: no model of the ladder solved the problem (" + why + ")";
     return false;
   }
-  *st = best.st;
-  st->contacts = contacts, st->penetration = penetration;
-  st->friction_rung = best.rung;
-  st->auto_solves = solves;
-  st->target_missed = best.violation > o_.target_error;
-  st->problem_rungs = {(double)best.rung};
-  st->problem_rows = {(double)best.st.rows};
-  st->problem_times = {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
-  st->problem_violations = {best.violation};
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  autoStats(best, solves, seconds, o_.target_error, st);
   *v = std::move(best.v), *w = std::move(best.w), *lam = std::move(best.lam);
   return true;
 }

@@ -13,9 +13,10 @@
 // Warm choice: a problem starts at the highest rung its contacts used at the previous step (matched contacts;
 // the bottom rung when none matches) and climbs while the violation exceeds E. Coming back down: every
 // kProbeEvery-th step (the stepper's step count) a problem starts one rung below its warm rung. A rung whose
-// solver chain fails counts as a miss (the next rung is tried); when no rung meets E, the answer of the
-// smallest violation is taken and the miss recorded (StepStats::target_missed); when no rung solves, the
-// problem fails. Everything depends only on the problem's data and the step count, never on the rank that
+// solver chain fails counts as a miss (the next rung is tried; the rungs below the start one only when no rung
+// above solved the problem); when no rung meets E, the answer of the smallest violation is taken and the miss
+// recorded (StepStats::target_missed); when no rung solves, the problem fails. The problem's statistics (rows,
+// iterations, solver, ...) are the chosen rung's; StepStats::auto_solves counts every rung solve. Everything depends only on the problem's data and the step count, never on the rank that
 // solves it, so results are the same at any rank count. References: the models' files (friction_*.cpp).
 #pragma once
 
