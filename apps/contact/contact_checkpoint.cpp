@@ -58,10 +58,15 @@ PetscErrorCode writeContactCheckpoint(MPI_Comm comm, const std::string& path, co
   contacts.insert(contacts.begin(), 8, 0.0);
   contacts[0] = (double)nc;
   suite::CheckpointHeader h{"contact", scheme, step, time, dt, {(long long)nb}};
-  PetscCall(suite::writeCheckpoint(comm, path, h,
-                                   {field(comm, "bodies", nb, kStateSize, b.data()),
-                                    field(comm, "sleep", nb, 2, sleep.data()),
-                                    field(comm, "contacts", nc + 1, 8, contacts.data())}));
+  std::vector<suite::CheckpointField> fields = {field(comm, "bodies", nb, kStateSize, b.data()),
+                                                field(comm, "sleep", nb, 2, sleep.data()),
+                                                field(comm, "contacts", nc + 1, 8, contacts.data())};
+  std::vector<double> rungs; // -friction auto: per contact its rung, then the step count
+  if (stepper.options().friction == FrictionModel::Auto) {
+    stepper.exportAutoState(&rungs);
+    fields.push_back(field(comm, "friction_auto", nc + 1, 1, rungs.data()));
+  }
+  PetscCall(suite::writeCheckpoint(comm, path, h, fields));
   PetscFunctionReturn(0);
 }
 
@@ -72,12 +77,15 @@ PetscErrorCode readContactCheckpoint(MPI_Comm comm, const std::string& path, con
   const int nb = (int)bodies->size();
   unsigned long long rows = 0;
   PetscCall(contactRows(comm, path, &rows));
-  std::vector<double> b(nb * kStateSize), sleep(2 * nb), contacts(rows * 8);
+  std::vector<double> b(nb * kStateSize), sleep(2 * nb), contacts(rows * 8), rungs(rows);
   suite::CheckpointHeader expected{"contact", scheme, 0, 0.0, dt, {(long long)nb}}, found;
-  PetscCall(suite::readCheckpoint(comm, path, expected, &found,
-                                  {field(comm, "bodies", nb, kStateSize, b.data()),
-                                   field(comm, "sleep", nb, 2, sleep.data()),
-                                   field(comm, "contacts", rows, 8, contacts.data())}));
+  std::vector<suite::CheckpointField> fields = {field(comm, "bodies", nb, kStateSize, b.data()),
+                                                field(comm, "sleep", nb, 2, sleep.data()),
+                                                field(comm, "contacts", rows, 8, contacts.data())};
+  const bool with_auto = stepper->options().friction == FrictionModel::Auto;
+  if (with_auto) fields.push_back(field(comm, "friction_auto", rows, 1, rungs.data()));
+  PetscCall(suite::readCheckpoint(comm, path, expected, &found, fields));
+  PetscCallMPI(MPI_Bcast(rungs.data(), (int)rungs.size(), MPI_DOUBLE, 0, comm));
   PetscCallMPI(MPI_Bcast(b.data(), (int)b.size(), MPI_DOUBLE, 0, comm));
   PetscCallMPI(MPI_Bcast(sleep.data(), (int)sleep.size(), MPI_DOUBLE, 0, comm));
   PetscCallMPI(MPI_Bcast(contacts.data(), (int)contacts.size(), MPI_DOUBLE, 0, comm));
@@ -93,6 +101,7 @@ PetscErrorCode readContactCheckpoint(MPI_Comm comm, const std::string& path, con
   std::string err;
   try {
     stepper->importState(nb, sleep, std::vector<double>(contacts.begin() + 8, contacts.end()));
+    if (with_auto) stepper->importAutoState(rungs);
   } catch (const std::exception& e) {
     err = e.what();
   }

@@ -84,6 +84,13 @@ PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
   PetscCheck(frictionFromName(friction, &t->friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model", friction.c_str());
   PetscCall(r.real("-mu", "Friction coefficient", &t->mu));
+  PetscBool target_set = PETSC_FALSE;
+  PetscCall(suite::optionsReal(r.po, "-target_error",
+                               "-friction auto: largest cone violation sum max(0, |l_t| - mu l_n) / sum l_n "
+                               "of each problem",
+                               nullptr, t->target_error, &t->target_error, &target_set));
+  PetscCheck(!target_set || t->friction == FrictionModel::Auto, comm, PETSC_ERR_ARG_WRONG,
+             "-target_error: needs -friction auto (given with -friction %s)", friction.c_str());
   std::vector<suite::Choice> primary = contactSolverChoices();
   primary.push_back({"auto",
                      "the portfolio (lib/lcp/portfolio): the measured chain of the problem's class, each "
@@ -122,8 +129,8 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
        {"off", "one problem of the whole scene, on every rank"}},
       &islands));
   t->islands = islands == "on";
-  PetscCheck(t->accuracy == ContactAccuracy::Exact || t->friction != FrictionModel::Polyhedral, comm,
-             PETSC_ERR_ARG_OUTOFRANGE,
+  const bool cone = t->friction == FrictionModel::Polyhedral || t->friction == FrictionModel::Auto;
+  PetscCheck(t->accuracy == ContactAccuracy::Exact || !cone, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-contact_accuracy %s: needs -friction none, box, scaled_box or splitting", acc.c_str());
   PetscFunctionReturn(0);
 }
@@ -204,6 +211,7 @@ PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
   const Range ranges[] = {
       {"-lcp_tol", t.lcp_tol, '(', 0, 1, ')'},
       {"-mu", t.mu, '[', 0, inf, ')'},
+      {"-target_error", t.target_error, '(', 0, inf, ')'},
       {"-dt", t.dt, '(', 0, inf, ')'},
       {"-steps", (double)o.steps, '[', 0, inf, ']', true},
       {"-gravity", -t.gravity.z(), '[', 0, inf, ')'},

@@ -19,6 +19,8 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   PetscCall(out.writeAttribute("/", "contact_islands", step.islands ? "on" : "off"));
   PetscCall(out.writeAttribute("/", "dt", step.dt));
   PetscCall(out.writeAttribute("/", "mu", step.mu));
+  if (step.friction == FrictionModel::Auto)
+    PetscCall(out.writeAttribute("/", "target_error", step.target_error));
   PetscCall(out.writeAttribute("/", "theta", scene.theta_deg));
   PetscCall(out.writeAttribute("/", "steps_requested", outcome.steps_requested));
   PetscCall(out.writeAttribute("/", "steps", outcome.steps_done));

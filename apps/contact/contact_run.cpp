@@ -7,6 +7,7 @@
 #include "contact_output.hpp"
 #include "contact_size_check.hpp"
 
+#include "contact/friction_auto.hpp"
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
 #include "core/task_dealer.hpp"
@@ -15,6 +16,7 @@
 #include "io/h5_output.hpp"
 #include "lcp/readers.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace contact_app {
@@ -29,6 +31,9 @@ public:
       : ctx_(ctx), o_(o), bodies_(std::move(bodies)), stepper_(o.step),
         scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
     stepper_.keepProblems(!o.dump.empty());
+    if (o.step.friction == FrictionModel::Auto)
+      for (const std::string& n : autoRungNames(o.step))
+        rec_.auto_rungs += (rec_.auto_rungs.empty() ? "" : ",") + n;
     if (o.step.islands) {
       PetscCallAbort(ctx.comm(), suite::TaskDealer::create(ctx.comm(), &dealer_));
       stepper_.setTaskRunner(
@@ -66,6 +71,7 @@ public:
 private:
   PetscErrorCode dumpProblems(PetscInt step);
   PetscErrorCode failed(PetscInt step, const StepStats& st, suite::StepOutcome* out);
+  PetscErrorCode autoSummary() const;
 
   const suite::RunContext& ctx_;
   const AppOptions& o_;
@@ -80,12 +86,20 @@ private:
 
 PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suite::StepOutcome* out) {
   PetscFunctionBeginUser;
+  if (dt != stepper_.options().dt) stepper_.setDt(dt); // a retry at half dt, or back after one
   const auto t0 = std::chrono::steady_clock::now();
   const StepStats st = stepper_.step(&bodies_);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   PetscCall(dumpProblems(step + 1));
+  if (st.failed && o_.step.friction == FrictionModel::Auto && dt == o_.step.dt) {
+    out->status = suite::StepStatus::Retry; // -friction auto: the step once more at half dt
+    out->message = st.message;
+    PetscFunctionReturn(0);
+  }
   if (st.failed) {
-    PetscCall(failed(step + 1, st, out));
+    StepStats f = st; // -friction auto: say that this was the retry
+    if (dt != o_.step.dt) f.message = "at half dt (" + std::to_string(dt) + " s) as well: " + f.message;
+    PetscCall(failed(step + 1, f, out));
     PetscFunctionReturn(0);
   }
   out->status = suite::StepStatus::Done;
@@ -132,9 +146,38 @@ PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
   if (sum.failed) status = "failed: " + failure_;
   if (sum.stopped) status = "stopped at step " + std::to_string(sum.steps) + " (" + sum.stop_reason + ")";
   if (rec_.frame_step.back() != sum.steps) rec_.frame(bodies_, sum.steps, sum.t);
+  PetscCall(autoSummary());
   PetscCall(writeContactOutput(ctx_, o_.output, o_.scene, o_.step, bodies_, rec_,
                                {status, (long long)o_.steps, (long long)sum.steps}));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+// -friction auto: the run summary line (the full model's time on the same run: scripts/bench/contact-friction-auto).
+PetscErrorCode ContactStepping::autoSummary() const {
+  PetscFunctionBeginUser;
+  if (o_.step.friction != FrictionModel::Auto) PetscFunctionReturn(0);
+  const std::vector<std::string> names = autoRungNames(o_.step);
+  std::vector<long long> count(names.size(), 0);
+  for (double r : rec_.problem_rung) count[(size_t)r] += 1;
+  std::string rungs;
+  for (size_t k = 0; k < names.size(); ++k)
+    rungs += (k ? ", " : "") + names[k] + " " + std::to_string(count[k]);
+  long long missed = 0, solves = 0;
+  for (int m : rec_.target_missed) missed += m;
+  for (int n : rec_.auto_solves) solves += n;
+  double worst = 0.0, solve_time = 0.0, step_time = 0.0;
+  for (double v : rec_.cone_violation) worst = std::max(worst, v);
+  for (double t : rec_.problem_time) solve_time += t;
+  for (double t : rec_.step_wall) step_time += t;
+  PetscCall(
+      suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                     "contact: friction auto (target_error %g): %zu problems (%s), %lld rung solves, %lld "
+                     "missed the target; largest step cone violation %.3e; problem solves %.3f s (summed "
+                     "over islands), steps %.3f s (saving against polyhedral d = 8: "
+                     "scripts/bench/contact-friction-auto)",
+                     o_.step.target_error, rec_.problem_rung.size(), rungs.c_str(), solves, missed, worst,
+                     solve_time, step_time));
   PetscFunctionReturn(0);
 }
 
@@ -184,6 +227,7 @@ PetscErrorCode run(suite::RunContext& ctx) {
   suite::TimeLoopSettings set;
   set.app = "contact";
   set.max_steps = o.steps;
+  set.max_retries = o.step.friction == FrictionModel::Auto ? 1 : 0; // an unsolved problem: once at half dt
   set.snapshot_every = o.output_every;
   set.eta_time = o.steps * o.step.dt;
   set.output = o.output.c_str();

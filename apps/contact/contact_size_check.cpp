@@ -18,11 +18,12 @@ constexpr double kBase = 5e7; // libraries, PETSc, HDF5
 
 // Delassus rows and LCP unknowns per contact of the friction model.
 void rowsPerContact(const StepperOptions& t, double* delassus, double* lcp) {
-  const double d = t.polyhedral_directions;
+  const double d = t.friction == FrictionModel::Auto ? 8.0 : t.polyhedral_directions; // auto: its top rung
   switch (t.friction) {
   case FrictionModel::None:
     *delassus = *lcp = 1.0;
     break;
+  case FrictionModel::Auto:
   case FrictionModel::Polyhedral:
     *delassus = 1.0 + d;
     *lcp = 2.0 + d;

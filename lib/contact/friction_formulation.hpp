@@ -8,6 +8,8 @@
 //   scaled_box  friction_box.cpp         ... nu the previous step's normal impulse of the contact
 //   splitting   friction_splitting.cpp   box LCPs with nu <- lambda_n until it stops changing
 //   polyhedral  friction_polyhedral.cpp  the linearised cone LCP (Stewart & Trinkle 1996)
+//   auto        friction_auto.cpp        per problem the cheapest of these meeting -target_error (no
+//                                        formulation of its own: makeFrictionFormulation gives null)
 // The registry (friction_registry.cpp) maps each name to its factory and a one-line description (-help).
 #pragma once
 

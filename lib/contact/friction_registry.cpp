@@ -25,6 +25,10 @@ const std::vector<FrictionEntry>& registry() {
        "box LCPs with nu <- lambda_n until converged (Lacoursiere 2003)", makeSplittingFriction},
       {FrictionModel::Polyhedral, "polyhedral", "linearised cone LCP, -polyhedral_directions per contact",
        makePolyhedralFriction},
+      {FrictionModel::Auto, "auto",
+       "per problem the cheapest of none/box/scaled_box/splitting/polyhedral meeting -target_error "
+       "(friction_auto.hpp)",
+       [](const StepperOptions&) { return std::unique_ptr<FrictionFormulation>(); }},
   };
   return r;
 }

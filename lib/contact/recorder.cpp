@@ -1,6 +1,8 @@
 // Frames and per-step statistics of a contact run (see recorder.hpp).
 #include "contact/recorder.hpp"
 
+#include <limits>
+
 namespace suite::contact {
 
 void Recorder::frame(const std::vector<Body>& bodies, long long step, double t) {
@@ -44,7 +46,19 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   step_wall.push_back(wall);
   split_errors.insert(split_errors.end(), s.split_errors.begin(), s.split_errors.end());
   split_ratios.insert(split_ratios.end(), s.split_ratios.begin(), s.split_ratios.end());
+  // with islands the ratios are the largest island's passes, the errors the most passes of any island (with
+  // -friction auto the largest island may run none): NaN for the passes without a ratio
+  split_ratios.resize(split_errors.size(), std::numeric_limits<double>::quiet_NaN());
   split_offset.push_back((long long)split_errors.size());
+  friction_rung.push_back(s.friction_rung);
+  auto_solves.push_back(s.auto_solves);
+  target_missed.push_back(s.target_missed);
+  for (auto [from, to] : {std::pair{&s.problem_rungs, &problem_rung},
+                          {&s.problem_rows, &problem_rows},
+                          {&s.problem_times, &problem_time},
+                          {&s.problem_violations, &problem_violation}})
+    to->insert(to->end(), from->begin(), from->end());
+  problem_offset.push_back((long long)problem_rung.size());
 }
 
 } // namespace suite::contact

@@ -30,6 +30,12 @@ struct Recorder {
   // splitting histories (flattened, offsets per step)
   std::vector<double> split_errors, split_ratios;
   std::vector<long long> split_offset{0};
+  // -friction auto (friction_auto.hpp): per step the highest rung, rung solves and problems that missed the
+  // target; per problem (islands in order) rung, LCP rows, time (s), cone violation, offsets per step
+  std::vector<int> friction_rung, auto_solves, target_missed;
+  std::vector<double> problem_rung, problem_rows, problem_time, problem_violation;
+  std::vector<long long> problem_offset{0};
+  std::string auto_rungs; // the ladder's names, comma-separated ("": not auto)
 
   void frame(const std::vector<Body>& bodies, long long step, double t);
   void step(const StepStats& s, double t, double energy_value, double wall);

@@ -102,6 +102,28 @@ PetscErrorCode writeSplitting(H5Output& out, const Recorder& rec) {
   }
   PetscFunctionReturn(0);
 }
+// -friction auto: /friction_auto (see Recorder).
+PetscErrorCode writeFrictionAuto(H5Output& out, const Recorder& rec) {
+  const unsigned long long np = rec.problem_rung.size(), ns = rec.time.size();
+  PetscFunctionBeginUser;
+  if (rec.auto_rungs.empty() || !ns) PetscFunctionReturn(0);
+  PetscCall(out.writeReplicated("/friction_auto/step_rung", rec.friction_rung.data(), {ns}, ""));
+  PetscCall(out.writeReplicated("/friction_auto/step_rung_solves", rec.auto_solves.data(), {ns}, ""));
+  PetscCall(out.writeReplicated("/friction_auto/step_target_missed", rec.target_missed.data(), {ns}, ""));
+  PetscCall(out.writeReplicated("/friction_auto/offset", rec.problem_offset.data(), {ns + 1}, ""));
+  if (np) {
+    PetscCall(out.writeReplicated("/friction_auto/rung", rec.problem_rung.data(), {np}, ""));
+    PetscCall(out.writeReplicated("/friction_auto/rows", rec.problem_rows.data(), {np}, ""));
+    PetscCall(out.writeReplicated("/friction_auto/time", rec.problem_time.data(), {np}, "s"));
+    PetscCall(out.writeReplicated("/friction_auto/cone_violation", rec.problem_violation.data(), {np}, ""));
+  }
+  PetscCall(out.writeAttribute("/friction_auto", "rungs", rec.auto_rungs));
+  PetscCall(out.writeAttribute("/friction_auto", "layout",
+                               "problem k (island k, or the whole scene) of step s at offset[s] + k: rung "
+                               "(index into rungs), LCP rows, wall time of its rung solves, cone violation; "
+                               "step_rung: the highest rung of the step (-1: no contact)"));
+  PetscFunctionReturn(0);
+}
 } // namespace
 
 PetscErrorCode Recorder::write(H5Output& out, const std::vector<Body>& bodies) const {
@@ -110,6 +132,7 @@ PetscErrorCode Recorder::write(H5Output& out, const std::vector<Body>& bodies) c
   PetscCall(writeFrames(out, bodies.size(), *this));
   PetscCall(writeSteps(out, *this));
   PetscCall(writeSplitting(out, *this));
+  PetscCall(writeFrictionAuto(out, *this));
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,7 @@
 
 #include "contact/contact_accuracy.hpp"
 #include "contact/delassus.hpp"
+#include "contact/friction_auto.hpp"
 #include "contact/friction_formulation.hpp"
 
 #include <algorithm>
@@ -14,12 +15,19 @@
 
 namespace suite::contact {
 
-Stepper::Stepper(StepperOptions o) : o_(std::move(o)), form_(makeFrictionFormulation(o_)) {
+Stepper::Stepper(StepperOptions o) : o_(std::move(o)) {
+  setDt(o_.dt);
   runner_ = [](int n, const TaskSolveFn& solve, std::vector<std::vector<double>>* out) {
     out->assign(n, {});
     for (int k = 0; k < n; ++k) (*out)[k] = solve(k);
     return std::string();
   };
+}
+
+void Stepper::setDt(double dt) {
+  o_.dt = dt;
+  form_ = makeFrictionFormulation(o_);
+  if (o_.friction == FrictionModel::Auto) auto_ = std::make_shared<const AutoFriction>(o_);
 }
 
 double mechanicalEnergy(const std::vector<Body>& bodies, const Vec3& gravity) {
@@ -33,6 +41,8 @@ std::string simplifications(const StepperOptions& o, const std::vector<Body>& bo
   std::string s;
   if (o.mu == 0 || o.friction == FrictionModel::None)
     s += "no friction rows (plain LCP); ";
+  else if (o.friction == FrictionModel::Auto)
+    s += "per problem the cheapest friction model with cone violation <= -target_error; ";
   else if (o.friction != FrictionModel::Polyhedral)
     s += "box friction (per-direction bounds, not a cone); ";
   bool cyl = false;
@@ -120,6 +130,7 @@ void Stepper::importState(int nb, const std::vector<double>& bs, const std::vect
   prev_contacts_.clear();
   prev_impulses_.clear();
   prev_ids_.clear();
+  prev_rungs_.clear(); // -friction auto starts over at the bottom rung (see friction_auto.hpp)
   for (size_t k = 0; k < cs.size(); k += 8) {
     Contact c;
     c.a = (int)cs[k];
@@ -170,10 +181,11 @@ StepStats Stepper::step(std::vector<Body>* bodies_ptr) {
 // persistent identities: a matched contact keeps its predecessor's id, a new one gets the next free id. The
 // previous contacts are bucketed by body pair (O(contacts) for a bounded number of points per pair).
 void Stepper::matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
-                                    std::vector<bool>* has_prev) {
+                                    std::vector<bool>* has_prev, std::vector<int>* prev_rung) {
   const int nc = (int)contacts_.size();
   prev->assign(nc, Vec3::Zero());
   has_prev->assign(nc, false);
+  prev_rung->assign(nc, -1);
   std::map<std::pair<int, int>, std::vector<int>> by_pair;
   for (int i = 0; i < (int)prev_contacts_.size(); ++i)
     by_pair[{prev_contacts_[i].a, prev_contacts_[i].b}].push_back(i);
@@ -185,6 +197,7 @@ void Stepper::matchPreviousImpulses(const std::vector<Body>& bodies, std::vector
     const auto it = by_pair.find({c.a, c.b});
     const int k = matchPrevious(prev_contacts_, it == by_pair.end() ? none : it->second, c, tol);
     if (k >= 0) (*prev)[i] = prev_impulses_[k], (*has_prev)[i] = true;
+    if (k >= 0 && k < (int)prev_rungs_.size()) (*prev_rung)[i] = prev_rungs_[k];
     ids[i] = k >= 0 && k < (int)prev_ids_.size() ? prev_ids_[k] : next_id_++;
   }
   ids_ = std::move(ids);
@@ -195,31 +208,44 @@ bool Stepper::solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* 
                             std::vector<Vec3>* lam, StepStats* st) {
   std::vector<Vec3> prev;
   std::vector<bool> has_prev;
-  matchPreviousImpulses(bodies, &prev, &has_prev);
-  if (o_.islands) return solveIslands(bodies, prev, has_prev, v, w, lam, st);
-  return solveProblem(bodies, contacts_, prev, has_prev, v, w, lam, st, &problems_, &solution_);
+  std::vector<int> prev_rung;
+  matchPreviousImpulses(bodies, &prev, &has_prev, &prev_rung);
+  rungs_.assign(contacts_.size(), -1);
+  if (o_.islands) return solveIslands(bodies, prev, has_prev, prev_rung, v, w, lam, st);
+  const bool ok =
+      solveProblem(bodies, {contacts_, prev, has_prev, prev_rung}, v, w, lam, st, &problems_, &solution_);
+  if (ok) rungs_.assign(contacts_.size(), st->friction_rung);
+  return ok;
 }
 
-// The impulses of contacts cs (friction formulation on the Delassus system), applied to v*, w.
-bool Stepper::solveProblem(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
-                           const std::vector<Vec3>& prev, const std::vector<bool>& has_prev,
-                           std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
+// The impulses of the problem's contacts, applied to v*, w: the friction formulation, or -friction auto's.
+bool Stepper::solveProblem(const std::vector<Body>& bodies, const ProblemInput& in, std::vector<Vec3>* v,
+                           std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
                            std::vector<lcp::Problem>* problems, lcp::Vec* solution) const {
+  if (auto_) return solveAuto(bodies, in, v, w, lam, st, problems, solution);
+  return solveModel(*form_, o_, bodies, in, v, w, lam, st, problems, solution);
+}
+
+// The impulses of contacts in.cs (formulation form on the Delassus system), applied to v*, w.
+bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& o,
+                         const std::vector<Body>& bodies, const ProblemInput& in, std::vector<Vec3>* v,
+                         std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
+                         std::vector<lcp::Problem>* problems, lcp::Vec* solution) const {
   const int nb = (int)bodies.size();
   std::vector<Mat3> inv_i(nb);
   for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
-  const std::vector<ConstraintRow> rows = form_->rows(cs);
-  const bool exact = o_.accuracy == ContactAccuracy::Exact;
+  const std::vector<ConstraintRow> rows = form.rows(in.cs);
+  const bool exact = o.accuracy == ContactAccuracy::Exact;
   const bool sparse =
-      o_.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o_.dense_max_rows);
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, cs, rows, o_, sparse);
-  const ContactStep step{bodies, cs, prev, has_prev};
+      o.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o.dense_max_rows);
+  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, o, sparse);
+  const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
   if (!exact) {
-    budgetImpulses(step, sys, o_, &imp, st);
+    budgetImpulses(step, sys, o, &imp, st);
   } else {
-    ChainSolve solver(o_, keep_problems_, problems, solution, st);
-    if (!form_->impulses(step, sys, solver, &imp, st)) return false;
+    ChainSolve solver(o, keep_problems_, problems, solution, st);
+    if (!form.impulses(step, sys, solver, &imp, st)) return false;
   }
   applyImpulses(sys, imp.z, v, w);
   *lam = imp.lambda;
@@ -259,6 +285,8 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   prev_contacts_ = contacts_;
   prev_impulses_ = impulses_;
   prev_ids_ = ids_;
+  prev_rungs_ = nc > 0 ? rungs_ : std::vector<int>();
+  ++steps_done_;
   return st;
 }
 

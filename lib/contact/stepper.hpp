@@ -23,7 +23,7 @@
 
 namespace suite::contact {
 
-enum class FrictionModel { None = 0, Box = 1, ScaledBox = 2, Splitting = 3, Polyhedral = 4 };
+enum class FrictionModel { None = 0, Box = 1, ScaledBox = 2, Splitting = 3, Polyhedral = 4, Auto = 5 };
 const char* frictionName(FrictionModel m);
 std::vector<std::string> frictionNames();
 bool frictionFromName(const std::string& name, FrictionModel* m);
@@ -42,6 +42,7 @@ bool accuracyFromName(const std::string& name, ContactAccuracy* a);
 std::vector<Choice> accuracyChoices();
 
 class FrictionFormulation;
+class AutoFriction;
 struct Island;
 
 struct StepperOptions {
@@ -103,6 +104,8 @@ struct StepperOptions {
   // (each island's problem is accepted on its own residual, splitting passes per island), so every existing
   // reference result and checkpoint stays bitwise valid; on (-contact_islands on) spreads them over ranks.
   bool islands = false;
+  // -friction auto (friction_auto.hpp): the cone violation each problem's model must meet.
+  double target_error = 1e-3;
 };
 
 // Runs tasks 0..n-1 (solve(k)) and returns every result at its index; "" or an error message. The default
@@ -140,6 +143,14 @@ struct StepStats {
   int islands = 0;
   int largest_island_bodies = 0;
   int largest_island_contacts = 0;
+  // -friction auto (friction_auto.hpp): the highest ladder rung used (-1: another model or no contact), the
+  // rung solves tried, the problems whose best rung missed the target, and per problem (one per island, or
+  // the whole scene; islands in order) the rung, its LCP rows, the wall time of all its rung solves (s) and
+  // its cone violation.
+  int friction_rung = -1;
+  int auto_solves = 0;
+  int target_missed = 0;
+  std::vector<double> problem_rungs, problem_rows, problem_times, problem_violations;
   bool failed = false;
   std::string message; // failure: which solver, status, why
 };
@@ -165,6 +176,10 @@ public:
   // Throws std::runtime_error on inconsistent sizes or body indices.
   void importState(int nbodies, const std::vector<double>& body_state,
                    const std::vector<double>& contact_state);
+  // -friction auto's part of that state: the rung of each contact of the last step (nc), then the count of
+  // steps (the probe schedule); import throws unless it matches the imported contacts (importState first).
+  void exportAutoState(std::vector<double>* state) const;
+  void importAutoState(const std::vector<double>& state);
   // Persistent identity of each contact of the last step: the id of the previous step's contact it was
   // matched to (same body pair, nearest point within 0.1 of the smaller bounding radius), else a new one.
   // Not part of the checkpoint (renumbered after a restart; the physics does not depend on them).
@@ -174,23 +189,39 @@ public:
   const lcp::Vec& lastSolution() const { return solution_; }
   // How the islands of a step are run (default: in order, on this process).
   void setTaskRunner(TaskRunner runner) { runner_ = std::move(runner); }
+  // The time step of the next steps (the app's retry of a failed step at half dt).
+  void setDt(double dt);
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
   void matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
-                             std::vector<bool>* has_prev);
+                             std::vector<bool>* has_prev, std::vector<int>* prev_rung);
   bool solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
                      std::vector<Vec3>* lam, StepStats* st);
-  // The contacts cs among bodies with their previous impulses as one problem: impulses lam, applied to v, w;
-  // problems / solution as ChainSolve keeps them (keep_problems_).
-  bool solveProblem(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
-                    const std::vector<Vec3>& prev, const std::vector<bool>& has_prev, std::vector<Vec3>* v,
+  // The contacts of one problem with their previous impulses (and -friction auto rungs, -1: none).
+  struct ProblemInput {
+    const std::vector<Contact>& cs;
+    const std::vector<Vec3>& prev;
+    const std::vector<bool>& has_prev;
+    const std::vector<int>& prev_rung;
+  };
+  // The contacts among bodies as one problem: impulses lam, applied to v, w; problems / solution as
+  // ChainSolve keeps them (keep_problems_). -friction auto: solveAuto (friction_auto.cpp).
+  bool solveProblem(const std::vector<Body>& bodies, const ProblemInput& in, std::vector<Vec3>* v,
                     std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
                     std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;
+  // ... with one friction formulation and its options.
+  bool solveModel(const FrictionFormulation& form, const StepperOptions& o, const std::vector<Body>& bodies,
+                  const ProblemInput& in, std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam,
+                  StepStats* st, std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;
+  bool solveAuto(const std::vector<Body>& bodies, const ProblemInput& in, std::vector<Vec3>* v,
+                 std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
+                 std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;
   // The same per island (stepper_islands.cpp), the islands run by runner_.
   struct IslandInput {
     const std::vector<Vec3>& prev;
     const std::vector<bool>& has_prev;
+    const std::vector<int>& prev_rung;
     const std::vector<Vec3>& v;
     const std::vector<Vec3>& w;
   };
@@ -199,11 +230,14 @@ private:
   void failedIsland(const std::vector<Body>& bodies, const std::vector<Island>& islands,
                     const IslandInput& in, int k, const std::vector<double>& result, StepStats* st);
   bool solveIslands(const std::vector<Body>& bodies, const std::vector<Vec3>& prev,
-                    const std::vector<bool>& has_prev, std::vector<Vec3>* v, std::vector<Vec3>* w,
-                    std::vector<Vec3>* lam, StepStats* st);
+                    const std::vector<bool>& has_prev, const std::vector<int>& prev_rung,
+                    std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st);
   TaskRunner runner_;
   StepperOptions o_;
   std::shared_ptr<const FrictionFormulation> form_;
+  std::shared_ptr<const AutoFriction> auto_; // -friction auto (form_ is null then)
+  std::vector<int> rungs_, prev_rungs_;      // -friction auto: the rung of each contact (this / last step)
+  long long steps_done_ = 0;                 // successful steps (auto's probe schedule)
   std::vector<int> still_;
   std::vector<char> asleep_;
   std::vector<Contact> contacts_;

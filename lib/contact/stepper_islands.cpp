@@ -43,9 +43,11 @@ void packStats(const StepStats& s, std::vector<double>* out) {
   out->insert(out->end(),
               {(double)s.rows, (double)s.fallbacks, (double)s.iterations, (double)s.pivots,
                (double)s.refinements, s.residual, (double)s.splitting_iterations, s.splitting_error,
-               (double)s.factorizations, (double)s.budget_stop, (double)s.failed});
-  putVector(s.split_errors, out);
-  putVector(s.split_ratios, out);
+               (double)s.factorizations, (double)s.budget_stop, (double)s.failed, (double)s.friction_rung,
+               (double)s.auto_solves, (double)s.target_missed});
+  for (const std::vector<double>* v : {&s.split_errors, &s.split_ratios, &s.problem_rungs, &s.problem_rows,
+                                       &s.problem_times, &s.problem_violations})
+    putVector(*v, out);
   putString(s.solver, out);
   putString(s.message, out);
 }
@@ -56,9 +58,11 @@ StepStats unpackStats(const std::vector<double>& in, size_t at) {
   s.pivots = (long long)in[at + 3], s.refinements = (int)in[at + 4], s.residual = in[at + 5];
   s.splitting_iterations = (int)in[at + 6], s.splitting_error = in[at + 7];
   s.factorizations = (int)in[at + 8], s.budget_stop = in[at + 9] != 0, s.failed = in[at + 10] != 0;
-  at += 11;
-  s.split_errors = getVector(in, &at);
-  s.split_ratios = getVector(in, &at);
+  s.friction_rung = (int)in[at + 11], s.auto_solves = (int)in[at + 12], s.target_missed = (int)in[at + 13];
+  at += 14;
+  for (std::vector<double>* v : {&s.split_errors, &s.split_ratios, &s.problem_rungs, &s.problem_rows,
+                                 &s.problem_times, &s.problem_violations})
+    *v = getVector(in, &at);
   s.solver = getString(in, &at);
   s.message = getString(in, &at);
   return s;
@@ -73,6 +77,13 @@ void mergeStats(const StepStats& s, int k, StepStats* st) {
   st->splitting_error = std::max(st->splitting_error, s.splitting_error);
   st->splitting_iterations = std::max(st->splitting_iterations, s.splitting_iterations);
   st->budget_stop = st->budget_stop || s.budget_stop;
+  st->friction_rung = std::max(st->friction_rung, s.friction_rung);
+  st->auto_solves += s.auto_solves, st->target_missed += s.target_missed;
+  for (auto [from, to] : {std::pair{&s.problem_rungs, &st->problem_rungs},
+                          {&s.problem_rows, &st->problem_rows},
+                          {&s.problem_times, &st->problem_times},
+                          {&s.problem_violations, &st->problem_violations}})
+    to->insert(to->end(), from->begin(), from->end());
   if (st->split_errors.size() < s.split_errors.size()) st->split_errors.resize(s.split_errors.size(), 0.0);
   for (size_t p = 0; p < s.split_errors.size(); ++p)
     st->split_errors[p] = std::max(st->split_errors[p], s.split_errors[p]);
@@ -100,10 +111,13 @@ std::vector<double> Stepper::solveIsland(const std::vector<Body>& bodies, const 
   const IslandScene s = islandScene(bodies, contacts_, isl);
   std::vector<Vec3> kv, kw, kprev, klam;
   std::vector<bool> khas;
+  std::vector<int> krung;
   for (int g : s.global) kv.push_back(in.v[g]), kw.push_back(in.w[g]);
-  for (int c : isl.contacts) kprev.push_back(in.prev[c]), khas.push_back(in.has_prev[c]);
+  for (int c : isl.contacts)
+    kprev.push_back(in.prev[c]), khas.push_back(in.has_prev[c]), krung.push_back(in.prev_rung[c]);
   StepStats ks;
-  const bool ok = solveProblem(s.bodies, s.contacts, kprev, khas, &kv, &kw, &klam, &ks, problems, solution);
+  const bool ok =
+      solveProblem(s.bodies, {s.contacts, kprev, khas, krung}, &kv, &kw, &klam, &ks, problems, solution);
   std::vector<double> out{ok ? 1.0 : 0.0};
   for (const std::vector<Vec3>* x : {&kv, &kw})
     for (size_t i = 0; ok && i < s.global.size(); ++i)
@@ -115,14 +129,15 @@ std::vector<double> Stepper::solveIsland(const std::vector<Body>& bodies, const 
 }
 
 bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Vec3>& prev,
-                           const std::vector<bool>& has_prev, std::vector<Vec3>* v, std::vector<Vec3>* w,
-                           std::vector<Vec3>* lam, StepStats* st) {
+                           const std::vector<bool>& has_prev, const std::vector<int>& prev_rung,
+                           std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam,
+                           StepStats* st) {
   const std::vector<Island> islands = splitIslands(bodies, contacts_);
   const int n = (int)islands.size();
   st->islands = n;
   st->largest_island_bodies = n ? (int)islands[0].bodies.size() : 0;
   st->largest_island_contacts = n ? (int)islands[0].contacts.size() : 0;
-  const IslandInput in{prev, has_prev, *v, *w};
+  const IslandInput in{prev, has_prev, prev_rung, *v, *w};
   std::vector<std::vector<double>> res(n);
   int solved = n;
   if (keep_problems_) { // every problem kept for dumping: the islands in order on every process
@@ -138,7 +153,9 @@ bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Ve
   int bad = -1;
   for (int k = 0; k < solved; ++k) {
     const size_t at = res[k][0] != 0.0 ? scatterIsland(islands[k], res[k], v, w, lam) : 1;
-    mergeStats(unpackStats(res[k], at), k, st);
+    const StepStats ks = unpackStats(res[k], at);
+    for (int c : islands[k].contacts) rungs_[c] = ks.friction_rung;
+    mergeStats(ks, k, st);
     if (res[k][0] == 0.0 && bad < 0) bad = k;
   }
   if (bad >= 0) failedIsland(bodies, islands, in, bad, res[bad], st);
