@@ -420,6 +420,24 @@ PetscErrorCode Newmark::step(NewmarkState* s, double dt, StepTimings* tm) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Newmark::filterWithEffective(double dt, const double* e, double* x) {
+  PetscFunctionBeginUser;
+  const double c0 = (1 - p_.alpha_m) / (p_.beta * dt * dt);
+  symMultiply(Keff_, M_, e, r_.data());
+  for (double& v : r_) v *= c0;
+  PetscCall(sumResidual()); // partial sums: M is this rank's part
+  PetscCall(solver_->solve(r_.data(), x));
+  PetscFunctionReturn(0);
+}
+
+double Newmark::massNorm(const double* x) const {
+  std::vector<double> mx(Keff_.n);
+  symMultiply(Keff_, M_, x, mx.data());
+  double e = 0;
+  for (int i = 0; i < Keff_.n; ++i) e += x[i] * mx[i];
+  return std::sqrt(std::max(0.0, sumScalar(e)));
+}
+
 double Newmark::kineticEnergy(const NewmarkState& s) const {
   std::vector<double> mv(s.v.size());
   symMultiply(Keff_, M_, s.v.data(), mv.data());

@@ -75,6 +75,13 @@ public:
   // After a restart (tangent predictor): refactorise the effective tangent at s.u_tangent, dt_tangent, as the
   // uninterrupted run holds it (the system must be in the same state, e.g. the probe position). Collective.
   PetscErrorCode restoreTangent(const NewmarkState& s);
+  // x = K_eff^{-1} (c0 M e), c0 = (1 - alpha_m) / (beta dt^2), with the effective matrix the solver holds after
+  // step(dt) (the last factorisation of the step): per mode the factor 1 / (1 + (1 - alpha_f) beta (omega
+  // dt)^2 / (1 - alpha_m)), ~1 on the modes dt resolves, ~1 / (omega dt)^2 on the others (the filter of the
+  // time-step error estimate, fem/step_control.hpp). e and x are replicated; collective.
+  PetscErrorCode filterWithEffective(double dt, const double* e, double* x);
+  // sqrt(x^T M x) of a replicated x (collective with partial sums).
+  double massNorm(const double* x) const;
   // Kinetic energy 1/2 v^T M v, strain energy from the last force evaluation.
   double kineticEnergy(const NewmarkState& s) const;
   double strainEnergy(const NewmarkState& s);
