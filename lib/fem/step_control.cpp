@@ -13,7 +13,7 @@ void zienkiewiczXieError(double beta, double dt, const double* a0, const double*
 
 StepDecision StepController::decide(double dt, double est, double scale, bool* below_min) {
   StepDecision d;
-  const double tol = p_.target * scale * dt / p_.t_final;
+  const double tol = kPhaseFactor * p_.target * scale * dt / p_.t_final;
   d.ratio = est > 0 ? (tol > 0 ? est / tol : HUGE_VAL) : 0.0;
   d.accept = d.ratio <= 1;
   double f = d.ratio > 0 ? p_.safety / std::sqrt(d.ratio) : p_.grow;
