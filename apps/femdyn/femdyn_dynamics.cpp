@@ -48,10 +48,19 @@ PetscErrorCode FemdynDynamics::start(PetscInt, double, bool restarted) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double, double* dt) {
+PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double t, double* dt) {
   PetscFunctionBeginUser;
-  *dt = run_.opt_.dt_adapt ? dt_next_ : run_.opt_.dt;
+  *dt = run_.opt_.dt_adapt ? endingDt(t) : run_.opt_.dt;
   PetscFunctionReturn(0);
+}
+
+// -dt_adapt: the controller's next dt, except near t_final: the rest when dt reaches it, half the rest when
+// dt covers more than half of it (no sliver of a last step: Newton's relative test fails on round-off at
+// dt ~ 1e-4 x the step; the second half then ends on t_final exactly, t_final - t being exact there).
+double FemdynDynamics::endingDt(double t) const {
+  const double rest = run_.opt_.step_control.t_final - t;
+  if (dt_next_ >= rest * (1 - 1e-12)) return rest;
+  return dt_next_ > 0.5 * rest ? 0.5 * rest : dt_next_;
 }
 
 // One step of dt with the run's law (-material auto: the law the policy picks, redone with the nonlinear law

@@ -79,10 +79,11 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(o("-steps", "Number of time steps", &opt_.steps));
   PetscCall(o("-load_release", "Time at which the loads are removed (free vibration after; 0: never)",
               &opt_.load_release));
-  PetscCall(o("-dt_adapt",
-              "Adaptive dt (Zienkiewicz-Xie estimate, step rejection) to meet -target_error over -steps x -dt "
-              "(-dt: first try; per-step dt in /time_adapt)",
-              &opt_.dt_adapt));
+  PetscCall(
+      o("-dt_adapt",
+        "Adaptive dt (Zienkiewicz-Xie estimate, step rejection) to meet -target_error over -steps x -dt "
+        "(-dt: first try; per-step dt in /time_adapt)",
+        &opt_.dt_adapt));
   PetscCall(o("-dt_min", "-dt_adapt: smallest dt (reached: error; default 1e-6 x -steps x -dt)",
               &opt_.step_control.dt_min));
   PetscCall(o("-dt_max", "-dt_adapt: largest dt (0: -steps x -dt)", &opt_.step_control.dt_max));

@@ -30,6 +30,13 @@ StepDecision StepController::decide(double dt, double est, double scale, bool* b
   return d;
 }
 
+StepDecision StepController::keep(double dt) {
+  StepDecision d;
+  d.ratio = -1, d.dt_next = dt;
+  last_rejected_ = false;
+  return d;
+}
+
 PetscErrorCode checkStepControl(MPI_Comm comm, const StepControlParams& p, double beta) {
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(p.target) && p.target > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,

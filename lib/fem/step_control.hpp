@@ -62,6 +62,9 @@ public:
   // function of the arguments (and whether the last decision rejected): identical inputs on every rank give
   // identical decisions. dt_next < dt_min after a rejection: *below_min is set (the caller errors).
   StepDecision decide(double dt, double est, double scale, bool* below_min);
+  // A step accepted without an estimate (ratio -1; the caller knows it is not the time step's error): the
+  // same dt next.
+  StepDecision keep(double dt);
   const StepControlParams& params() const { return p_; }
 
 private:

@@ -44,7 +44,8 @@ TEST(FemStepControl, EstimateMatchesExactLocalError) {
   for (double wdt : {0.04, 0.02, 0.01}) {
     const double dt = wdt / w;
     OneDof o(w);
-    o.s.t = t0, o.s.u = {std::cos(w * t0)}, o.s.v = {-w * std::sin(w * t0)}, o.s.a = {-w * w * std::cos(w * t0)};
+    o.s.t = t0, o.s.u = {std::cos(w * t0)}, o.s.v = {-w * std::sin(w * t0)},
+    o.s.a = {-w * w * std::cos(w * t0)};
     const double a0 = o.s.a[0];
     StepTimings tm;
     ASSERT_EQ(o.nm.step(&o.s, dt, &tm), 0);
