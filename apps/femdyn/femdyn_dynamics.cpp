@@ -5,6 +5,8 @@
 #include "core/log.hpp"
 #include "core/clocks.hpp"
 
+#include <algorithm>
+
 namespace femdyn_app {
 
 using namespace suite::fem;
@@ -26,7 +28,8 @@ PetscErrorCode FemdynDynamics::setup() {
   PetscCall(nm_.setup(r.ctx_.comm(), sys, r.solver_.get(), std::move(mass), r.opt_.newmark, r.loadAt()));
   if (r.opt_.dt_adapt) {
     control_ = std::make_unique<StepController>(r.opt_.step_control);
-    dt_next_ = r.opt_.dt;
+    const auto& c = r.opt_.step_control; // the first try: -dt within [dt_min, dt_max]
+    dt_next_ = std::clamp(r.opt_.dt, c.dt_min, c.dt_max > 0 ? c.dt_max : c.t_final);
   }
   s_.u.assign(r.model_.numFree(), 0.0);
   s_.v.assign(r.model_.numFree(), 0.0);
