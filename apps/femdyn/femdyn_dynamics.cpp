@@ -162,6 +162,7 @@ PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
   if (run_.opt_.materialAuto()) PetscCall(logMaterialAuto());
   if (run_.opt_.dt_adapt) {
     run_.res_.adapt_error = estimatedError();
+    run_.res_.adapt_unresolved = unresolvedBound();
     run_.res_.adapt_factorizations = factorizations();
     PetscCall(logTimeAdapt());
   }

@@ -48,11 +48,12 @@ private:
                               std::string* failed);
   // The sum of the accepted local estimates over the final displacement scale; the K_eff factorisations.
   double estimatedError() const { return scale_ > 0 ? estimate_sum_ / scale_ : 0.0; }
+  double unresolvedBound() const { return scale_ > 0 ? unresolved_ / scale_ : 0.0; }
   int factorizations() const;
   PetscErrorCode staticScale(double* scale) const;
   double endingDt(double t) const;
-  PetscErrorCode adaptEstimate(const std::vector<double>& a0, double dt, suite::fem::Fidelity used,
-                               double* est, double* scale);
+  PetscErrorCode adaptEstimate(const std::vector<double>& a0, double dt, double* est, double* scale,
+                               double* unresolved);
   void recordTry(double t, double dt, double ratio, bool accepted);
   PetscErrorCode logTimeAdapt() const;
   suite::CheckpointHeader checkpointHeader() const; // femdyn_checkpoint.cpp
@@ -64,8 +65,9 @@ private:
   suite::fem::NewmarkState s_;
   std::unique_ptr<suite::fem::HapticProbeObserver> probe_;
   std::unique_ptr<suite::fem::StepController> control_; // -dt_adapt
-  double dt_next_ = 0, scale_ = 0, estimate_sum_ = 0;   // -dt_adapt: next try, max ||u||_inf so far, sum of e
-  double stepping_ = 0, stepping_cpu_ = 0;              // wall and CPU seconds in the steps of this run
+  double dt_next_ = 0, scale_ = 0, estimate_sum_ = 0,
+         unresolved_ = 0;                  // -dt_adapt: next try, max ||u||_inf so far, sum of e
+  double stepping_ = 0, stepping_cpu_ = 0; // wall and CPU seconds in the steps of this run
   int unconverged_ = 0;
 };
 

@@ -180,6 +180,10 @@ PetscErrorCode FemdynRun::readOptions() {
     PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_nl_));
     PetscCall(solver_nl_->setFromOptions(comm));
   }
+  if (opt_.dt_adapt) { // the low-pass filter of the time-step error estimate: its own solver
+    PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_filter_));
+    PetscCall(solver_filter_->setFromOptions(comm));
+  }
   PetscCall(checkOptions());
   auto& nm = opt_.newmark;
   nm.initial_jacobian = opt_.jacobian == "initial";

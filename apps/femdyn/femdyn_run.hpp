@@ -99,7 +99,7 @@ struct Results {
   // local estimates (the run's estimated error) and the K_eff factorisations of all tries.
   std::vector<double> adapt_dt, adapt_ratio, try_time, try_dt, try_ratio;
   std::vector<int> adapt_rejected, try_accepted;
-  double adapt_error = 0;
+  double adapt_error = 0, adapt_unresolved = 0;
   int adapt_factorizations = 0;
 };
 
@@ -168,6 +168,8 @@ private:
   std::unique_ptr<suite::fem::Material> material_nl_;
   suite::fem::ElasticModel model_nl_;
   std::unique_ptr<suite::fem::LinearSolver> solver_nl_;
+  // -dt_adapt: the low-pass filter's solver (M + K0 / wc^2, refactorised when dt changes; fem/step_control.hpp)
+  std::unique_ptr<suite::fem::LinearSolver> solver_filter_;
   std::vector<int> perm_;
   std::vector<double> f_ext_;
   std::vector<int> tip_nodes_;

@@ -420,13 +420,19 @@ PetscErrorCode Newmark::step(NewmarkState* s, double dt, StepTimings* tm) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Newmark::filterWithEffective(double dt, const double* e, double* x) {
+PetscErrorCode Newmark::lowPass(LinearSolver* filter, double wc, const double* e, double* x) {
   PetscFunctionBeginUser;
-  const double c0 = (1 - p_.alpha_m) / (p_.beta * dt * dt);
+  if (wc != filter_wc_) {
+    SymCsc F = Keff_;
+    for (size_t k = 0; k < M_.size(); ++k) F.val[k] = M_[k] + K0_[k] / (wc * wc);
+    bool ok;
+    PetscCall(filter->factor(F, &ok)); // partial sums: this rank's part (the solver adds)
+    PetscCheck(ok, comm_, PETSC_ERR_MAT_CH_ZRPVT, "low-pass filter M + K0 / wc^2 is not positive definite");
+    filter_wc_ = wc;
+  }
   symMultiply(Keff_, M_, e, r_.data());
-  for (double& v : r_) v *= c0;
   PetscCall(sumResidual()); // partial sums: M is this rank's part
-  PetscCall(solver_->solve(r_.data(), x));
+  PetscCall(filter->solve(r_.data(), x));
   PetscFunctionReturn(0);
 }
 

@@ -11,6 +11,10 @@ void zienkiewiczXieError(double beta, double dt, const double* a0, const double*
   for (int i = 0; i < n; ++i) e[i] = c * (a1[i] - a0[i]);
 }
 
+double cutoffFrequency(double dt, double t_final) {
+  return std::cbrt(12.0 / (t_final * dt * dt));
+}
+
 StepDecision StepController::decide(double dt, double est, double scale, bool* below_min) {
   StepDecision d;
   const double tol = kPhaseFactor * p_.target * scale * dt / p_.t_final;

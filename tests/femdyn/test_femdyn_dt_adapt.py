@@ -7,7 +7,7 @@ to the adaptive run's times. Small cantilever -beam_cells 10,1,1 (L = 10, 1 x 1,
 
 Usage: test_femdyn_dt_adapt.py FEMDYN [case]   case: target, release, ranks, auto (default: all)
 
-- target (P = 0.1, stvk, E = 1e-2 and 3e-3): error <= E; the /time_adapt group complete (per-step dt summing
+- target (P = 0.1, stvk, E = 1e-2 and 3e-3): E/10 <= error <= E (measured 3.5e-3, 1.0e-3); the /time_adapt group complete (per-step dt summing
   to t_final, estimates <= 1 for accepted tries, counts matching the tries); the summary line;
 - release (P = 0.1 removed at t = 2.5, -load_release 2.5): the step across the release is rejected and
   recorded (/time_adapt/tries accepted = 0 near t = 2.5, /steps/rejected > 0 there), error <= E = 1e-2;
@@ -82,8 +82,8 @@ def target(run):
     for E in (1e-2, 3e-3):
         a = run("stvk", 0.1, "-dt_adapt", "-target_error", E)
         e, ta, tr = error(a, ref), a["time_adapt"], a["tries"]
-        check(e <= E, f"P = 0.1, E = {E:g}: error vs fine StVK {e:.2e} <= E ({len(a['t']) - 1} steps, "
-              f"{int(ta['tries_rejected'])} rejected)")
+        check(E / 10 <= e <= E, f"P = 0.1, E = {E:g}: error vs fine StVK {e:.2e} in [E/10, E] "
+              f"({len(a['t']) - 1} steps, {int(ta['tries_rejected'])} rejected)")
         n = len(a["t"])
         complete = (len(ta["dt"]) == n and len(ta["estimate"]) == n and len(ta["rejected"]) == n
                     and abs(ta["dt"].sum() - 5) < 1e-9 and abs(a["t"][-1] - 5) < 1e-9
@@ -107,10 +107,9 @@ def release(run):
     rej = tr["accepted"] == 0
     check(np.any(rej & near), f"release at t = 2.5: a try near it is rejected ({int(np.sum(rej & near))} "
           f"there, {int(np.sum(rej))} in all)")
-    k = int(np.argmax((a["t"][1:] >= 2.5))) + 1  # the step that crosses the release
-    check(a["rejected"][k] > 0 or a["rejected"][k + 1] > 0,
-          f"release: /steps/rejected records it at the crossing step {k} ({a['rejected'][k]}, "
-          f"{a['rejected'][k + 1]})")
+    at = np.abs(a["t"] - 2.5) < 0.1  # the steps ending near the release
+    check(int(a["rejected"][at].sum()) > 0, f"release: /steps/rejected records the rejections at the steps "
+          f"ending near t = 2.5 ({a['rejected'][at].tolist()})")
     e = error(a, ref)
     check(e <= E, f"release: error vs fine StVK {e:.2e} <= {E}")
 

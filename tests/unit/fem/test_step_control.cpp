@@ -1,8 +1,8 @@
 // The time-step control of femdyn -dt_adapt (fem/step_control.hpp) on the undamped 1-DOF oscillator
 // u'' + omega^2 u = 0, u = cos(omega t): the Zienkiewicz-Xie estimate dt^2 (beta - 1/6) (a_{n+1} - a_n) against
-// the exact local error of one Newmark step from the exact state (both dt^3 / 12 a' + O(dt^4)), the filter
-// 1 / (1 + beta (omega dt)^2) of Newmark::filterWithEffective, an adaptive run whose global error stays
-// below the target (per unit time: the sum of the local estimates is the phase error), and the controller's
+// the exact local error of one Newmark step from the exact state (both dt^3 / 12 a' + O(dt^4)), the low-pass
+// factor 1 / (1 + (omega / wc)^2) of Newmark::lowPass, an adaptive run whose global error stays below the
+// target (per unit time: the sum of the local estimates is the phase error), and the controller's
 // accept / reject / growth logic and option checks.
 #include "fem_test_util.hpp"
 
@@ -18,11 +18,12 @@ using namespace suite::fem;
 namespace {
 struct OneDof {
   LinearSecondOrderSystem sys;
-  std::unique_ptr<LinearSolver> solver = makeSkylineSolver();
+  std::unique_ptr<LinearSolver> solver = makeSkylineSolver(), filter = makeSkylineSolver();
   Newmark nm;
   NewmarkState s;
   explicit OneDof(double w) : sys(stiffness(w)) {
     EXPECT_EQ(solver->analyze(PETSC_COMM_SELF, stiffness(w), {0}), 0);
+    EXPECT_EQ(filter->analyze(PETSC_COMM_SELF, stiffness(w), {0}), 0);
     EXPECT_EQ(nm.setup(PETSC_COMM_SELF, &sys, solver.get(), {1.0}, NewmarkParams(),
                        [](double, double* f) { f[0] = 0; }),
               0);
@@ -59,19 +60,18 @@ TEST(FemStepControl, EstimateMatchesExactLocalError) {
   }
 }
 
-// After a step the solver holds K_eff = M / (beta dt^2) + K: the filter is 1 / (1 + beta (omega dt)^2).
-TEST(FemStepControl, FilterIsTheModalFactor) {
-  for (double wdt : {0.1, 1.0, 10.0}) {
-    const double w = 3.0, dt = wdt / w;
-    OneDof o(w);
-    StepTimings tm;
-    ASSERT_EQ(o.nm.step(&o.s, dt, &tm), 0);
-    const double e = 1.0;
+// The low-pass filter (M + K0 / wc^2)^{-1} M: 1 / (1 + (omega / wc)^2) per mode; refactorised when wc changes.
+TEST(FemStepControl, LowPassIsTheModalFactor) {
+  const double w = 3.0;
+  OneDof o(w);
+  for (double ratio : {0.1, 1.0, 10.0, 1.0}) {
+    const double e = 1.0, wc = w / ratio;
     double x;
-    ASSERT_EQ(o.nm.filterWithEffective(dt, &e, &x), 0);
-    EXPECT_NEAR(x, 1 / (1 + 0.25 * wdt * wdt), 1e-13) << "omega dt " << wdt;
+    ASSERT_EQ(o.nm.lowPass(o.filter.get(), wc, &e, &x), 0);
+    EXPECT_NEAR(x, 1 / (1 + ratio * ratio), 1e-13) << "omega / wc " << ratio;
     EXPECT_NEAR(o.nm.massNorm(&x), std::abs(x), 1e-15);
   }
+  EXPECT_NEAR(cutoffFrequency(0.1, 1.2), 10.0, 1e-12); // (12 / (1.2 * 0.01))^(1/3): phase error 1 rad at wc
 }
 
 // The adaptive loop (as femdyn runs it) over 5 periods: max_n |u_n - cos(omega t_n)| <= target (amplitude 1),
@@ -92,7 +92,7 @@ TEST(FemStepControl, AdaptiveRunMeetsTarget) {
       ASSERT_EQ(o.nm.step(&o.s, h, &tm), 0);
       double e, ef;
       zienkiewiczXieError(0.25, h, saved.a.data(), o.s.a.data(), 1, &e);
-      ASSERT_EQ(o.nm.filterWithEffective(h, &e, &ef), 0);
+      ASSERT_EQ(o.nm.lowPass(o.filter.get(), cutoffFrequency(h, T), &e, &ef), 0);
       bool below;
       const StepDecision d = c.decide(h, std::abs(ef), std::max(scale, std::abs(o.s.u[0])), &below);
       ASSERT_FALSE(below);
