@@ -10,12 +10,13 @@
 // Refactorisations: the linear law's K_eff = M / (beta dt^2) + gamma / (beta dt) C + K0 depends on dt and is
 // refactorised at every change of dt (the controller keeps dt within its hold band to save them); modified
 // Newton (-jacobian initial) likewise; full Newton refactorises every iteration anyway; the tangent
-// predictor's factorisation is used only at the dt it was made with (after a rejection: not at all).
+// predictor's factorisation is used only at the dt it was made with (after a rejection: not at all); the
+// estimate's low-pass filter M + K0 / wc^2 (its own solver) at every change of dt.
 //
 // Output: /time_adapt/{dt, estimate, rejected} per step record (step 0 first; estimate = ||e|| / tolerance),
 // /time_adapt/tries/{time, dt, estimate, accepted} per try, attributes (target_error, time_budget, counts,
-// estimated_error = sum of the accepted local estimates / final displacement scale, target_met); one summary
-// line.
+// estimated_error = sum of the accepted local estimates / final displacement scale, unresolved_bound,
+// target_met); one summary line.
 #include "core/log.hpp"
 #include "femdyn_dynamics.hpp"
 #include "io/h5_output.hpp"
