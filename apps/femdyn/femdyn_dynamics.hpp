@@ -44,6 +44,9 @@ private:
   PetscErrorCode stepOnce(double dt, suite::fem::StepTimings* tm, suite::fem::Fidelity* used, double* est);
   // -dt_adapt (femdyn_time_adapt.cpp): tries of the step from dt until the controller accepts one (each
   // counted in tm), the records of the tries, the next dt; the summary line.
+  PetscErrorCode tryStep(double h, const suite::fem::NewmarkState& saved, suite::fem::StepTimings* total,
+                         suite::fem::Fidelity* used, double* est_law, suite::fem::StepDecision* d,
+                         bool* below_min);
   PetscErrorCode stepAdaptive(double dt, suite::fem::StepTimings* tm, suite::fem::Fidelity* used, double* est,
                               std::string* failed);
   // The sum of the accepted local estimates over the final displacement scale; the K_eff factorisations.

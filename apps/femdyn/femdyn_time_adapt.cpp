@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace femdyn_app {
 
@@ -114,36 +115,61 @@ void addTimings(StepTimings* sum, const StepTimings& t) {
   sum->newton_iterations += t.newton_iterations, sum->factorizations += t.factorizations;
   sum->rejected += t.rejected, sum->residual = t.residual, sum->converged = t.converged;
 }
+
+// The message of a rejected step whose next try is below -dt_min, with the error reachable at dt_min
+// (estimate ~ dt^2 at the time budget's tolerance).
+std::string belowMinMessage(size_t step, double t, const StepDecision& d, double h,
+                            const StepControlParams& c) {
+  char msg[512];
+  const double q = c.dt_min / h;
+  std::snprintf(
+      msg, sizeof msg,
+      "-dt_adapt: step %zu at t = %.6g: the estimate is %.3g x the tolerance at dt = %.3g and the next "
+      "try %.3g is below -dt_min %.3g; the best reachable time error at dt_min is about %.3g (time "
+      "budget %.3g): raise -target_error or lower -dt_min",
+      step, t, d.ratio, h, d.dt_next, c.dt_min, c.target * d.ratio * q * q, c.target);
+  return msg;
+}
 } // namespace
+
+// One try of h from the state saved: the step with the run's law(s), its estimate, the decision, its record;
+// an accepted try updates the scale, the next dt and the sums. -material auto: a step in another law than the
+// last one starts from a projected state whose a is the other law's; its a_{n+1} - a_n is the laws'
+// difference, not the time step's error: kept at its dt, not estimated (without this the controller shrinks
+// dt at a switch until Newton stalls on round-off).
+PetscErrorCode FemdynDynamics::tryStep(double h, const NewmarkState& saved, StepTimings* total,
+                                       Fidelity* used, double* est_law, StepDecision* d, bool* below_min) {
+  StepTimings one;
+  double est, scale, unresolved;
+  PetscFunctionBeginUser;
+  *below_min = false;
+  PetscCall(stepOnce(h, &one, used, est_law));
+  addTimings(total, one);
+  PetscCall(adaptEstimate(saved.a, h, &est, &scale, &unresolved));
+  const bool switched = run_.opt_.materialAuto() && static_cast<int>(*used) != run_.res_.law.back();
+  *d = switched ? control_->keep(h) : control_->decide(h, est, scale, below_min);
+  recordTry(saved.t, h, d->ratio, d->accept);
+  if (d->accept) {
+    scale_ = scale, dt_next_ = d->dt_next, estimate_sum_ += switched ? 0.0 : est;
+    unresolved_ = std::max(unresolved_, unresolved);
+  }
+  PetscFunctionReturn(0);
+}
 
 // Tries from dt until the controller accepts; *failed (with the message) when the next try is below dt_min.
 PetscErrorCode FemdynDynamics::stepAdaptive(double dt, StepTimings* tm, Fidelity* used, double* est_law,
                                             std::string* failed) {
   Results& res = run_.res_;
-  const double Et = run_.opt_.step_control.target, dt_min = run_.opt_.step_control.dt_min;
   StepTimings total;
   int rejected = 0;
   PetscFunctionBeginUser;
   for (double h = dt;;) {
     const NewmarkState saved = s_;
     const Fidelity law = law_;
-    StepTimings one;
-    double est, scale;
-    bool below_min = false;
-    PetscCall(stepOnce(h, &one, used, est_law));
-    addTimings(&total, one);
-    double unresolved;
-    PetscCall(adaptEstimate(saved.a, h, &est, &scale, &unresolved));
-    // -material auto: a step in another law than the last one starts from a projected state whose a is the
-    // other law's; its a_{n+1} - a_n is the laws' difference, not the time step's error: kept, not estimated
-    // (without this the controller shrinks dt at a switch until Newton stalls on round-off).
-    const bool switched = run_.opt_.materialAuto() && static_cast<int>(*used) != res.law.back();
-    if (switched) est = 0;
-    const StepDecision d = switched ? control_->keep(h) : control_->decide(h, est, scale, &below_min);
-    recordTry(saved.t, h, d.ratio, d.accept);
+    StepDecision d;
+    bool below_min;
+    PetscCall(tryStep(h, saved, &total, used, est_law, &d, &below_min));
     if (d.accept) {
-      scale_ = scale, dt_next_ = d.dt_next, estimate_sum_ += est;
-      unresolved_ = std::max(unresolved_, unresolved);
       res.adapt_dt.push_back(h), res.adapt_ratio.push_back(d.ratio), res.adapt_rejected.push_back(rejected);
       break;
     }
@@ -151,15 +177,7 @@ PetscErrorCode FemdynDynamics::stepAdaptive(double dt, StepTimings* tm, Fidelity
     s_.u_tangent.clear(); // the solver holds the rejected try's factorisation
     ++rejected;
     if (below_min) {
-      char msg[512];
-      std::snprintf(
-          msg, sizeof msg,
-          "-dt_adapt: step %zu at t = %.6g: the estimate is %.3g x the tolerance at dt = %.3g and the "
-          "next try %.3g is below -dt_min %.3g; the best reachable time error at dt_min is about "
-          "%.3g (time budget %.3g): raise -target_error or lower -dt_min",
-          res.steps.size(), s_.t, d.ratio, h, d.dt_next, dt_min, Et * d.ratio * (dt_min / h) * (dt_min / h),
-          Et);
-      *failed = msg;
+      *failed = belowMinMessage(res.steps.size(), s_.t, d, h, run_.opt_.step_control);
       break;
     }
     h = d.dt_next;
