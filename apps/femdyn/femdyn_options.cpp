@@ -67,6 +67,17 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(o("-ordering", "Fill-reducing ordering", suite::fem::orderingChoices(), &opt_.ordering));
   PetscCall(o("-solver", "Linear solver", suite::fem::solverChoices(), &opt_.solver));
   PetscCall(
+      o("-backend", "Where the mesh and the state live",
+        {{"replicated", "every rank holds the mesh and the time-stepping state (-solver: the linear solver)"},
+         {"plex", "distributed DMPlex mesh, state, assembly and output (beam, linear/stvk, Newmark; SNES "
+                  "and KSP options as usual, default CG + GAMG with rigid-body modes)"}},
+        &opt_.backend));
+  PetscCall(o(
+      "-plex_rank_cap",
+      "-backend plex: the most mesh points (cells, faces, edges, vertices) or local DOFs one rank may hold, "
+      "checked after generation and after distribution (0: no cap)",
+      &opt_.plex_rank_cap));
+  PetscCall(
       o("-dirichlet", "Clamped plane, e.g. x=0 (all DOFs of its nodes fixed), or none", &opt_.dirichlet));
   PetscCall(o("-static", "Static solve K u = f (StVK: load stepping + Newton)", &opt_.is_static));
   PetscCall(
@@ -152,6 +163,10 @@ PetscErrorCode FemdynRun::checkOptions() const {
              opt_.load_release);
   PetscCheck(opt_.rho_inf >= 0 && opt_.rho_inf <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-rho_inf %g: must be in [0, 1]", opt_.rho_inf);
+  PetscCheck(opt_.plex_rank_cap >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-plex_rank_cap %d: must be >= 0 (0: no cap)", (int)opt_.plex_rank_cap);
+  PetscCheck(opt_.plex_rank_cap == 0 || opt_.backend == "plex", comm, PETSC_ERR_ARG_INCOMP,
+             "-plex_rank_cap applies to -backend plex only (the backend is %s)", opt_.backend.c_str());
   PetscCall(checkMaterialAuto());
   PetscFunctionReturn(0);
 }

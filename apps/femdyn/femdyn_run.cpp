@@ -72,6 +72,10 @@ PetscErrorCode runFemdyn(const suite::RunContext& ctx) {
   {
     suite::StageScope setup(stages.setup);
     PetscCall(run.readOptions());
+    if (run.options().backend == "plex" && !ctx.helpRequested()) { // checks unused options after SNES's
+      PetscCall(runPlexFemdyn(ctx, run.options(), run.checkpointPolicy()));
+      PetscFunctionReturn(0);
+    }
     PetscCall(ctx.checkUnusedOptions());
     if (ctx.helpRequested()) PetscFunctionReturn(0);
     PetscCall(run.setup());

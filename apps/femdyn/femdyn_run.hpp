@@ -29,11 +29,12 @@ namespace femdyn_app {
 struct Options {
   std::string mesh = "beam", mesh_file, material = "linear", ordering = "rcm", solver = "cholmod",
               mass = "consistent", dirichlet = "x=0", jacobian = "tangent", output, time_scheme = "newmark",
-              predictor = "constant";
+              predictor = "constant", backend = "replicated";
   double rho_inf = 1, young = 1000, poisson = 0.3, density = 1, dt = 0.01, tip_load = 0,
          gravity[3] = {0, 0, 0};
   suite::fem::BeamSpec beam; // -beam_length, -beam_size, -beam_cells
   PetscInt order = 1, steps = 100, load_steps = 1, snapshot_every = 0;
+  PetscInt plex_rank_cap = 0; // -backend plex: most mesh points or local DOFs one rank may hold (0: no cap)
   suite::fem::NewmarkParams newmark;
   PetscBool is_static = PETSC_FALSE, probe = PETSC_FALSE;
   suite::fem::HapticProbeSettings probe_set; // -probe: a rigid point pressing (along -y) on a surface node
@@ -107,6 +108,8 @@ class FemdynRun {
 public:
   explicit FemdynRun(const suite::RunContext& ctx) : ctx_(ctx) {}
   PetscErrorCode readOptions();
+  const Options& options() const { return opt_; }
+  suite::CheckpointPolicy& checkpointPolicy() { return policy_; }
   PetscErrorCode setup();
   // The static solve or the time loop, then the output (written by the loop's final write).
   PetscErrorCode solve();
@@ -177,5 +180,8 @@ private:
 };
 
 PetscErrorCode runFemdyn(const suite::RunContext& ctx);
+// -backend plex (femdyn_plex.cpp): the distributed DMPlex run, from the options read by FemdynRun.
+PetscErrorCode runPlexFemdyn(const suite::RunContext& ctx, const Options& opt,
+                             suite::CheckpointPolicy& policy);
 
 } // namespace femdyn_app

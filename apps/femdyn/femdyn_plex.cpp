@@ -1,0 +1,177 @@
+// femdyn -backend plex: setup, the static solve or the time steps with checkpoints and stop requests (see
+// femdyn_plex.hpp).
+#include "femdyn_plex.hpp"
+
+#include "core/clocks.hpp"
+#include "core/log.hpp"
+#include "fem/material.hpp"
+#include "fem/plex_beam.hpp"
+#include "io/h5_output.hpp"
+
+#include <algorithm>
+
+namespace femdyn_app {
+
+using namespace suite::fem;
+
+namespace {
+
+// Options of the replicated path that -backend plex does not implement (yet): given explicitly, an error.
+PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
+  static const char* names[] = {"-mesh_file",
+                                "-order",
+                                "-material_auto_law",
+                                "-target_error",
+                                "-target_switch_up",
+                                "-target_switch_down",
+                                "-ordering",
+                                "-solver",
+                                "-load_steps",
+                                "-time_scheme",
+                                "-rho_inf",
+                                "-jacobian",
+                                "-newton_predictor",
+                                "-mass",
+                                "-rayleigh_alpha",
+                                "-rayleigh_beta",
+                                "-max_halvings",
+                                "-snapshot_every",
+                                "-probe",
+                                "-probe_point",
+                                "-probe_stiffness",
+                                "-probe_speed",
+                                "-probe_depth",
+                                "-haptic_rate",
+                                "-dt_adapt",
+                                "-dt_min",
+                                "-dt_max",
+                                "-load_release"};
+  PetscFunctionBeginUser;
+  for (const char* n : names) {
+    PetscBool set = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, n, &set));
+    PetscCheck(!set, comm, PETSC_ERR_SUP, "%s is not available with -backend plex (the distributed path)", n);
+  }
+  PetscCheck(o.mesh == "beam", comm, PETSC_ERR_SUP, "-backend plex generates the beam only (-mesh beam)");
+  PetscCheck(o.material != "auto", comm, PETSC_ERR_SUP, "-backend plex has no -material auto (yet)");
+  PetscCheck(o.dirichlet == "x=0", comm, PETSC_ERR_SUP,
+             "-backend plex clamps the plane x=0 only (-dirichlet %s)", o.dirichlet.c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PlexRun::~PlexRun() {
+  DMDestroy(&dm_);
+}
+
+PetscErrorCode PlexRun::checkLocalDofs() const {
+  Vec l;
+  PetscInt n;
+  long long most = 0, mine;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm_, &l));
+  PetscCall(VecGetLocalSize(l, &n));
+  PetscCall(DMRestoreLocalVector(dm_, &l));
+  mine = n;
+  PetscCallMPI(MPI_Allreduce(&mine, &most, 1, MPI_LONG_LONG, MPI_MAX, ctx_.comm()));
+  PetscCheck(o_.plex_rank_cap <= 0 || most <= o_.plex_rank_cap, ctx_.comm(), PETSC_ERR_MEM,
+             "a rank holds %lld local DOFs, above -plex_rank_cap %lld", most, (long long)o_.plex_rank_cap);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexRun::setup() {
+  MPI_Comm comm = ctx_.comm();
+  Lame lame;
+  Vec g;
+  PetscFunctionBeginUser;
+  const double t0 = suite::wallSeconds();
+  PetscCall(refuseUnsupported(comm, o_));
+  PetscCall(suite::checkOutputWritable(comm, o_.output, "output"));
+  PetscCall(lameFromYoung(comm, o_.young, o_.poisson, &lame));
+  PetscCall(createPlexBeam(comm, o_.beam, o_.plex_rank_cap, &dm_));
+  PlexElasticParams p;
+  p.law = o_.material, p.lame = lame, p.rho = o_.density;
+  std::copy(o_.gravity, o_.gravity + 3, p.gravity);
+  const auto& n = o_.newmark;
+  PetscCall(nm_.setup(dm_, p, o_.tip_load, n.beta, n.gamma, n.newton_rtol, n.newton_atol, n.newton_max_it));
+  PetscCall(ctx_.checkUnusedOptions()); // after SNESSetFromOptions: -snes_*, -ksp_*, -pc_* are used now
+  PetscCall(nat_.setup(dm_, o_.beam));
+  PetscCall(plexGlobalSizes(dm_, &nv_, &nc_));
+  PetscCall(DMGetGlobalVector(dm_, &g));
+  PetscCall(VecGetSize(g, &ndof_));
+  PetscCall(DMRestoreGlobalVector(dm_, &g));
+  PetscCall(checkLocalDofs());
+  if (policy_.restartRequested()) {
+    std::string path;
+    PetscCall(policy_.restartPath(&path));
+    PetscCall(readCheckpoint(path));
+  }
+  setup_s_ = suite::wallSeconds() - t0;
+  PetscCall(suite::logInfo(comm, ctx_.quiet(),
+                           "femdyn plex: %lld nodes, %lld P1 tets, %d free DOFs on %d ranks (distributed "
+                           "DMPlex), material %s, setup %.3f s",
+                           nv_, nc_, (int)ndof_, ctx_.size(), o_.material.c_str(), setup_s_));
+  PetscFunctionReturn(0);
+}
+
+// After accepted step `step`: a periodic checkpoint, or on a stop request a final one (when enabled).
+PetscErrorCode PlexRun::afterStep(long long step, bool* stop) {
+  bool due = false;
+  PetscFunctionBeginUser;
+  PetscCall(ctx_.stopRequested(stop));
+  PetscCall(policy_.due(step, &due));
+  if (policy_.enabled() && (due || *stop)) PetscCall(writeCheckpoint(step));
+  if (*stop)
+    PetscCall(suite::logInfo(ctx_.comm(), false, "femdyn plex: stopped after step %lld (%s)", step,
+                             ctx_.stopReason().c_str()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexRun::timeSteps() {
+  const double L = o_.beam.length;
+  PetscFunctionBeginUser;
+  if (!restarted_) PetscCall(nm_.initialize());
+  for (long long s = (long long)steps_.size(); s < o_.steps; ++s) {
+    const double w0 = suite::wallSeconds(), c0 = suite::processCpuSeconds();
+    PlexStepStats st;
+    PetscCall(nm_.step(o_.dt, &st));
+    double tip;
+    PetscCall(nm_.planeMean(L, 1, -1.0, &tip));
+    steps_.push_back({nm_.time(), tip, suite::wallSeconds() - w0, suite::processCpuSeconds() - c0,
+                      (long long)st.newton_iterations, (long long)st.linear_iterations});
+    bool stop = false;
+    PetscCall(afterStep(s + 1, &stop));
+    if (stop) break;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexRun::solve() {
+  PetscFunctionBeginUser;
+  const double t0 = suite::wallSeconds();
+  if (o_.is_static)
+    PetscCall(nm_.solveStatic(&stat_));
+  else
+    PetscCall(timeSteps());
+  solve_s_ = suite::wallSeconds() - t0;
+  PetscCall(nm_.planeMean(o_.beam.length, 1, -1.0, &tip_));
+  PetscCall(nm_.planeMean(o_.beam.length, 0, 1.0, &tip_ux_));
+  PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
+                           "femdyn plex: tip_deflection %.10g (mean -u_y on the end face), tip u_x %.6g, %s "
+                           "%.3f s",
+                           tip_, tip_ux_, o_.is_static ? "static solve" : "time steps", solve_s_));
+  PetscCall(write());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode runPlexFemdyn(const suite::RunContext& ctx, const Options& opt,
+                             suite::CheckpointPolicy& policy) {
+  PlexRun run(ctx, opt, policy);
+  PetscFunctionBeginUser;
+  PetscCall(run.setup());
+  PetscCall(run.solve());
+  PetscFunctionReturn(0);
+}
+
+} // namespace femdyn_app

@@ -1,0 +1,65 @@
+// femdyn -backend plex: the distributed run (femdyn_plex.cpp) and its HDF5 files (femdyn_plex_io.cpp).
+// The beam as a distributed DMPlex (fem/plex_beam.hpp), P1 linear or StVK elastodynamics with PetscFE
+// (fem/plex_elasticity.hpp), Newmark + SNES on distributed Vecs (fem/plex_newmark.hpp). No rank holds a
+// global-size array: the mesh is generated in slabs and repartitioned, the state and the loads are distributed,
+// the tip mean is reduced, and output and checkpoints are written collectively in the natural node numbering
+// (fem/plex_natural.hpp: the replicated path's numbering, each rank a block of rows), so that a checkpoint
+// written at P ranks restarts at Q. Options this path does not have are refused by name.
+#pragma once
+
+#include "fem/plex_natural.hpp"
+#include "fem/plex_newmark.hpp"
+#include "femdyn_run.hpp"
+
+#include <vector>
+
+namespace suite {
+class H5Input;
+} // namespace suite
+
+namespace femdyn_app {
+
+struct PlexStep {
+  double time, tip, wall, cpu;
+  long long newton, linear;
+};
+
+class PlexRun {
+public:
+  PlexRun(const suite::RunContext& ctx, const Options& o, suite::CheckpointPolicy& policy)
+      : ctx_(ctx), o_(o), policy_(policy) {}
+  ~PlexRun();
+  PetscErrorCode setup();
+  // The static solve or the time steps (from a restart's step on), then the output.
+  PetscErrorCode solve();
+
+private:
+  PetscErrorCode checkLocalDofs() const;
+  PetscErrorCode timeSteps();
+  PetscErrorCode afterStep(long long step, bool* stop);
+  // femdyn_plex_io.cpp
+  PetscErrorCode write() const;
+  PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
+  PetscErrorCode writeHistory(suite::H5Output& out) const;
+  PetscErrorCode writeNatural(suite::H5Output& out, const char* dataset, Vec plex) const;
+  PetscErrorCode writeMesh(suite::H5Output& out) const;
+  PetscErrorCode writeCheckpoint(long long step);
+  PetscErrorCode readCheckpoint(const std::string& path);
+  PetscErrorCode readHistory(const suite::H5Input& in, long long step);
+  PetscErrorCode readNatural(const suite::H5Input& in, const char* dataset, Vec plex) const;
+
+  const suite::RunContext& ctx_;
+  const Options& o_;
+  suite::CheckpointPolicy& policy_;
+  DM dm_ = nullptr;
+  suite::fem::PlexNewmark nm_;
+  suite::fem::PlexNaturalOrder nat_;
+  long long nv_ = 0, nc_ = 0;
+  PetscInt ndof_ = 0;
+  std::vector<PlexStep> steps_; // accepted steps so far (a restart's history first)
+  bool restarted_ = false;
+  suite::fem::PlexStepStats stat_;
+  double tip_ = 0, tip_ux_ = 0, setup_s_ = 0, solve_s_ = 0;
+};
+
+} // namespace femdyn_app

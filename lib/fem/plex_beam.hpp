@@ -1,0 +1,26 @@
+// The structured beam of fem::makeBeam (mesh.hpp: 6 tets per hexahedron, Kuhn/Freudenthal split) as a
+// distributed DMPlex, generated in parallel: each rank creates the tets of its slab of hexahedra along x and the
+// vertices of its slab of planes (DMPlexCreateFromCellListParallelPetsc), so that no rank ever holds the whole
+// mesh; then the mesh is repartitioned by the DM's partitioner (PT-Scotch unless -petscpartitioner_type says
+// otherwise) with DMPlexDistribute, without overlap (FE assembly on DMPlex sums the shared vertices' entries).
+// Labels: "clamped" (value 1: the faces on x = 0 and their closure), "tip" (value 1: the faces on x = length).
+#pragma once
+
+#include "fem/mesh.hpp"
+
+#include <petscdmplex.h>
+#include <petscsf.h>
+
+namespace suite::fem {
+
+// Collective. Errors (naming -beam_cells) when the beam has fewer hexahedra along x than there are ranks, and
+// (naming -plex_rank_cap) when rank_cap > 0 and a rank would hold more than rank_cap mesh points: its slab's
+// cells and vertices (checked before they are allocated), its part of the mesh before and after distribution.
+PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long rank_cap, DM* dm);
+// The largest count of mesh points over the ranks above rank_cap (> 0): a collective error naming `when`.
+PetscErrorCode checkRankCap(DM dm, long long rank_cap, const char* when);
+
+// Sum over the ranks of the vertices each owns (the global node count) and of the local cells.
+PetscErrorCode plexGlobalSizes(DM dm, long long* vertices, long long* cells);
+
+} // namespace suite::fem
