@@ -130,9 +130,9 @@ def main():
         t3, t1 = three.attrs["tip_deflection"], free.attrs["tip_deflection"]
         check(abs(t3 - t1) <= TOL * abs(t1), f"-plex_rank_cap 2500 at 3 ranks fits: tip {t3:.12f} vs {t1:.12f}")
 
-        for bad, expect in ((["-order", 2], "-order is not available with -backend plex"),
-                            (["-material", "auto"], "has no -material auto")):
-            r = launch(1, p("bad.h5"), *static, "-backend", "plex", *bad)
+        for bad, expect in ((["-static", "-order", 2], "-order is not available with -backend plex"),
+                            (["-material", "auto", "-steps", 2], "has no -material auto")):
+            r = launch(1, p("bad.h5"), "-backend", "plex", *bad)
             check(r.returncode != 0 and expect in r.stdout, f"{' '.join(map(str, bad))}: refused ({expect})")
     if FAILS:
         print(f"{len(FAILS)} check(s) failed")
