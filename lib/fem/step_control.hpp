@@ -28,7 +28,7 @@
 // displacement part of its local phase error, the phase error dt^3 omega^3 / 12 times |sin| of the phase (the
 // velocity part is not estimated), 2/pi of it on average over a period: the global (phase) error is about
 // pi/2 times the sum of the estimates. kPhaseFactor = 1/2 (2/pi with a margin for the start and the partial
-// periods; 1-DOF oscillator: global error 0.72 / 0.84 x target at 1e-2 / 1e-3, and 1.06 x target with 2/pi;
+// periods; 1-DOF oscillator: global error 0.78 / 0.86 x target at 1e-2 / 1e-3, and 1.06 x target with 2/pi;
 // tests/unit/fem/test_step_control.cpp). Where a mode's phase error saturates at its amplitude the bound is
 // an upper bound (conservative: measured in docs/fem_target_error.md).
 // With r = ||e_f|| / (target * scale * dt / T) ~ dt^2 the step changes by dt_new = dt * safety * r^(-1/2)
