@@ -132,8 +132,50 @@ def plot_material_auto(h5path, outdir):
     return [str(png)]
 
 
+def read_time_adapt(path):
+    """/time_adapt of a femdyn -dt_adapt run: (tries dict, attrs); None without it."""
+    with h5py.File(path, "r") as f:
+        if "time_adapt" not in f:
+            return None
+        g = f["time_adapt"]
+        attrs = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in g.attrs.items()}
+        return {k: g["tries"][k][...] for k in g["tries"]}, attrs
+
+
+def plot_time_adapt(h5path, outdir):
+    """-dt_adapt: dt of every try against its start time (accepted dots, rejected crosses), the estimate over
+    the tolerance of each try (accept at <= 1), and the tip deflection below."""
+    m = read_time_adapt(h5path)
+    if m is None:
+        return []
+    tr, a = m
+    s, _ = read_history(h5path)
+    ok, rej = tr["accepted"] == 1, tr["accepted"] == 0
+    plt = _plt()
+    fig, (a1, a2, a3) = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    a1.semilogy(tr["time"][ok], tr["dt"][ok], "k.", ms=2, label="accepted")
+    a1.semilogy(tr["time"][rej], tr["dt"][rej], "x", color="tab:red", ms=6, label="rejected")
+    a1.set(ylabel="dt", title=f"-dt_adapt: target {float(a['target_error']):g} (time steps "
+           f"{float(a['time_budget']):g}), {int(a['steps_accepted'])} steps, {int(a['tries_rejected'])} rejected")
+    a1.legend(fontsize=7)
+    est = tr["estimate"]
+    a2.semilogy(tr["time"][ok & (est > 0)], est[ok & (est > 0)], "k.", ms=2)
+    a2.semilogy(tr["time"][rej], est[rej], "x", color="tab:red", ms=6)
+    a2.axhline(1.0, color="tab:red", lw=0.8)
+    a2.set(ylabel="estimate / tolerance")
+    a3.plot(s["time"], s["tip_deflection"], "k-", lw=1)
+    a3.set(xlabel="t", ylabel="tip deflection (mean -u_y)")
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / f"femdyn_{Path(h5path).stem}_time_adapt.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
 def default_plot(h5path, outdir):
-    return plot_history(h5path, outdir) + plot_probe(h5path, outdir) + plot_material_auto(h5path, outdir)
+    return (plot_history(h5path, outdir) + plot_probe(h5path, outdir) + plot_material_auto(h5path, outdir)
+            + plot_time_adapt(h5path, outdir))
 
 
 def read_csv(path):
@@ -211,6 +253,8 @@ def register(sub):
         ("fem-history", plot_history, "femdyn energy, tip deflection and step timings from an output file"),
         ("fem-material-auto", plot_material_auto,
          "femdyn -material auto: estimate against time with the switch points and the target"),
+        ("fem-dt-adapt", plot_time_adapt,
+         "femdyn -dt_adapt: dt of every try (rejections marked), estimate / tolerance, tip deflection"),
         ("fem-rate", plot_rate, "Hz against DOF per ordering and solver (scripts/bench/fem-rate CSV)"),
         ("fem-orderings", plot_orderings, "nnz(L) and profile per ordering (scripts/bench/fem-orderings CSV)"),
     ):

@@ -5,6 +5,8 @@
 #include "core/log.hpp"
 #include "core/clocks.hpp"
 
+#include <algorithm>
+
 namespace femdyn_app {
 
 using namespace suite::fem;
@@ -22,10 +24,13 @@ PetscErrorCode FemdynDynamics::setup() {
   }
   const double rho = r.opt_.density;
   auto mass = r.opt_.mass == "lumped" ? r.model_.lumpedMass(rho) : r.model_.consistentMass(rho);
-  const std::vector<double>& fe = r.f_ext_;
   if (r.opt_.materialAuto()) PetscCall(setupMaterialAuto(mass));
-  PetscCall(nm_.setup(r.ctx_.comm(), sys, r.solver_.get(), std::move(mass), r.opt_.newmark,
-                      [&fe](double, double* f) { std::copy(fe.begin(), fe.end(), f); }));
+  PetscCall(nm_.setup(r.ctx_.comm(), sys, r.solver_.get(), std::move(mass), r.opt_.newmark, r.loadAt()));
+  if (r.opt_.dt_adapt) {
+    control_ = std::make_unique<StepController>(r.opt_.step_control);
+    const auto& c = r.opt_.step_control; // the first try: -dt within [dt_min, dt_max]
+    dt_next_ = std::clamp(r.opt_.dt, c.dt_min, c.dt_max > 0 ? c.dt_max : c.t_final);
+  }
   s_.u.assign(r.model_.numFree(), 0.0);
   s_.v.assign(r.model_.numFree(), 0.0);
   PetscFunctionReturn(0);
@@ -35,15 +40,40 @@ PetscErrorCode FemdynDynamics::setup() {
 PetscErrorCode FemdynDynamics::start(PetscInt, double, bool restarted) {
   PetscFunctionBeginUser;
   if (restarted) PetscFunctionReturn(0);
+  if (run_.opt_.dt_adapt) PetscCall(staticScale(&scale_)); // before initialize (it factorises M)
   PetscCall(nm_.initialize(&s_));
   record(StepTimings(), 0.0, 0.0);
   if (run_.opt_.materialAuto()) recordLaw(Fidelity::cheap, 0.0, 0.0);
+  if (run_.opt_.dt_adapt) {
+    Results& res = run_.res_;
+    res.adapt_dt.push_back(0.0), res.adapt_ratio.push_back(0.0), res.adapt_rejected.push_back(0);
+  }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double, double* dt) {
+PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double t, double* dt) {
   PetscFunctionBeginUser;
-  *dt = run_.opt_.dt;
+  *dt = run_.opt_.dt_adapt ? endingDt(t) : run_.opt_.dt;
+  PetscFunctionReturn(0);
+}
+
+// -dt_adapt: the controller's next dt, except near t_final: the rest when dt reaches it, half the rest when
+// dt covers more than half of it (no sliver of a last step: Newton's relative test fails on round-off at
+// dt ~ 1e-4 x the step; the second half then ends on t_final exactly, t_final - t being exact there).
+double FemdynDynamics::endingDt(double t) const {
+  const double rest = run_.opt_.step_control.t_final - t;
+  if (dt_next_ >= rest * (1 - 1e-12)) return rest;
+  return dt_next_ > 0.5 * rest ? 0.5 * rest : dt_next_;
+}
+
+// One step of dt with the run's law (-material auto: the law the policy picks, redone with the nonlinear law
+// above its band; otherwise the one law).
+PetscErrorCode FemdynDynamics::stepOnce(double dt, StepTimings* tm, Fidelity* used, double* est) {
+  PetscFunctionBeginUser;
+  if (run_.opt_.materialAuto())
+    PetscCall(stepMaterialAuto(dt, tm, used, est));
+  else
+    PetscCall(nm_.step(&s_, dt, tm));
   PetscFunctionReturn(0);
 }
 
@@ -51,12 +81,22 @@ PetscErrorCode FemdynDynamics::proposeDt(PetscInt, double, double* dt) {
 PetscErrorCode FemdynDynamics::advance(PetscInt, double, double dt, suite::StepOutcome* out) {
   StepTimings tm;
   PetscFunctionBeginUser;
+  Fidelity used = Fidelity::cheap;
+  double est = 0;
+  std::string failed;
   const double ts = suite::wallSeconds(), tc = suite::threadCpuSeconds();
-  if (run_.opt_.materialAuto())
-    PetscCall(stepMaterialAuto(dt, &tm));
+  if (run_.opt_.dt_adapt)
+    PetscCall(stepAdaptive(dt, &tm, &used, &est, &failed));
   else
-    PetscCall(nm_.step(&s_, dt, &tm));
+    PetscCall(stepOnce(dt, &tm, &used, &est));
+  if (!failed.empty()) { // the state is the one before the step; the loop writes it and stops the job
+    out->status = suite::StepStatus::Failed;
+    out->message = failed;
+    PetscFunctionReturn(0);
+  }
+  run_.res_.adapt_factorizations += tm.factorizations;
   const double dt_wall = suite::wallSeconds() - ts, dt_cpu = suite::threadCpuSeconds() - tc;
+  if (run_.opt_.materialAuto()) recordLaw(used, est, dt_cpu);
   stepping_ += dt_wall;
   stepping_cpu_ += dt_cpu;
   if (!tm.converged && run_.opt_.newmark.newton_max_it > 1) ++unconverged_;
@@ -76,7 +116,8 @@ void FemdynDynamics::record(const StepTimings& tm, double total, double cpu) {
   r.kinetic = nm.kineticEnergy(s_);
   r.strain = nm.strainEnergy(s_);
   double w = 0;
-  for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
+  if (!run_.released(s_.t))
+    for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
   r.external = w;
   r.newton = tm.newton_iterations, r.rejected = tm.rejected, r.converged = tm.converged ? 1 : 0;
   r.tip_uy = nodalMean(run_.model_.fullVector(s_.u), run_.tip_nodes_, 1, -1);
@@ -119,6 +160,12 @@ PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
   PetscCall(logSummary(summary));
   if (probe_) PetscCall(probe_->logSummary());
   if (run_.opt_.materialAuto()) PetscCall(logMaterialAuto());
+  if (run_.opt_.dt_adapt) {
+    run_.res_.adapt_error = estimatedError();
+    run_.res_.adapt_unresolved = unresolvedBound();
+    run_.res_.adapt_factorizations = factorizations();
+    PetscCall(logTimeAdapt());
+  }
   PetscCall(run_.writeOutput());
   PetscFunctionReturn(0);
 }

@@ -27,8 +27,9 @@ using namespace suite::fem;
 PetscErrorCode FemdynRun::checkMaterialAuto() const {
   MPI_Comm comm = ctx_.comm();
   PetscFunctionBeginUser;
-  PetscCheck(opt_.materialAuto() || !opt_.target_set, comm, PETSC_ERR_ARG_INCOMP,
-             "-target_error is the accuracy target of -material auto (the material is -material %s)",
+  PetscCheck(opt_.materialAuto() || opt_.dt_adapt || !opt_.target_set, comm, PETSC_ERR_ARG_INCOMP,
+             "-target_error is the accuracy target of -material auto or -dt_adapt (the material is -material "
+             "%s, fixed -dt)",
              opt_.material.c_str());
   if (!opt_.materialAuto()) PetscFunctionReturn(0);
   PetscCall(checkLawSwitchPolicy(comm, opt_.law_policy));
@@ -45,10 +46,8 @@ PetscErrorCode FemdynRun::checkMaterialAuto() const {
 
 PetscErrorCode FemdynDynamics::setupMaterialAuto(const std::vector<double>& mass) {
   FemdynRun& r = run_;
-  const std::vector<double>& fe = r.f_ext_;
   PetscFunctionBeginUser;
-  PetscCall(nm_nl_.setup(r.ctx_.comm(), &r.model_nl_, r.solver_nl_.get(), mass, r.opt_.newmark,
-                         [&fe](double, double* f) { std::copy(fe.begin(), fe.end(), f); }));
+  PetscCall(nm_nl_.setup(r.ctx_.comm(), &r.model_nl_, r.solver_nl_.get(), mass, r.opt_.newmark, r.loadAt()));
   law_ = Fidelity::cheap;
   PetscFunctionReturn(0);
 }
@@ -97,11 +96,12 @@ PetscErrorCode FemdynDynamics::projectState(ElasticModel& from, ElasticModel& to
 }
 
 // One step with the law the policy picked; a linear step above the band is redone with the nonlinear law.
-PetscErrorCode FemdynDynamics::stepMaterialAuto(double dt, StepTimings* tm) {
+// The law used and its estimate come back for the record (recordLaw, once the step is accepted).
+PetscErrorCode FemdynDynamics::stepMaterialAuto(double dt, StepTimings* tm, Fidelity* law_used,
+                                                double* estimate) {
   const LawSwitchPolicy& pol = run_.opt_.law_policy;
   double est = 0;
   PetscFunctionBeginUser;
-  const double t0 = suite::threadCpuSeconds();
   Fidelity used = law_;
   if (law_ == Fidelity::cheap) {
     const NewmarkState saved = s_;
@@ -126,7 +126,7 @@ PetscErrorCode FemdynDynamics::stepMaterialAuto(double dt, StepTimings* tm) {
   law_ = pol.next(used, est);
   if (used == Fidelity::accurate && law_ == Fidelity::cheap)
     PetscCall(projectState(run_.model_nl_, run_.model_));
-  recordLaw(used, est, suite::threadCpuSeconds() - t0);
+  *law_used = used, *estimate = est;
   PetscFunctionReturn(0);
 }
 

@@ -52,8 +52,10 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(o("-material_auto_law", "-material auto: the nonlinear law", suite::fem::materialChoices(),
               &opt_.auto_law));
   PetscCall(suite::optionsReal(PetscOptionsObject, "-target_error",
-                               "-material auto: bound E on max_t |tip(t) - tip_nonlinear(t)| / "
-                               "max_t |tip_nonlinear(t)| (tip: mean -u_y of the end face; same -dt)",
+                               "-material auto / -dt_adapt: bound E on max_t |tip(t) - tip_ref(t)| / "
+                               "max_t |tip_ref(t)| (tip: mean -u_y of the end face; ref: the nonlinear law, "
+                               "same -dt; with -dt_adapt at a fine fixed dt, E/2 law + E/2 time steps "
+                               "when both)",
                                "", opt_.law_policy.target, &opt_.law_policy.target, &opt_.target_set));
   PetscCall(o("-target_switch_up", "-material auto: to the nonlinear law when the estimate > this * target",
               &opt_.law_policy.up));
@@ -86,6 +88,16 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(o("-load_steps", "Static load increments", &opt_.load_steps));
   PetscCall(o("-dt", "Time step", &opt_.dt));
   PetscCall(o("-steps", "Number of time steps", &opt_.steps));
+  PetscCall(o("-load_release", "Time at which the loads are removed (free vibration after; 0: never)",
+              &opt_.load_release));
+  PetscCall(
+      o("-dt_adapt",
+        "Adaptive dt (Zienkiewicz-Xie estimate, step rejection) to meet -target_error over -steps x -dt "
+        "(-dt: first try; per-step dt in /time_adapt)",
+        &opt_.dt_adapt));
+  PetscCall(o("-dt_min", "-dt_adapt: smallest dt (reached: error; default 1e-6 x -steps x -dt)",
+              &opt_.step_control.dt_min));
+  PetscCall(o("-dt_max", "-dt_adapt: largest dt (0: -steps x -dt)", &opt_.step_control.dt_max));
   PetscFunctionReturn(0);
 }
 
@@ -147,6 +159,8 @@ PetscErrorCode FemdynRun::checkOptions() const {
   PetscCheck(opt_.steps >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-steps %d: must be >= 0", (int)opt_.steps);
   PetscCheck(!opt_.output.empty() || ctx_.helpRequested(), comm, PETSC_ERR_ARG_WRONG,
              "-output FILE.h5 is required");
+  PetscCheck(opt_.load_release >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_release %g: must be >= 0",
+             opt_.load_release);
   PetscCheck(opt_.rho_inf >= 0 && opt_.rho_inf <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-rho_inf %g: must be in [0, 1]", opt_.rho_inf);
   PetscCheck(opt_.plex_rank_cap >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -181,11 +195,16 @@ PetscErrorCode FemdynRun::readOptions() {
     PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_nl_));
     PetscCall(solver_nl_->setFromOptions(comm));
   }
+  if (opt_.dt_adapt) { // the low-pass filter of the time-step error estimate: its own solver
+    PetscCall(suite::fem::createLinearSolver(comm, opt_.solver, &solver_filter_));
+    PetscCall(solver_filter_->setFromOptions(comm));
+  }
   PetscCall(checkOptions());
   auto& nm = opt_.newmark;
   nm.initial_jacobian = opt_.jacobian == "initial";
   nm.tangent_predictor = opt_.predictor == "tangent";
   if (opt_.time_scheme == "generalized_alpha") nm = suite::fem::generalizedAlpha(nm, opt_.rho_inf);
+  PetscCall(checkTimeAdapt()); // after the scheme's beta is final
   PetscFunctionReturn(0);
 }
 

@@ -151,6 +151,7 @@ PetscErrorCode FemdynRun::writeOutput() const {
   }
   if (!res_.probe.sync_time.empty()) PetscCall(writeProbe(out));
   if (!res_.law.empty()) PetscCall(writeMaterialAuto(out));
+  if (!res_.adapt_dt.empty()) PetscCall(writeTimeAdapt(out));
   PetscCall(writeSnapshots(out, &xsteps));
   PetscCall(out.commit(&ctx_));
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)mesh_.numNodes(), (ull)mesh_.numElems()};

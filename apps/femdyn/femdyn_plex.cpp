@@ -41,7 +41,11 @@ PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
                                 "-probe_stiffness",
                                 "-probe_speed",
                                 "-probe_depth",
-                                "-haptic_rate"};
+                                "-haptic_rate",
+                                "-dt_adapt",
+                                "-dt_min",
+                                "-dt_max",
+                                "-load_release"};
   PetscFunctionBeginUser;
   for (const char* n : names) {
     PetscBool set = PETSC_FALSE;

@@ -39,8 +39,8 @@ PetscErrorCode FemdynRun::solveDynamic() {
   PetscCall(dyn.setup());
   suite::TimeLoopSettings set;
   set.app = "femdyn";
-  set.t_final = 0.0; // femdyn counts steps
-  set.max_steps = opt_.steps;
+  set.t_final = opt_.dt_adapt ? opt_.steps * opt_.dt : 0.0; // fixed dt: femdyn counts steps
+  set.max_steps = opt_.dt_adapt ? -1 : opt_.steps;
   set.snapshot_every = opt_.snapshot_every;
   set.eta_time = opt_.steps * opt_.dt;
   set.output = opt_.output.c_str();

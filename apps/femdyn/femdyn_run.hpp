@@ -10,9 +10,12 @@
 #include "fem/linear_solver.hpp"
 #include "fem/newmark.hpp"
 #include "fem/ordering.hpp"
+#include "fem/step_control.hpp"
 #include "io/checkpoint_policy.hpp"
 #include "io/xdmf.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +44,13 @@ struct Options {
   suite::fem::LawSwitchPolicy law_policy;
   PetscBool target_set = PETSC_FALSE;
   bool materialAuto() const { return material == "auto"; }
+  // -dt_adapt (femdyn_time_adapt.cpp): the step from the Zienkiewicz-Xie estimate (fem/step_control.hpp) over
+  // t_final = -steps x -dt, -dt the first try. The user's -target_error E is the budget of the whole run:
+  // E for the time discretisation, or with -material auto E/2 for the law and E/2 for the time steps.
+  PetscBool dt_adapt = PETSC_FALSE;
+  double target_error = 0; // the user's E (with -dt_adapt)
+  suite::fem::StepControlParams step_control;
+  double load_release = 0; // > 0: the loads are removed at this time (free vibration after)
 };
 
 struct StepRecord {
@@ -85,6 +95,13 @@ struct Results {
   double law_cpu[2] = {0, 0};
   int law_steps[2] = {0, 0};
   int law_factorizations[2] = {0, 0}; // numeric factorisations of K_eff per law (linear: one per dt)
+  // -dt_adapt, per step record (step 0 first): dt, the estimate over the tolerance, rejected tries before the
+  // accepted one; per try: start time, dt, ratio, accepted (0/1); the sum of the accepted steps' relative
+  // local estimates (the run's estimated error) and the K_eff factorisations of all tries.
+  std::vector<double> adapt_dt, adapt_ratio, try_time, try_dt, try_ratio;
+  std::vector<int> adapt_rejected, try_accepted;
+  double adapt_error = 0, adapt_unresolved = 0;
+  int adapt_factorizations = 0;
 };
 
 class FemdynRun {
@@ -125,7 +142,21 @@ private:
   // -material auto (femdyn_material_auto.cpp): the option checks and the output.
   PetscErrorCode checkMaterialAuto() const;
   PetscErrorCode writeMaterialAuto(suite::H5Output& out) const;
+  // -dt_adapt (femdyn_time_adapt.cpp): the option checks and budget split, the output.
+  PetscErrorCode checkTimeAdapt();
+  PetscErrorCode writeTimeAdapt(suite::H5Output& out) const;
   PetscErrorCode writeSnapshots(suite::H5Output& out, std::vector<suite::XdmfTetStep>* xsteps) const;
+
+  // The external force at time t (free DOFs): f_ext_, zero from -load_release on.
+  bool released(double t) const { return opt_.load_release > 0 && t >= opt_.load_release; }
+  std::function<void(double, double*)> loadAt() const {
+    return [this](double t, double* f) {
+      if (released(t))
+        std::fill(f, f + f_ext_.size(), 0.0);
+      else
+        std::copy(f_ext_.begin(), f_ext_.end(), f);
+    };
+  }
 
   const suite::RunContext& ctx_;
   Options opt_;
@@ -140,6 +171,8 @@ private:
   std::unique_ptr<suite::fem::Material> material_nl_;
   suite::fem::ElasticModel model_nl_;
   std::unique_ptr<suite::fem::LinearSolver> solver_nl_;
+  // -dt_adapt: the low-pass filter's solver (M + K0 / wc^2, refactorised when dt changes; fem/step_control.hpp)
+  std::unique_ptr<suite::fem::LinearSolver> solver_filter_;
   std::vector<int> perm_;
   std::vector<double> f_ext_;
   std::vector<int> tip_nodes_;

@@ -70,6 +70,10 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
     if (solver_nl_->distributedAssembly())
       model_nl_.ownElementsOfNodes(solver_nl_->nodePartition(), ctx_.rank());
   }
+  if (solver_filter_) { // -dt_adapt: the low-pass filter on the linear pattern (model_'s partition)
+    solver_filter_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
+    PetscCall(solver_filter_->analyze(comm, model_.pattern(), perm_));
+  }
   res_.factor = solver_->stats();
   PetscFunctionReturn(0);
 }

@@ -1,5 +1,6 @@
 // Sparse FEM elastodynamics on tetrahedral meshes: P1/P2, linear / St. Venant-Kirchhoff / corotational
-// material (-material auto: linear while its estimated error is below -target_error, else StVK),
+// material (-material auto: linear while its estimated error is below -target_error, else StVK; -dt_adapt:
+// the time step from the Zienkiewicz-Xie estimate with step rejection),
 // Newmark or generalized-alpha + Newton, orderings natural|cm|rcm|amd|metis|auto, skyline, banded,
 // CHOLMOD or the distributed PETSc path (after Nilsson & Dieckmann, SIGRAD 2003). With
 // skyline/banded/cholmod the computation is serial and replicated on every rank; with -solver petsc each
@@ -18,6 +19,7 @@
 //   mpiexec -n 2 femdyn -static -tip_load 1 -beam_cells 20,2,2 -solver petsc -ksp_type cg -pc_type gamg -output p.h5
 //   femdyn -material stvk -steps 200 -tip_load 1 -checkpoint_dir ckpt -checkpoint_every 50 -output c.h5
 //   femdyn -material auto -target_error 1e-2 -tip_load 1 -beam_cells 20,2,2 -dt 0.2 -steps 100 -output auto.h5
+//   femdyn -material stvk -dt_adapt -target_error 1e-2 -tip_load 0.1 -beam_cells 10,1,1 -dt 0.2 -steps 25 -output adapt.h5
 #include "femdyn_run.hpp"
 
 int main(int argc, char** argv) {

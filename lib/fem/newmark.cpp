@@ -420,6 +420,30 @@ PetscErrorCode Newmark::step(NewmarkState* s, double dt, StepTimings* tm) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Newmark::lowPass(LinearSolver* filter, double wc, const double* e, double* x) {
+  PetscFunctionBeginUser;
+  if (wc != filter_wc_) {
+    SymCsc F = Keff_;
+    for (size_t k = 0; k < M_.size(); ++k) F.val[k] = M_[k] + K0_[k] / (wc * wc);
+    bool ok;
+    PetscCall(filter->factor(F, &ok)); // partial sums: this rank's part (the solver adds)
+    PetscCheck(ok, comm_, PETSC_ERR_MAT_CH_ZRPVT, "low-pass filter M + K0 / wc^2 is not positive definite");
+    filter_wc_ = wc;
+  }
+  symMultiply(Keff_, M_, e, r_.data());
+  PetscCall(sumResidual()); // partial sums: M is this rank's part
+  PetscCall(filter->solve(r_.data(), x));
+  PetscFunctionReturn(0);
+}
+
+double Newmark::massNorm(const double* x) const {
+  std::vector<double> mx(Keff_.n);
+  symMultiply(Keff_, M_, x, mx.data());
+  double e = 0;
+  for (int i = 0; i < Keff_.n; ++i) e += x[i] * mx[i];
+  return std::sqrt(std::max(0.0, sumScalar(e)));
+}
+
 double Newmark::kineticEnergy(const NewmarkState& s) const {
   std::vector<double> mv(s.v.size());
   symMultiply(Keff_, M_, s.v.data(), mv.data());

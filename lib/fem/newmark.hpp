@@ -75,6 +75,12 @@ public:
   // After a restart (tangent predictor): refactorise the effective tangent at s.u_tangent, dt_tangent, as the
   // uninterrupted run holds it (the system must be in the same state, e.g. the probe position). Collective.
   PetscErrorCode restoreTangent(const NewmarkState& s);
+  // x = (M + K0 / wc^2)^{-1} M e with the filter's own solver (analysed on the system's pattern; refactorised
+  // when wc changes): per mode the low-pass factor 1 / (1 + (omega / wc)^2) (the filter of the time-step
+  // error estimate, fem/step_control.hpp). e and x are replicated; collective.
+  PetscErrorCode lowPass(LinearSolver* filter, double wc, const double* e, double* x);
+  // sqrt(x^T M x) of a replicated x (collective with partial sums).
+  double massNorm(const double* x) const;
   // Kinetic energy 1/2 v^T M v, strain energy from the last force evaluation.
   double kineticEnergy(const NewmarkState& s) const;
   double strainEnergy(const NewmarkState& s);
@@ -111,6 +117,7 @@ private:
   std::vector<double> M_, C_, K0_, Kt_, Keff_vals_;
   SymCsc Keff_;
   std::string reject_reason_; // why the last attempt was rejected
+  double filter_wc_ = -1;     // cutoff of the low-pass filter's factorisation (lowPass)
   double factored_dt_ = -1; // dt of the current factorisation when it is reusable (linear / modified Newton)
   bool keff_current_ = false; // the solver holds K_eff at the state's (u_tangent, dt_tangent)
   bool damped_ = false;       // C != 0
