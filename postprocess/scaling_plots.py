@@ -1,4 +1,5 @@
-"""Scaling figures: speed-up and parallel efficiency against the ideal line, from scripts/scaling-study's CSV."""
+"""Scaling figures: speed-up and parallel efficiency against the ideal line, from scripts/scaling-study's CSV;
+femdyn -backend plex memory and time per step (scripts/bench/fem-scale's scale.csv and model.csv)."""
 from __future__ import annotations
 
 import csv
@@ -57,7 +58,47 @@ def plot_scaling(csv_path, outdir):
     return [str(png)]
 
 
+def plot_fem_scale(scale_csv, outdir):
+    """femdyn -backend plex (scripts/bench/fem-scale): peak memory per rank, and time per DOF and step against
+    the rank count, measured and (model.csv beside the table) projected in weak scaling."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    with open(scale_csv, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise ValueError(f"{scale_csv}: no runs")
+    model_path = Path(scale_csv).with_name("model.csv")
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    for r in rows:
+        n, dofs = int(r["ranks"]), int(r["dofs"])
+        a1.plot(n, float(r["rss_gib_max_rank"]), "o", label=f"{dofs / 1e6:.2f}M DOFs")
+        a2.plot(n, float(r["cpu_us_per_dof_step"]), "o", label=f"measured, {dofs / 1e6:.2f}M DOFs")
+    if model_path.exists():
+        with open(model_path, newline="") as f:
+            m = list(csv.DictReader(f))
+        x = [int(r["ranks"]) for r in m]
+        y = [1e6 * float(r["s_per_step"]) / float(r["dofs_per_rank"]) for r in m]
+        a2.plot(x, y, "k--", label="model (weak scaling, wall per DOF per rank)")
+    a1.set(xlabel="MPI ranks", ylabel="peak resident memory per rank [GiB]", xscale="log", title="femdyn plex memory")
+    a2.set(xlabel="MPI ranks", ylabel="CPU us per DOF per StVK step", xscale="log", title="time per step")
+    a1.legend(fontsize=8)
+    a2.legend(fontsize=8)
+    fig.tight_layout()
+    Path(outdir).mkdir(parents=True, exist_ok=True)
+    png = Path(outdir) / "fem_scale.png"
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return [str(png)]
+
+
 def register(sub):
+    q = sub.add_parser("fem-scale", help="femdyn -backend plex memory and time per step (scripts/bench/fem-scale)")
+    q.add_argument("csv")
+    q.add_argument("--outdir", default="out")
+    q.set_defaults(func=lambda a: [print(f"wrote {x}") for x in plot_fem_scale(a.csv, a.outdir)] and 0)
     p = sub.add_parser("scaling", help="speed-up and efficiency from scripts/scaling-study's scaling.csv")
     p.add_argument("csv")
     p.add_argument("--outdir", default="out")

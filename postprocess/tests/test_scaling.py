@@ -36,3 +36,23 @@ def test_emit_slurm(tmp_path):
     text = job.read_text()
     assert "#SBATCH --array=0-2" in text and "--signal=USR1@300" in text
     assert "HDF5_USE_FILE_LOCKING=FALSE" in text and "-nx $((1000 * NP))" in text
+
+
+def test_fem_scale_bench_and_plot(tmp_path, suite_bin):
+    """scripts/bench/fem-scale on a small beam: the table, the memory/weak-scaling lines, the model at 64 and
+    1024 ranks, and the fem-scale figure."""
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", SUITE_BIN=str(suite_bin))
+    cmd = [sys.executable, str(ROOT / "scripts" / "bench" / "fem-scale"), "--runs", "1:20,2,2", "2:20,2,2",
+           "2:40,2,2", "--steps", "1", "--outdir", str(tmp_path)]
+    p = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert p.returncode == 0, p.stdout
+    with open(tmp_path / "scale.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert [(int(r["ranks"]), int(r["dofs"])) for r in rows] == [(1, 540), (2, 540), (2, 1080)]
+    assert all(float(r["rss_gib_max_rank"]) > 0 and float(r["cpu_s_per_step"]) > 0 for r in rows)
+    assert "memory per rank at 2 ranks / 1 rank" in p.stdout and "weak scaling 1 -> 2 ranks" in p.stdout
+    with open(tmp_path / "model.csv", newline="") as f:
+        model = {int(r["ranks"]): float(r["s_per_step"]) for r in csv.DictReader(f)}
+    assert set(model) == {1, 2, 64, 1024} and model[1024] >= model[64] >= model[1] > 0
+    assert main(["fem-scale", str(tmp_path / "scale.csv"), "--outdir", str(tmp_path)]) == 0
+    assert (tmp_path / "fem_scale.png").stat().st_size > 1000
