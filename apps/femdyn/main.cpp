@@ -5,7 +5,8 @@
 // CHOLMOD or the distributed PETSc path (after Nilsson & Dieckmann, SIGRAD 2003). With
 // skyline/banded/cholmod the computation is serial and replicated on every rank; with -solver petsc each
 // rank assembles its elements of a METIS partition of the nodes into an MPIAIJ matrix solved with KSP
-// (time-stepping state replicated).
+// (time-stepping state replicated). With -backend plex the beam, the state, the assembly and the output are
+// distributed (a DMPlex repartitioned by PT-Scotch; femdyn_plex.hpp).
 // Checkpoints (-checkpoint_dir, -checkpoint_every, -restart latest) and stop requests (SIGTERM/SIGUSR1,
 // -max_walltime).
 //
@@ -20,6 +21,7 @@
 //   femdyn -material stvk -steps 200 -tip_load 1 -checkpoint_dir ckpt -checkpoint_every 50 -output c.h5
 //   femdyn -material auto -target_error 1e-2 -tip_load 1 -beam_cells 20,2,2 -dt 0.2 -steps 100 -output auto.h5
 //   femdyn -material stvk -dt_adapt -target_error 1e-2 -tip_load 0.1 -beam_cells 10,1,1 -dt 0.2 -steps 25 -output adapt.h5
+//   mpiexec -n 2 femdyn -backend plex -material stvk -beam_cells 40,4,4 -tip_load 1 -steps 20 -output plex.h5
 #include "femdyn_run.hpp"
 
 int main(int argc, char** argv) {
