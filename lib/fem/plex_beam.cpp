@@ -81,37 +81,53 @@ PetscErrorCode distribute(DM* dm) {
   PetscFunctionReturn(0);
 }
 
-// Whether every vertex of the closure of point p has coordinate x within tol of x0.
-PetscErrorCode onPlaneX(DM dm, Vec coords, PetscInt p, double x0, double tol, bool* on) {
-  PetscScalar* cx = nullptr;
-  PetscInt n = 0;
+// The x coordinate of each local vertex (index v - v0).
+PetscErrorCode vertexX(DM dm, PetscInt v0, PetscInt v1, std::vector<double>* x) {
+  Vec coords;
+  PetscSection cs;
+  const PetscScalar* cx;
   PetscFunctionBeginUser;
-  PetscCall(DMPlexVecGetClosure(dm, nullptr, coords, p, &n, &cx));
-  *on = n > 0;
-  for (PetscInt v = 0; v < n; v += 3) *on = *on && std::abs(PetscRealPart(cx[v]) - x0) <= tol;
-  PetscCall(DMPlexVecRestoreClosure(dm, nullptr, coords, p, &n, &cx));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(VecGetArrayRead(coords, &cx));
+  x->resize((size_t)(v1 - v0));
+  for (PetscInt v = v0; v < v1; ++v) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(cs, v, &off));
+    (*x)[(size_t)(v - v0)] = PetscRealPart(cx[off]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &cx));
   PetscFunctionReturn(0);
 }
 
-// "clamped" (faces on x = 0, completed with their edges and vertices) and "tip" (faces on x = length).
+// "clamped" (faces on x = 0, completed with their edges and vertices) and "tip" (faces on x = length): the
+// boundary faces (one cell in their support; with no overlap a face between two ranks' cells has one local
+// cell too, but never lies on an end plane) whose three vertices lie on the plane.
 PetscErrorCode markEnds(DM dm, double length) {
-  DM cdm;
-  Vec coords;
   DMLabel clamped, tip;
-  PetscInt f0, f1;
+  PetscInt f0, f1, v0, v1;
+  std::vector<double> x;
   PetscFunctionBeginUser;
   PetscCall(DMCreateLabel(dm, "clamped"));
   PetscCall(DMCreateLabel(dm, "tip"));
   PetscCall(DMGetLabel(dm, "clamped", &clamped));
   PetscCall(DMGetLabel(dm, "tip", &tip));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMPlexGetHeightStratum(dm, 1, &f0, &f1));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v0, &v1));
+  PetscCall(vertexX(dm, v0, v1, &x));
   const double tol = 1e-9 * length;
   for (PetscInt f = f0; f < f1; ++f) {
-    bool left = false, right = false;
-    PetscCall(onPlaneX(cdm, coords, f, 0.0, tol, &left));
-    PetscCall(onPlaneX(cdm, coords, f, length, tol, &right));
+    PetscInt ns, n = 0, *pts = nullptr;
+    PetscCall(DMPlexGetSupportSize(dm, f, &ns));
+    if (ns != 1) continue;
+    bool left = true, right = true;
+    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
+    for (PetscInt i = 0; i < 2 * n; i += 2)
+      if (pts[i] >= v0 && pts[i] < v1) {
+        const double xv = x[(size_t)(pts[i] - v0)];
+        left = left && std::abs(xv) <= tol, right = right && std::abs(xv - length) <= tol;
+      }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
     if (left) PetscCall(DMLabelSetValue(clamped, f, 1));
     if (right) PetscCall(DMLabelSetValue(tip, f, 1));
   }

@@ -8,7 +8,7 @@
 // component), f_int the internal force (V P g_a per node, g_a the gradients of the barycentric coordinates),
 // f_g the consistent gravity load (rho g V / 4 per node). The DM's PetscSection (a P1 PetscFE field) numbers the
 // DOFs; the displacements on the "clamped" label are zero (an essential condition: removed from the global
-// vectors); the rigid-body modes are the near-null space for algebraic multigrid (DMPlexCreateRigidBody).
+// vectors); the rigid-body modes are the near-null space for algebraic multigrid (MatNullSpaceCreateRigidBody).
 // PETSc's pointwise PetscFE assembly was measured at ~1 ms per tetrahedron for this Jacobian (PETSc 3.18,
 // 8-point quadrature, the generic element-matrix loop), DMPlexVecGetClosure at ~9 us per cell and
 // DMCreateMatrix at 118 s for 132k DOFs: so the geometry and the DOF indices of each cell are computed once
@@ -58,6 +58,7 @@ private:
   PetscErrorCode prepareCells();
   // The Jacobian with its nonzero pattern preallocated from the cells' global indices (MATPREALLOCATOR).
   PetscErrorCode createJacobian(Mat* J) const;
+  PetscErrorCode rigidBodyModes(MatNullSpace* sp) const;
   static PetscErrorCode residualLocal(DM dm, Vec x, Vec f, void* ctx);
   static PetscErrorCode jacobianLocal(DM dm, Vec x, Mat J, Mat P, void* ctx);
   PetscErrorCode residual(DM dm, Vec x, Vec f);
