@@ -188,6 +188,31 @@ PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long ran
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ownedFreeVertices(DM dm, std::vector<FreeVertex>* out) {
+  PetscSection gs, cs;
+  Vec coords;
+  const PetscScalar* cx;
+  PetscInt v0, v1;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(dm, &gs));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v0, &v1));
+  PetscCall(VecGetArrayRead(coords, &cx));
+  out->clear();
+  for (PetscInt v = v0; v < v1; ++v) {
+    PetscInt goff, dof, cdof, off;
+    PetscCall(PetscSectionGetOffset(gs, v, &goff));
+    PetscCall(PetscSectionGetDof(gs, v, &dof));
+    PetscCall(PetscSectionGetConstraintDof(gs, v, &cdof));
+    if (goff < 0 || dof - cdof != 3) continue; // a ghost, or clamped
+    PetscCall(PetscSectionGetOffset(cs, v, &off));
+    out->push_back({goff, {PetscRealPart(cx[off]), PetscRealPart(cx[off + 1]), PetscRealPart(cx[off + 2])}});
+  }
+  PetscCall(VecRestoreArrayRead(coords, &cx));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode plexGlobalSizes(DM dm, long long* vertices, long long* cells) {
   IS numbering;
   PetscInt v0, v1, c0, c1, nv;

@@ -11,6 +11,8 @@
 #include <petscdmplex.h>
 #include <petscsf.h>
 
+#include <vector>
+
 namespace suite::fem {
 
 // Collective. Errors (naming -beam_cells) when the beam has fewer hexahedra along x than there are ranks, and
@@ -19,6 +21,14 @@ namespace suite::fem {
 PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long rank_cap, DM* dm);
 // The largest count of mesh points over the ranks above rank_cap (> 0): a collective error naming `when`.
 PetscErrorCode checkRankCap(DM dm, long long rank_cap, const char* when);
+
+// The vertices this rank owns whose 3 DOFs are free (not clamped) once the DM has its section: the offset of
+// their first DOF in the global vector and their coordinates.
+struct FreeVertex {
+  PetscInt goff;
+  double x[3];
+};
+PetscErrorCode ownedFreeVertices(DM dm, std::vector<FreeVertex>* out);
 
 // Sum over the ranks of the vertices each owns (the global node count) and of the local cells.
 PetscErrorCode plexGlobalSizes(DM dm, long long* vertices, long long* cells);

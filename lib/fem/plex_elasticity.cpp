@@ -1,6 +1,8 @@
 // Elastodynamics residual and Jacobian on a DMPlex, element by element (see plex_elasticity.hpp).
 #include "fem/plex_elasticity.hpp"
 
+#include "fem/plex_beam.hpp"
+
 #include <petscds.h>
 #include <petscfe.h>
 
@@ -146,32 +148,19 @@ PetscErrorCode PlexElasticity::prepareCells() {
 // their coordinates (MatNullSpaceCreateRigidBody; DMPlexCreateRigidBody projects them through the FE space with
 // per-cell label lookups, ~10% of the setup at 40k DOFs).
 PetscErrorCode PlexElasticity::rigidBodyModes(MatNullSpace* sp) const {
-  Vec xyz, coords;
-  PetscSection gs, cs;
-  const PetscScalar* cx;
+  Vec xyz;
   PetscScalar* a;
-  PetscInt v0, v1, r0;
+  PetscInt r0;
+  std::vector<FreeVertex> fv;
   PetscFunctionBeginUser;
+  PetscCall(ownedFreeVertices(dm_, &fv));
   PetscCall(DMCreateGlobalVector(dm_, &xyz));
   PetscCall(VecSetBlockSize(xyz, 3));
   PetscCall(VecGetOwnershipRange(xyz, &r0, nullptr));
-  PetscCall(DMGetGlobalSection(dm_, &gs));
-  PetscCall(DMGetCoordinateSection(dm_, &cs));
-  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMPlexGetDepthStratum(dm_, 0, &v0, &v1));
-  PetscCall(VecGetArrayRead(coords, &cx));
   PetscCall(VecGetArray(xyz, &a));
-  for (PetscInt v = v0; v < v1; ++v) {
-    PetscInt goff, dof, cdof, off;
-    PetscCall(PetscSectionGetOffset(gs, v, &goff));
-    PetscCall(PetscSectionGetDof(gs, v, &dof));
-    PetscCall(PetscSectionGetConstraintDof(gs, v, &cdof));
-    if (goff < 0 || dof - cdof != 3) continue;
-    PetscCall(PetscSectionGetOffset(cs, v, &off));
-    for (int j = 0; j < 3; ++j) a[goff - r0 + j] = cx[off + j];
-  }
+  for (const FreeVertex& v : fv)
+    for (int j = 0; j < 3; ++j) a[v.goff - r0 + j] = v.x[j];
   PetscCall(VecRestoreArray(xyz, &a));
-  PetscCall(VecRestoreArrayRead(coords, &cx));
   PetscCall(MatNullSpaceCreateRigidBody(xyz, sp));
   PetscCall(VecDestroy(&xyz));
   PetscFunctionReturn(0);

@@ -1,6 +1,8 @@
 // The natural node numbering of a distributed DMPlex beam (see plex_natural.hpp).
 #include "fem/plex_natural.hpp"
 
+#include "fem/plex_beam.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -28,10 +30,7 @@ void PlexNaturalOrder::coordinates(long long n, double x[3]) const {
 PetscErrorCode PlexNaturalOrder::setup(DM dm, const BeamSpec& spec) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   int rank, size;
-  PetscSection gs, cs;
-  Vec coords, g;
-  const PetscScalar* cx;
-  PetscInt v0, v1;
+  Vec g;
   PetscFunctionBeginUser;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
@@ -43,25 +42,13 @@ PetscErrorCode PlexNaturalOrder::setup(DM dm, const BeamSpec& spec) {
   rows_ = nodes_ * (rank + 1) / size - row0_;
   PetscCall(VecCreateMPI(comm, (PetscInt)(3 * rows_), (PetscInt)(3 * nodes_), &template_));
   // From each owned, unconstrained DOF of the DM's global vector to its natural DOF.
+  std::vector<FreeVertex> fv;
   std::vector<PetscInt> from, to;
-  PetscCall(DMGetGlobalSection(dm, &gs));
-  PetscCall(DMGetCoordinateSection(dm, &cs));
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &v0, &v1));
-  PetscCall(VecGetArrayRead(coords, &cx));
-  for (PetscInt v = v0; v < v1; ++v) {
-    PetscInt goff, dof, cdof, coff;
-    PetscCall(PetscSectionGetOffset(gs, v, &goff));
-    PetscCall(PetscSectionGetDof(gs, v, &dof));
-    PetscCall(PetscSectionGetConstraintDof(gs, v, &cdof));
-    if (goff < 0 || dof - cdof != 3) continue; // a ghost, or clamped
-    PetscCall(PetscSectionGetOffset(cs, v, &coff));
-    const PetscReal x[3] = {PetscRealPart(cx[coff]), PetscRealPart(cx[coff + 1]),
-                            PetscRealPart(cx[coff + 2])};
-    const long long n = node(x);
-    for (int c = 0; c < 3; ++c) from.push_back(goff + c), to.push_back((PetscInt)(3 * n + c));
+  PetscCall(ownedFreeVertices(dm, &fv));
+  for (const FreeVertex& v : fv) {
+    const long long n = node(v.x);
+    for (int c = 0; c < 3; ++c) from.push_back(v.goff + c), to.push_back((PetscInt)(3 * n + c));
   }
-  PetscCall(VecRestoreArrayRead(coords, &cx));
   IS isf, ist;
   PetscCall(ISCreateGeneral(comm, (PetscInt)from.size(), from.data(), PETSC_COPY_VALUES, &isf));
   PetscCall(ISCreateGeneral(comm, (PetscInt)to.size(), to.data(), PETSC_COPY_VALUES, &ist));
