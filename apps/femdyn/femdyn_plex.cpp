@@ -136,10 +136,11 @@ PetscErrorCode PlexRun::timeSteps() {
     const double w0 = suite::wallSeconds(), c0 = suite::processCpuSeconds();
     PlexStepStats st;
     PetscCall(nm_.step(o_.dt, &st));
-    double tip;
+    double tip, kinetic, strain;
     PetscCall(nm_.planeMean(L, 1, -1.0, &tip));
-    steps_.push_back({nm_.time(), tip, suite::wallSeconds() - w0, suite::processCpuSeconds() - c0,
-                      (long long)st.newton_iterations, (long long)st.linear_iterations});
+    PetscCall(nm_.energies(&kinetic, &strain));
+    steps_.push_back({nm_.time(), tip, suite::wallSeconds() - w0, suite::processCpuSeconds() - c0, kinetic,
+                      strain, (long long)st.newton_iterations, (long long)st.linear_iterations});
     bool stop = false;
     PetscCall(afterStep(s + 1, &stop));
     if (stop) break;

@@ -20,7 +20,7 @@ class H5Input;
 namespace femdyn_app {
 
 struct PlexStep {
-  double time, tip, wall, cpu;
+  double time, tip, wall, cpu, kinetic, strain;
   long long newton, linear;
 };
 

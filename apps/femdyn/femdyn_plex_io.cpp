@@ -82,7 +82,9 @@ PetscErrorCode PlexRun::writeHistory(suite::H5Output& out) const {
   } reals[] = {{"time", &PlexStep::time, "s"},
                {"tip_deflection", &PlexStep::tip, "m"},
                {"wall", &PlexStep::wall, "s"},
-               {"cpu", &PlexStep::cpu, "s"}};
+               {"cpu", &PlexStep::cpu, "s"},
+               {"kinetic_energy", &PlexStep::kinetic, "J"},
+               {"strain_energy", &PlexStep::strain, "J"}};
   const struct {
     const char* name;
     long long PlexStep::*f;
@@ -220,7 +222,7 @@ PetscErrorCode PlexRun::readNatural(const suite::H5Input& in, const char* datase
 
 // The history of the first `step` steps (every rank reads it: a few numbers per step).
 PetscErrorCode PlexRun::readHistory(const suite::H5Input& in, long long step) {
-  std::vector<double> t, tip, wall, cpu;
+  std::vector<double> t, tip, wall, cpu, ek, es;
   std::vector<long long> nw, li;
   suite::Dims d;
   PetscFunctionBeginUser;
@@ -228,15 +230,18 @@ PetscErrorCode PlexRun::readHistory(const suite::H5Input& in, long long step) {
   PetscCall(in.readAll("/steps/tip_deflection", &tip, &d));
   PetscCall(in.readAll("/steps/wall", &wall, &d));
   PetscCall(in.readAll("/steps/cpu", &cpu, &d));
+  PetscCall(in.readAll("/steps/kinetic_energy", &ek, &d));
+  PetscCall(in.readAll("/steps/strain_energy", &es, &d));
   PetscCall(in.readAll("/steps/newton_iterations", &nw, &d));
   PetscCall(in.readAll("/steps/linear_iterations", &li, &d));
   const size_t n = (size_t)step;
-  PetscCheck(t.size() == n && tip.size() == n && wall.size() == n && cpu.size() == n && nw.size() == n &&
-                 li.size() == n,
+  PetscCheck(t.size() == n && tip.size() == n && wall.size() == n && cpu.size() == n && ek.size() == n &&
+                 es.size() == n && nw.size() == n && li.size() == n,
              ctx_.comm(), PETSC_ERR_FILE_UNEXPECTED, "restart %s: /steps does not hold %lld steps",
              in.path().c_str(), step);
   steps_.clear();
-  for (size_t i = 0; i < n; ++i) steps_.push_back({t[i], tip[i], wall[i], cpu[i], nw[i], li[i]});
+  for (size_t i = 0; i < n; ++i)
+    steps_.push_back({t[i], tip[i], wall[i], cpu[i], ek[i], es[i], nw[i], li[i]});
   PetscFunctionReturn(0);
 }
 

@@ -277,6 +277,29 @@ PetscErrorCode PlexElasticity::jacobian(DM dm, Vec x, Mat J) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PlexElasticity::kineticEnergy(Vec v, double* e) const {
+  Vec loc;
+  const PetscScalar* va;
+  double mine = 0.0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm_, &loc));
+  PetscCall(VecZeroEntries(loc)); // clamped DOFs: v = 0
+  PetscCall(DMGlobalToLocal(dm_, v, INSERT_VALUES, loc));
+  PetscCall(VecGetArrayRead(loc, &va));
+  for (size_t c = 0; c < vol_.size(); ++c) {
+    const PetscInt* li = &loc_[12 * c];
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        for (int i = 0; i < 3; ++i)
+          mine +=
+              0.5 * massEntry(p_.rho, vol_[c], a, b) * PetscRealPart(va[li[3 * a + i]] * va[li[3 * b + i]]);
+  }
+  PetscCall(VecRestoreArrayRead(loc, &va));
+  PetscCall(DMRestoreLocalVector(dm_, &loc));
+  PetscCallMPI(MPI_Allreduce(&mine, e, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PlexElasticity::strainEnergy(double* e) const {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&energy_, e, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));

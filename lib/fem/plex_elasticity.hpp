@@ -51,6 +51,8 @@ public:
   void setInertiaVector(Vec b_local) { b_ = b_local; }
   // Strain energy of the last residual evaluation, summed over the ranks (collective).
   PetscErrorCode strainEnergy(double* e) const;
+  // Kinetic energy v^T M v / 2 of a global vector v (consistent mass, element by element; collective).
+  PetscErrorCode kineticEnergy(Vec v, double* e) const;
 
 private:
   // Per local cell: the volume and barycentric gradients (total Lagrangian: fixed), the local-vector offsets

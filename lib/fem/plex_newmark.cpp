@@ -151,6 +151,13 @@ PetscErrorCode PlexNewmark::solveStatic(PlexStepStats* st) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PlexNewmark::energies(double* kinetic, double* strain) const {
+  PetscFunctionBeginUser;
+  PetscCall(el_.kineticEnergy(v_, kinetic));
+  PetscCall(el_.strainEnergy(strain));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PlexNewmark::planeMean(double x0, int comp, double sign, double* mean) const {
   Vec loc, coords;
   PetscSection ls, gs, cs;

@@ -39,6 +39,8 @@ public:
   PetscErrorCode solveStatic(PlexStepStats* st);
   // Mean of component comp (times sign) of u over the vertices on the plane x = x0 (each counted once).
   PetscErrorCode planeMean(double x0, int comp, double sign, double* mean) const;
+  // Kinetic energy of v and strain energy at u (the last residual evaluation: the step's converged iterate).
+  PetscErrorCode energies(double* kinetic, double* strain) const;
   Vec displacement() const { return u_; }
   Vec velocity() const { return v_; }
   Vec acceleration() const { return a_; }

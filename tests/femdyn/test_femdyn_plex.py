@@ -6,8 +6,8 @@ Usage: test_femdyn_plex.py FEMDYN
 - static linear cantilever (20x2x2 hexahedra, tip load 1; CG + GAMG at -ksp_rtol 1e-13) at 1, 2 and 3 ranks:
   tip deflection and the displacement field (matched by node coordinates) equal to CHOLMOD's to 1e-10 relative;
 - 10 full-Newton StVK Newmark steps (and corotational at 2 ranks) (8x2x2, tip load 2, dt 0.02, Newton rtol 1e-12) at 1, 2 and 3 ranks (CG +
-  GAMG at -ksp_rtol 1e-14) and at 2 ranks with MUMPS LU: the tip history and the final field equal to
-  CHOLMOD's to 1e-10 relative;
+  GAMG at -ksp_rtol 1e-14) and at 2 ranks with MUMPS LU: the tip history, the kinetic and strain energies and the
+  final field equal to CHOLMOD's to 1e-10 relative;
 - distribution: at 3 ranks every rank holds cells (/partition/cells, summing to the global count), and with
   -plex_rank_cap 2500 (a 30x2x2 beam holds 3,933 mesh points) the 1-rank run stops with a clear error while the
   3-rank run fits under the cap and gives the uncapped 1-rank tip deflection;
@@ -87,6 +87,10 @@ def main():
             ok = tip.shape == tip_ref.shape and rel(tip, tip_ref) <= TOL
             check(ok, f"StVK Newmark, {n} ranks, {name}: tip history vs CHOLMOD {rel(tip, tip_ref) if ok else tip.shape}")
             compare_field(f"StVK Newmark, {n} ranks, {name}", f, ref_d)
+            for e in ("kinetic_energy", "strain_energy"):
+                v, vr = f[f"steps/{e}"][:], ref_d[f"steps/{e}"][1:]
+                check(v.shape == vr.shape and rel(v, vr) <= TOL,
+                      f"StVK Newmark, {n} ranks, {name}: {e} vs CHOLMOD {rel(v, vr) if v.shape == vr.shape else v.shape}")
 
         corot = ["-material", "corotational", *dynamic[2:-1], 1e-10]  # its tangent reaches 1e-10, not 1e-12
         ref_c = run(1, p("c_ref.h5"), *corot, "-solver", "cholmod")
