@@ -74,8 +74,8 @@ def plot_fem_scale(scale_csv, outdir):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
     for r in rows:
         n, dofs = int(r["ranks"]), int(r["dofs"])
-        a1.plot(n, float(r["rss_gib_max_rank"]), "o", label=f"{dofs / 1e6:.2f}M DOFs")
-        a2.plot(n, float(r["cpu_us_per_dof_step"]), "o", label=f"measured, {dofs / 1e6:.2f}M DOFs")
+        a1.plot(n, float(r["rss_gib_max_rank"]), "o", label=f"{dofs / 1e6:.2f}M DOFs on {n} rank(s)")
+        a2.plot(n, float(r["cpu_us_per_dof_step"]), "o", label=f"measured, {dofs / 1e6:.2f}M DOFs on {n} rank(s)")
     if model_path.exists():
         with open(model_path, newline="") as f:
             m = list(csv.DictReader(f))
@@ -85,8 +85,10 @@ def plot_fem_scale(scale_csv, outdir):
         if "s_per_step_assumed_growth" in m[0]:
             y2 = [1e6 * float(r["s_per_step_assumed_growth"]) / float(r["dofs_per_rank"]) for r in m]
             a2.plot(x, y2, "k:", label=f"model, CG count +{float(m[0]['cg_growth_assumed']):g} per doubling")
-    a1.set(xlabel="MPI ranks", ylabel="peak resident memory per rank [GiB]", xscale="log", title="femdyn plex memory")
-    a2.set(xlabel="MPI ranks", ylabel="us per DOF per StVK step (measured: CPU; model: wall)", xscale="log", title="time per step")
+    ranks = sorted({int(r["ranks"]) for r in rows})
+    a1.set(xlabel="MPI ranks", ylabel="peak resident memory per rank [GiB]", title="femdyn plex memory",
+           xticks=ranks, xlim=(0.5, max(ranks) + 0.5), ylim=(0, None))
+    a2.set(xlabel="MPI ranks", ylabel="CPU us per DOF per StVK step", xscale="log", title="time per step")
     a1.legend(fontsize=8)
     a2.legend(fontsize=8)
     fig.tight_layout()
