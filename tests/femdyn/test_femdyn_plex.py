@@ -6,7 +6,7 @@ Usage: test_femdyn_plex.py FEMDYN
 - static linear cantilever (20x2x2 hexahedra, tip load 1; CG + GAMG at -ksp_rtol 1e-13) at 1, 2 and 3 ranks:
   tip deflection and the displacement field (matched by node coordinates) equal to CHOLMOD's to 1e-10 relative;
 - 10 full-Newton StVK Newmark steps (and corotational at 2 ranks) (8x2x2, tip load 2, dt 0.02, Newton rtol 1e-12) at 1, 2 and 3 ranks (CG +
-  GAMG at -ksp_rtol 1e-14) and at 2 ranks with MUMPS LU: the tip history, the kinetic and strain energies and the
+  GAMG at -ksp_rtol 1e-14) and at 2 ranks with MUMPS LU and with CG + hypre BoomerAMG: the tip history, the kinetic and strain energies and the
   final field equal to CHOLMOD's to 1e-10 relative;
 - distribution: at 3 ranks every rank holds cells (/partition/cells, summing to the global count), and with
   -plex_rank_cap 2500 (a 30x2x2 beam holds 3,933 mesh points) the 1-rank run stops with a clear error while the
@@ -81,6 +81,7 @@ def main():
         tip_ref = ref_d["steps/tip_deflection"][1:]  # the replicated path records step 0 too
         cases = [(n, ["-ksp_rtol", 1e-14], "CG+GAMG") for n in (1, 2, 3)]
         cases.append((2, ["-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps"], "MUMPS"))
+        cases.append((2, ["-pc_type", "hypre", "-ksp_rtol", 1e-14], "CG+BoomerAMG"))
         for n, ksp, name in cases:
             f = run(n, p(f"d{n}_{name}.h5"), *dynamic, "-backend", "plex", *ksp)
             tip = f["steps/tip_deflection"][:]
