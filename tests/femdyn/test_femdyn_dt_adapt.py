@@ -16,45 +16,29 @@ Usage: test_femdyn_dt_adapt.py FEMDYN [case]   case: target, release, ranks, aut
 - auto (-material auto -dt_adapt, P = 1, E = 1e-2): budget split E/2 law (/material_auto target) + E/2 time
   (/time_adapt time_budget), total error vs fine StVK <= E.
 """
-import os
-import subprocess
 import sys
 import tempfile
 
+import femdyn_harness as harness
+from femdyn_harness import FAILS, check
 import h5py
 import numpy as np
 
 EXE = sys.argv[1]
 CASES = sys.argv[2:] or ["target", "release", "ranks", "auto"]
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OPENBLAS_NUM_THREADS="1")
 BASE = ["-beam_cells", "10,1,1", "-dt", 0.2, "-steps", 25]
-FAILS = []
 
 
-def check(cond, msg):
-    print(("ok   " if cond else "FAIL ") + msg, flush=True)
-    if not cond:
-        FAILS.append(msg)
-
-
-class Runner:
+class Runner(harness.Runner):
     def __init__(self, d):
-        self.d, self.k = d, 0
+        super().__init__(EXE, BASE, d, 120)
 
     def __call__(self, material, load, *extra, np_=1):
-        self.k += 1
-        out = os.path.join(self.d, f"r{self.k}.h5")
-        cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), EXE, "-material", material, "-tip_load",
-               str(load), *map(str, BASE), *map(str, extra), "-output", out]
-        p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                           timeout=120)
-        if p.returncode != 0:
-            raise AssertionError(f"{' '.join(cmd)} failed:\n{p.stdout}")
+        out, log = self.launch(material, load, *extra, np_=np_)
         with h5py.File(out, "r") as f:
             st = f["steps"]
             r = {"t": st["time"][:], "tip": st["tip_deflection"][:], "rejected": st["rejected"][:],
-                 "log": p.stdout}
+                 "log": log}
             for g in ("time_adapt", "material_auto"):
                 if g in f:
                     r[g] = {k: f[g][k][:] for k in f[g] if isinstance(f[g][k], h5py.Dataset)}

@@ -16,45 +16,29 @@ Usage: test_femdyn_material_auto.py FEMDYN [case]   case: small, large, sweep, r
 - ranks (-solver petsc with its default direct KSP, P = 1, E = 1e-2): 1 and 2 ranks take the same law at every step and their tip
   histories agree to 1e-8 relative.
 """
-import os
-import subprocess
 import sys
 import tempfile
 
+import femdyn_harness as harness
+from femdyn_harness import FAILS, check
 import h5py
 import numpy as np
 
 EXE = sys.argv[1]
 CASES = sys.argv[2:] or ["small", "large", "sweep", "ranks"]
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OPENBLAS_NUM_THREADS="1")
 BASE = ["-beam_cells", "20,2,2", "-dt", 0.2, "-steps", 100]
-FAILS = []
 
 
-def check(cond, msg):
-    print(("ok   " if cond else "FAIL ") + msg, flush=True)
-    if not cond:
-        FAILS.append(msg)
-
-
-class Runner:
+class Runner(harness.Runner):
     def __init__(self, d):
-        self.d, self.k = d, 0
+        super().__init__(EXE, BASE, d, 300)
 
     def __call__(self, material, load, *extra, np_=1):
-        self.k += 1
-        out = os.path.join(self.d, f"r{self.k}.h5")
-        cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), EXE, "-material", material, "-tip_load",
-               str(load), *map(str, BASE), *map(str, extra), "-output", out]
-        p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                           timeout=300)
-        if p.returncode != 0:
-            raise AssertionError(f"{' '.join(cmd)} failed:\n{p.stdout}")
+        out, log = self.launch(material, load, *extra, np_=np_)
         with h5py.File(out, "r") as f:
             st = f["steps"]
             r = {"tip": st["tip_deflection"][:], "newton": int(st["newton_iterations"][:].sum()),
-                 "log": p.stdout, "balance": st["kinetic_energy"][:] + st["strain_energy"][:]
+                 "log": log, "balance": st["kinetic_energy"][:] + st["strain_energy"][:]
                  - st["external_work"][:], "strain": st["strain_energy"][:]}
             if "material_auto" in f:
                 g = f["material_auto"]
