@@ -68,15 +68,11 @@ PlexRun::~PlexRun() {
 PetscErrorCode PlexRun::checkLocalDofs() const {
   Vec l;
   PetscInt n;
-  long long most = 0, mine;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalVector(dm_, &l));
   PetscCall(VecGetLocalSize(l, &n));
   PetscCall(DMRestoreLocalVector(dm_, &l));
-  mine = n;
-  PetscCallMPI(MPI_Allreduce(&mine, &most, 1, MPI_LONG_LONG, MPI_MAX, ctx_.comm()));
-  PetscCheck(o_.plex_rank_cap <= 0 || most <= o_.plex_rank_cap, ctx_.comm(), PETSC_ERR_MEM,
-             "a rank holds %lld local DOFs, above -plex_rank_cap %lld", most, (long long)o_.plex_rank_cap);
+  PetscCall(checkRankCapCount(ctx_.comm(), n, o_.plex_rank_cap, "local DOFs", "in its local vector"));
   PetscFunctionReturn(0);
 }
 

@@ -135,9 +135,10 @@ PetscErrorCode markEnds(DM dm, double length) {
   PetscFunctionReturn(0);
 }
 
-// A count over the ranks above rank_cap (> 0): the collective error.
-PetscErrorCode capCheck(MPI_Comm comm, long long count, long long rank_cap, const char* what,
-                        const char* when) {
+} // namespace
+
+PetscErrorCode checkRankCapCount(MPI_Comm comm, long long count, long long rank_cap, const char* what,
+                                 const char* when) {
   long long most = 0;
   PetscFunctionBeginUser;
   if (rank_cap <= 0) PetscFunctionReturn(0);
@@ -147,13 +148,12 @@ PetscErrorCode capCheck(MPI_Comm comm, long long count, long long rank_cap, cons
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
 PetscErrorCode checkRankCap(DM dm, long long rank_cap, const char* when) {
   PetscInt p0, p1;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetChart(dm, &p0, &p1));
-  PetscCall(capCheck(PetscObjectComm((PetscObject)dm), (long long)(p1 - p0), rank_cap, "mesh points", when));
+  PetscCall(checkRankCapCount(PetscObjectComm((PetscObject)dm), (long long)(p1 - p0), rank_cap, "mesh points",
+                              when));
   PetscFunctionReturn(0);
 }
 
@@ -170,7 +170,8 @@ PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long ran
   const long long plane = (long long)(spec.cells[1] + 1) * (spec.cells[2] + 1);
   const long long slab_points =
       6LL * (sl.c1 - sl.c0) * spec.cells[1] * spec.cells[2] + plane * (sl.p1 - sl.p0);
-  PetscCall(capCheck(comm, slab_points, rank_cap, "cells and vertices", "in its slab of the generated beam"));
+  PetscCall(checkRankCapCount(comm, slab_points, rank_cap, "cells and vertices",
+                              "in its slab of the generated beam"));
   std::vector<PetscReal> xyz;
   std::vector<PetscInt> cells;
   slabVertices(spec, sl, &xyz);

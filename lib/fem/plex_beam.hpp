@@ -19,6 +19,9 @@ namespace suite::fem {
 // (naming -plex_rank_cap) when rank_cap > 0 and a rank would hold more than rank_cap mesh points: its slab's
 // cells and vertices (checked before they are allocated), its part of the mesh before and after distribution.
 PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long rank_cap, DM* dm);
+// The largest of the ranks' counts (of `what`) above rank_cap (> 0): a collective error naming `what` and `when`.
+PetscErrorCode checkRankCapCount(MPI_Comm comm, long long count, long long rank_cap, const char* what,
+                                 const char* when);
 // The largest count of mesh points over the ranks above rank_cap (> 0): a collective error naming `when`.
 PetscErrorCode checkRankCap(DM dm, long long rank_cap, const char* when);
 

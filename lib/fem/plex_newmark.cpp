@@ -89,7 +89,7 @@ PetscErrorCode PlexNewmark::tipLoad(double P) {
 }
 
 // The inertia vector b (plex_elasticity.hpp) from a global vector.
-PetscErrorCode PlexNewmark::setAux(Vec b_global) {
+PetscErrorCode PlexNewmark::setInertia(Vec b_global) {
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(b_local_)); // the clamped DOFs: b = 0 there
   PetscCall(DMGlobalToLocal(dm_, b_global, INSERT_VALUES, b_local_));
@@ -119,7 +119,7 @@ PetscErrorCode PlexNewmark::initialize() {
   PlexStepStats st;
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(b_));
-  PetscCall(setAux(b_));
+  PetscCall(setInertia(b_));
   PetscCall(solve(1.0, 0.0, a_, &st)); // rho a - rho g = f_tip
   PetscFunctionReturn(0);
 }
@@ -130,7 +130,7 @@ PetscErrorCode PlexNewmark::step(double dt, PlexStepStats* st) {
   // b = c u_n + v_n / (beta dt) + (1/(2 beta) - 1) a_n
   PetscCall(VecAXPBYPCZ(b_, c, 1.0 / (beta_ * dt), 0.0, u_, v_));
   PetscCall(VecAXPY(b_, 1.0 / (2.0 * beta_) - 1.0, a_));
-  PetscCall(setAux(b_));
+  PetscCall(setInertia(b_));
   PetscCall(VecCopy(u_, un_));
   PetscCall(VecAXPBYPCZ(u_, dt, 0.5 * dt * dt, 1.0, v_, a_)); // predictor u_n + dt v_n + dt^2/2 a_n
   t_ += dt;
@@ -145,7 +145,7 @@ PetscErrorCode PlexNewmark::step(double dt, PlexStepStats* st) {
 PetscErrorCode PlexNewmark::solveStatic(PlexStepStats* st) {
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(b_));
-  PetscCall(setAux(b_));
+  PetscCall(setInertia(b_));
   PetscCall(VecZeroEntries(u_));
   PetscCall(solve(0.0, 1.0, u_, st));
   PetscFunctionReturn(0);

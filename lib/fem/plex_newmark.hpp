@@ -50,7 +50,7 @@ public:
 
 private:
   PetscErrorCode tipLoad(double P);
-  PetscErrorCode setAux(Vec b_global);
+  PetscErrorCode setInertia(Vec b_global);
   PetscErrorCode solve(double mass, double stiffness, Vec x, PlexStepStats* st);
 
   DM dm_ = nullptr;
