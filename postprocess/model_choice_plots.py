@@ -1,6 +1,6 @@
 """The accuracy-target run's choice (issue #17): ``python -m postprocess model-choice run.h5`` draws every
 candidate of /model_choice (lib/model_choice/choice_output.hpp) as predicted L1 error against predicted cost,
-one line per family (scheme), the target, the chosen candidate, the final run's estimated error (at its measured
+one line per family (scheme; a family whose run failed is named as left out), the target, the chosen candidate, the final run's estimated error (at its measured
 cost) and, when the run had -error, the error against the exact solution.
 ``python -m postprocess model-choice-bench targets.csv`` draws scripts/bench/euler-target-error's table: the
 achieved error against the target per problem, with the lines E and E/4.
@@ -48,7 +48,8 @@ def plot_choice(path, output):
     fig, ax = plt.subplots(figsize=(7, 5))
     for i, name in enumerate(ch["families"]):
         cost, err = front(ch, i)
-        ax.loglog(cost, err, "o-", ms=3, lw=1, label=name)
+        why = str(a.get(f"failure_{name}", ""))
+        ax.loglog(cost, err, "o-", ms=3, lw=1, label=f"{name} (failed at {why.split(':')[0]}: left out)" if why else name)
     if a["target_error"] > 0:
         ax.axhline(a["target_error"], color="k", ls="--", lw=1, label=f"target {a['target_error']:.3g}")
     ax.loglog([a["chosen_predicted_cost"]], [a["chosen_predicted_error"]], "k*", ms=14,

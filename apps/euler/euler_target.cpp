@@ -145,8 +145,27 @@ mc::ChooserSettings chooserSettings(const TargetOptions& t) {
 } // namespace
 
 namespace {
+// run.solve(), with a failed run (a non-physical state: PETSC_ERR_FP; a step that failed after its retries:
+// PETSC_ERR_NOT_CONVERGED; both raised collectively, so every rank gets the same code) reported in *r instead
+// of ending the target run: the chooser leaves that scheme out. Any other error is raised again as it was.
+PetscErrorCode solveOrFail(const suite::RunContext& ctx, EulerRun& run, mc::RunResult* r) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode ierr = run.solve();
+  PetscCall(PetscPopErrorHandler());
+  if (!ierr) PetscFunctionReturn(0);
+  char* specific = nullptr;
+  PetscCall(PetscErrorMessage(ierr, nullptr, &specific));
+  const std::string why = specific ? specific : "";
+  PetscCheck(ierr == PETSC_ERR_FP || ierr == PETSC_ERR_NOT_CONVERGED, ctx.comm(), ierr, "%s", why.c_str());
+  r->failed = true;
+  r->failure = why;
+  PetscFunctionReturn(0);
+}
+
 // One run of the choice (the chooser's Runner): family f at resolution n in this process, its final density on
-// every rank, its solve's CPU seconds (maximum over the ranks) and steps; *exact_l1: a final run's -error.
+// every rank, its solve's CPU seconds (maximum over the ranks) and steps, or that it failed (solveOrFail);
+// *exact_l1: a final run's -error.
 PetscErrorCode runCandidate(const suite::RunContext& ctx, int dim, const PetscInt aspect[3],
                             const mc::Family& f, long long n, mc::RunKind kind, mc::RunResult* r,
                             double* exact_l1) {
@@ -157,7 +176,12 @@ PetscErrorCode runCandidate(const suite::RunContext& ctx, int dim, const PetscIn
   run.setQuiet(kind != mc::RunKind::final);
   PetscCall(run.readOptions());
   PetscCall(run.setup());
-  PetscCall(run.solve());
+  PetscCall(solveOrFail(ctx, run, r));
+  if (r->failed) {
+    PetscCall(run.solveSeconds(&r->seconds));
+    PetscCall(so.restore());
+    PetscFunctionReturn(0);
+  }
   const double t_final = run.options().t_final;
   PetscCheck(
       kind == mc::RunKind::timing || std::abs(run.finalTime() - t_final) <= 1e-12 * std::max(1.0, t_final),

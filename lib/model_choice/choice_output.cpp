@@ -14,11 +14,12 @@ template <typename T> void writeColumn(H5AppendFile& h5, const std::string& name
 }
 
 void writeRuns(H5AppendFile& h5, const std::string& group, const std::vector<RunRecord>& runs) {
-  std::vector<long long> fam, n, steps;
+  std::vector<long long> fam, n, steps, failed;
   std::vector<double> sec, diff, est;
   for (const RunRecord& r : runs)
     fam.push_back(r.family), n.push_back(r.n), sec.push_back(r.seconds), diff.push_back(r.difference),
-        est.push_back(r.estimate), steps.push_back(r.steps);
+        est.push_back(r.estimate), steps.push_back(r.steps), failed.push_back(r.failed ? 1 : 0);
+  writeColumn(h5, group + "/failed", failed);
   writeColumn(h5, group + "/steps", steps);
   writeColumn(h5, group + "/family", fam);
   writeColumn(h5, group + "/n", n);
@@ -49,6 +50,7 @@ void writeFamilies(H5AppendFile& h5, const ModelChooser& c) {
     h5.setAttribute(g, "order_used_" + fam.name, c.orders()[f].p);
     h5.setAttribute(g, "error_constant_" + fam.name, c.orders()[f].a);
     h5.setAttribute(g, "cost_exponent_" + fam.name, c.costModel().exponent(fam.name));
+    h5.setAttribute(g, "failure_" + fam.name, c.failures()[f]);
   }
   h5.setAttribute(g, "families", names);
 }

@@ -25,12 +25,35 @@ std::string ModelChooser::label(int family, long long n) const {
   return families_[(size_t)family].name + " n=" + std::to_string(n);
 }
 
+// When run r of family f at n failed: records it (into *into) and leaves the family out (no order, so no
+// candidate of it is feasible); returns whether it failed.
+bool ModelChooser::recordFailure(size_t f, long long n, const RunResult& r, std::vector<RunRecord>* into) {
+  if (!r.failed) return false;
+  RunRecord rec{(int)f, n, r.seconds, r.steps, NAN, NAN};
+  rec.failed = true;
+  into->push_back(rec);
+  failures_[f] = "N = " + std::to_string(n) + ": " + r.failure;
+  orders_[f] = ObservedOrder();
+  orders_[f].why = "failed at " + failures_[f];
+  return true;
+}
+
+PetscErrorCode ModelChooser::explainAllFailed() const {
+  std::string all;
+  PetscFunctionBeginUser;
+  for (size_t f = 0; f < families_.size(); ++f)
+    all += (f ? "; " : "") + families_[f].name + " " + failures_[f];
+  SETERRQ(comm_, PETSC_ERR_NOT_CONVERGED, "-target_error/-target_walltime: every candidate family failed: %s",
+          all.c_str());
+}
+
 // Pilot k (n0 2^k) of family f: timed, compared with the family's previous pilot.
 PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
   RunResult r;
   const long long n = set_.n0 << k;
   PetscFunctionBeginUser;
   PetscCall(runner(families_[f], n, RunKind::pilot, &r));
+  if (recordFailure(f, n, r, &pilots_)) PetscFunctionReturn(0);
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, true});
   // the previous pilot of the family (the latest, so that an extra level is compared with the one before it)
   const double d = k ? l1Distance(runs_[f].at(n / 2), r.density) : NAN;
@@ -85,6 +108,7 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   const size_t nf = families_.size();
   orders_.assign(nf, ObservedOrder());
   runs_.assign(nf, {});
+  failures_.assign(nf, "");
   pilot_seconds_.assign(nf, std::array<double, kMaxPilotLevels>{});
   for (size_t f = 0; f < nf; ++f) PetscCall(runPilot(runner, f, 0));
   std::vector<size_t> order(nf), completed;
@@ -96,18 +120,22 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   });
   for (size_t f : order) {
     bool pruned = false;
-    for (int k = 1; !pruned && (k <= 2 || preAsymptotic(f, k)); ++k) {
+    for (int k = 1; !pruned && failures_[f].empty() && (k <= 2 || preAsymptotic(f, k)); ++k) {
       pruned = pilotTooDear(f, k, completed);
       if (!pruned) PetscCall(runPilot(runner, f, k));
     }
+    if (!failures_[f].empty()) continue;
     if (pruned) {
       orders_[f] = ObservedOrder();
       orders_[f].why = "left out: its next pilot would cost more than a candidate already meeting the target";
       continue;
     }
     PetscCall(runTimings(runner, f));
-    completed.push_back(f);
+    if (failures_[f].empty()) completed.push_back(f);
   }
+  if (completed.empty() &&
+      std::none_of(failures_.begin(), failures_.end(), [](const std::string& w) { return w.empty(); }))
+    PetscCall(explainAllFailed());
   std::vector<std::string> names;
   for (size_t f : completed) names.push_back(families_[f].name);
   PetscCall(cost_.checkCovers(comm_, names));
@@ -124,6 +152,7 @@ PetscErrorCode ModelChooser::runTimings(const Runner& runner, size_t f) {
     if (n <= set_.n0 << 2 || n == previous) continue;
     previous = n;
     PetscCall(runner(families_[f], n, RunKind::timing, &r));
+    if (recordFailure(f, n, r, &timings_)) break;
     cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
     timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
   }
@@ -243,11 +272,13 @@ PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& 
   const size_t f = (size_t)c.family;
   PetscFunctionBeginUser;
   PetscCall(runner(families_[f], c.n, RunKind::final, &r));
+  chosen_ = c;
+  met_ = false;
+  if (recordFailure(f, c.n, r, &finals_)) PetscFunctionReturn(0);
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)c.n, r.seconds, (double)r.steps, true});
   RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, NAN};
   rec.estimate = checkEstimate(f, c.n, r.density, &rec, &refit);
   finals_.push_back(rec);
-  chosen_ = c;
   met_ = set_.target_error <= 0 || rec.estimate <= set_.target_error;
   ObservedOrder& o = orders_[f];
   if (refit.valid && refit.p < o.p) capOrders(refit.p);
@@ -276,6 +307,12 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
     PetscCall(choose(done, &c));
     if (c.n == 0) break; // nothing left that is predicted to do better: report the miss
   }
+  PetscCheck(
+      !finals_.back().failed, comm_, PETSC_ERR_NOT_CONVERGED,
+      "-target_error/-target_walltime: the final run of %s failed (%s) and no candidate is left to run "
+      "after %zu escalations",
+      label(chosen_.family, chosen_.n).c_str(), failures_[(size_t)chosen_.family].c_str(),
+      finals_.size() - 1);
   PetscFunctionReturn(0);
 }
 
@@ -291,7 +328,10 @@ std::string ModelChooser::summary() const {
       chosen_.cost, f.estimate, met_ ? "met" : "MISSED", pilots_.size() + timings_.size(), pilotSeconds(),
       finals_.size(), finalSeconds(), label(most_accurate_.family, most_accurate_.n).c_str(),
       most_accurate_.cost, most_accurate_.error);
-  return b;
+  std::string line = b;
+  for (size_t f = 0; f < failures_.size(); ++f)
+    if (!failures_[f].empty()) line += "; " + families_[f].name + " left out: its run at " + failures_[f];
+  return line;
 }
 
 } // namespace suite::model_choice

@@ -15,7 +15,10 @@
 //      mostly by the sub-cell placement of the jumps). A lower order observed this way caps every family's
 //      order (the problem's regularity bounds them all). When the estimate misses the target the family's fit
 //      is replaced by what the final run showed and the next candidate is run (at most max_escalations times).
-// A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
+// A run that fails (RunResult::failed: a non-physical state, a failed step) leaves its family out: its pilots
+// stop, a failed final run is followed by the next candidate (an escalation), and the output records the
+// failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on the
+// problem. A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
 // same decisions: the runner must return the same density field and the same seconds (e.g. the maximum over
 // the ranks) on every rank.
 #pragma once
@@ -55,6 +58,8 @@ struct RunResult {
   GridField density; // the final density on the whole grid, the same on every rank (not for timing runs)
   double seconds = 0.0;
   long long steps = 0;
+  bool failed = false; // the run stopped on a non-physical state or a failed step (on every rank)
+  std::string failure; // then: why
 };
 // Runs family f at resolution n: a pilot (to t_final, no output), a timing run (kTimingSteps steps, no output)
 // or a final run (to t_final, with the run's output).
@@ -73,6 +78,7 @@ struct RunRecord {
   double difference =
       NAN;               // L1 distance to the previous run of the family (pilots) / to the reference (final)
   double estimate = NAN; // finals: the estimated error; pilots: the fit's error at n
+  bool failed = false;   // the run failed (RunResult::failed): its family is left out
 };
 
 class ModelChooser {
@@ -89,6 +95,8 @@ public:
   const std::vector<RunRecord>& pilots() const { return pilots_; }
   const std::vector<RunRecord>& finals() const { return finals_; }
   const std::vector<RunRecord>& timings() const { return timings_; }
+  // Per family: why its run failed ("" when none did); a failed family is left out of the choice.
+  const std::vector<std::string>& failures() const { return failures_; }
   const CandidateRow& chosen() const { return chosen_; } // the last candidate run
   const CandidateRow& mostAccurate() const { return most_accurate_; }
   bool met() const { return met_; } // the final estimate is within the target (or no error target)
@@ -103,6 +111,8 @@ private:
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
   bool preAsymptotic(size_t f, int k) const;
   PetscErrorCode runTimings(const Runner& runner, size_t f);
+  bool recordFailure(size_t f, long long n, const RunResult& r, std::vector<RunRecord>* into);
+  PetscErrorCode explainAllFailed() const;
   void buildTable();
   bool feasible(const CandidateRow& r) const;
   bool better(const CandidateRow& a, const CandidateRow& b) const;
@@ -121,6 +131,7 @@ private:
   std::vector<std::array<double, kMaxPilotLevels>> pilot_seconds_; // per family: its pilots' seconds by level
   std::vector<CandidateRow> table_;
   std::vector<RunRecord> pilots_, finals_, timings_;
+  std::vector<std::string> failures_;
   CandidateRow chosen_, most_accurate_;
   bool met_ = false;
 };

@@ -3,7 +3,9 @@
 on Sod, the density wave and the 2D isentropic vortex for two targets a decade apart, the /model_choice group is complete, and a 2-rank
 run given the 1-rank run's cost model (-cost_model) takes the same choice. Each case runs in a few seconds.
 
-Usage: euler_target_check.py sod|density_wave|vortex|walltime|ranks
+A scheme whose run fails on the problem is left out (failing_scheme).
+
+Usage: euler_target_check.py sod|density_wave|vortex|walltime|ranks|failing_scheme
 """
 import os
 import sys
@@ -13,6 +15,8 @@ import h5py
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from euler_harness import check, error, run  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 ATTRS = ["families", "target_error", "chosen_family", "chosen_label", "chosen_n", "chosen_predicted_error", "chosen_predicted_cost",
          "estimated_error", "target_met", "pilot_seconds", "final_seconds", "total_seconds",
@@ -87,6 +91,28 @@ def vortex():
     """2D: the isentropic vortex to t = 0.5, weno5 and muscl2 up to 128 x 128."""
     target_case("isentropic_vortex", [1e-4, 1e-5],
                 ["-dim", 2, "-t_final", 0.5, "-target_schemes", "weno5,muscl2", "-target_max_n", 128])
+
+
+def failing_scheme():
+    """LeBlanc without the positivity limiter: enopade6 stops at step 1 (negative density), muscl2 runs. The
+    target run leaves enopade6 out (its failed pilot recorded) and meets the target with muscl2, at 1 and 2 ranks."""
+    deck = os.path.join(ROOT, "inputs", "euler", "extreme_leblanc.yaml")
+    with tempfile.TemporaryDirectory() as tmp:
+        for np_ in (1, 2):
+            out = os.path.join(tmp, f"leblanc_np{np_}.h5")
+            log = run(["-options_file", deck, "-positivity", "false", "-target_error", 2e-2, "-target_schemes",
+                       "enopade6,muscl2", "-output", out, "-quiet"], np_=np_)
+            check("enopade6 left out: its run at N = 32" in log, "the summary names the failed scheme")
+            label, achieved = check_group(out, 2e-2)
+            check(label.startswith("muscl2") and achieved <= 2e-2,
+                  f"{np_} rank(s): chose {label}, achieved {achieved:.3e} <= 2e-2")
+            with h5py.File(out, "r") as f:
+                g = f["model_choice"]
+                failed = [(int(a), int(n)) for a, n, x in zip(g["pilots/family"][:], g["pilots/n"][:],
+                                                               g["pilots/failed"][:]) if x]
+                check(failed == [(0, 32)], f"failed pilots (family, n) {failed}: enopade6's first only")
+                check("invalid rho" in g.attrs["failure_enopade6"] and g.attrs["failure_muscl2"] == "",
+                      "failure attributes")
 
 
 def ranks():

@@ -1,7 +1,7 @@
 // The accuracy-target concept (lib/model_choice) on synthetic data with known answers: the observed order and
 // error constant from three runs (any ratios), the pair estimate, the grid transfer (sixth order on smooth
-// data, no overshoot at a jump), the cost law, the chooser on a family whose runs are exact + A n^-p g(x), and
-// the scoped options of a candidate.
+// data, no overshoot at a jump), the cost law, the chooser on a family whose runs are exact + A n^-p g(x) (and
+// with a family whose pilot or final run fails), and the scoped options of a candidate.
 #include "model_choice/candidate.hpp"
 #include "model_choice/chooser.hpp"
 #include "model_choice/cost_model.hpp"
@@ -112,6 +112,65 @@ TEST(Chooser, PicksTheCheapestMeetingTheTargetAndEstimatesItsError) {
   EXPECT_NEAR(c.finals().back().estimate / (c_true / (double)c.chosen().n), 1.0, 0.02);
   EXPECT_NEAR(c.orders()[0].p, 1.0, 0.02);
   EXPECT_EQ(c.pilots().size(), 3u);
+}
+
+namespace {
+// The runs of the chooser test above: exact + a n^-1 2 cos(3 pi x), cost 1e-6 n^2 (per family: cost factor).
+PetscErrorCode syntheticRun(long long n, double cost_factor, RunResult* r) {
+  r->density = line(n, smooth);
+  for (long long i = 0; i < n; ++i)
+    r->density.values[(size_t)i] += 0.5 / (double)n * 2.0 * std::cos(3 * M_PI * (i + 0.5) / n);
+  r->steps = 2 * n;
+  r->seconds = cost_factor * 1e-6 * (double)n * (double)n;
+  return 0;
+}
+} // namespace
+
+// A family whose run fails (a non-physical state) is left out, whether it fails in its first pilot or in its
+// final run: the other family is chosen and meets the target, the failures are recorded.
+TEST(Chooser, LeavesOutAFamilyWhosePilotFails) {
+  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    if (f.name == "cheap_but_fails") {
+      r->failed = true, r->failure = "invalid rho";
+      return 0;
+    }
+    return syntheticRun(n, 1.0, r);
+  };
+  ChooserSettings s;
+  s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"cheap_but_fails", {}}, {"works", {}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  EXPECT_TRUE(c.met());
+  EXPECT_EQ(c.chosen().family, 1);
+  EXPECT_EQ(c.failures()[0], "N = 32: invalid rho");
+  EXPECT_TRUE(c.failures()[1].empty());
+  ASSERT_GE(c.pilots().size(), 1u);
+  EXPECT_TRUE(c.pilots()[0].failed);
+  for (const RunRecord& r : c.pilots())
+    EXPECT_TRUE(r.family == 1 || r.n == 32); // no further pilot of family 0
+  EXPECT_NE(c.summary().find("cheap_but_fails left out"), std::string::npos);
+}
+
+TEST(Chooser, EscalatesPastAFinalRunThatFails) {
+  // "cheap" is 4x cheaper per run than "dear" with the same errors, so it is chosen first; its final run (above
+  // the pilots' resolutions) fails, and the escalation runs "dear" instead.
+  Runner runner = [&](const Family& f, long long n, RunKind kind, RunResult* r) -> PetscErrorCode {
+    if (f.name == "cheap" && kind == RunKind::final) {
+      r->failed = true, r->failure = "step failed";
+      return 0;
+    }
+    return syntheticRun(n, f.name == "cheap" ? 0.25 : 1.0, r);
+  };
+  ChooserSettings s;
+  s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"cheap", {}}, {"dear", {}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  ASSERT_EQ(c.finals().size(), 2u);
+  EXPECT_TRUE(c.finals()[0].failed);
+  EXPECT_EQ(c.finals()[0].family, 0);
+  EXPECT_EQ(c.chosen().family, 1);
+  EXPECT_TRUE(c.met());
+  EXPECT_LE(0.5 * 4.0 / M_PI / (double)c.chosen().n, 1e-3);
 }
 
 TEST(ScopedOptions, SetsAndRestoresTheOptionsDatabase) {
