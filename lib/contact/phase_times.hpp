@@ -1,7 +1,8 @@
 // Wall time of each phase of the contact steps on this process, summed over the steps (the contact app's
 // -contact_phase_times prints them per rank): how much of a step is the work dealt over ranks (the islands'
 // solves) and how much every rank repeats (collision, matching, integration), and how long a rank waits for
-// the others at the gather. Timing only: nothing of the physics depends on it.
+// the others at the gather. Timing only: nothing of the physics depends on it. With islands off (or with
+// -dump_problems, which solves every island on every rank) nothing is dealt: the solve is the step's rest.
 #pragma once
 
 #include <chrono>
