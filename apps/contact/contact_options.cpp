@@ -177,6 +177,8 @@ PetscErrorCode runOptions(const Reader& r, AppOptions* o) {
   PetscCall(
       r.string("-dump_problems", "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5", &o->dump));
   PetscCall(r.integer("-dump_max", "Most problems dumped", &o->dump_max));
+  PetscCall(r.boolean("-contact_phase_times", "Print each rank's wall time per step phase at the end",
+                      &o->phase_times));
   PetscFunctionReturn(0);
 }
 

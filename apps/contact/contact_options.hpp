@@ -19,6 +19,7 @@ struct AppOptions {
   PetscInt steps = 200, output_every = 10, dump_max = 1000;
   PetscReal overlap_tol = 1e-3;
   std::string output = "contact.h5", dump; // dump: -dump_problems prefix ("": none)
+  bool phase_times = false;                // -contact_phase_times: each rank's time per phase at the end
 };
 
 PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o);

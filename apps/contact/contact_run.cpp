@@ -72,6 +72,7 @@ private:
   PetscErrorCode dumpProblems(PetscInt step);
   PetscErrorCode failed(PetscInt step, const StepStats& st, suite::StepOutcome* out);
   PetscErrorCode autoSummary() const;
+  PetscErrorCode phaseSummary() const;
 
   const suite::RunContext& ctx_;
   const AppOptions& o_;
@@ -147,6 +148,7 @@ PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
   if (sum.stopped) status = "stopped at step " + std::to_string(sum.steps) + " (" + sum.stop_reason + ")";
   if (rec_.frame_step.back() != sum.steps) rec_.frame(bodies_, sum.steps, sum.t);
   PetscCall(autoSummary());
+  PetscCall(phaseSummary());
   PetscCall(writeContactOutput(ctx_, o_.output, o_.scene, o_.step, bodies_, rec_,
                                {status, (long long)o_.steps, (long long)sum.steps}));
   PetscCall(PetscLogStagePop());
@@ -178,6 +180,31 @@ PetscErrorCode ContactStepping::autoSummary() const {
                      "scripts/bench/contact-friction-auto)",
                      o_.step.target_error, rec_.problem_rung.size(), rungs.c_str(), solves, missed, worst,
                      solve_time, step_time));
+  PetscFunctionReturn(0);
+}
+
+// -contact_phase_times: each rank's wall time per step and phase (lib/contact/phase_times.hpp), rank order.
+PetscErrorCode ContactStepping::phaseSummary() const {
+  const suite::contact::PhaseTimes& p = stepper_.phaseTimes();
+  const double n = (double)std::max(1LL, p.steps), ms = 1e3 / n;
+  double steps = 0.0;
+  for (double t : rec_.step_wall) steps += t;
+  int rank = 0;
+  PetscFunctionBeginUser;
+  if (!o_.phase_times) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(ctx_.comm(), &rank));
+  PetscCall(PetscSynchronizedPrintf(
+      ctx_.comm(),
+      "contact phase times, rank %d, ms per step over %lld steps: step %.2f = collision %.2f + match and "
+      "split %.2f + dealing %.2f (own island solves %.2f, %.1f of %.1f islands; waiting and gather %.2f) + "
+      "unpack %.2f + integration %.2f + rest %.2f; CPU ms per step: step %.2f, own island solves %.2f, "
+      "waiting and gather %.2f, busy (step less waiting) %.2f\n",
+      rank, p.steps, ms * steps, ms * p.collision, ms * p.match, ms * p.dealing, ms * p.own_solves,
+      p.own_islands / n, p.islands / n, ms * (p.dealing - p.own_solves), ms * p.unpack, ms * p.integration,
+      ms * (steps - p.collision - p.match - p.dealing - p.unpack - p.integration), ms * p.cpu_steps,
+      ms * p.cpu_own_solves, ms * (p.cpu_dealing - p.cpu_own_solves),
+      ms * (p.cpu_steps - p.cpu_dealing + p.cpu_own_solves)));
+  PetscCall(PetscSynchronizedFlush(ctx_.comm(), PETSC_STDOUT));
   PetscFunctionReturn(0);
 }
 

@@ -9,6 +9,7 @@
 #include "contact/friction_formulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -209,8 +210,10 @@ bool Stepper::solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* 
   std::vector<Vec3> prev;
   std::vector<bool> has_prev;
   std::vector<int> prev_rung;
+  auto t = std::chrono::steady_clock::now();
   matchPreviousImpulses(bodies, &prev, &has_prev, &prev_rung);
   rungs_.assign(contacts_.size(), -1);
+  phases_.match += lap(&t);
   if (o_.islands) return solveIslands(bodies, prev, has_prev, prev_rung, v, w, lam, st);
   const bool ok =
       solveProblem(bodies, {contacts_, prev, has_prev, prev_rung}, v, w, lam, st, &problems_, &solution_);
@@ -261,7 +264,10 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   // balanced / fast: tangent frames from gravity only (never along the slip), so that the carried tangential
   // impulses of a PGS answer, which always slips a little, keep their directions from step to step
   const double slip_eps = o_.accuracy == ContactAccuracy::Exact ? 1e-9 : lcp::kInf;
+  auto t = std::chrono::steady_clock::now();
+  const double cpu0 = threadCpu();
   contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt, slip_eps);
+  phases_.collision += lap(&t);
   const int nc = (int)contacts_.size();
   st.contacts = nc;
   for (const Contact& c : contacts_) st.penetration = std::max(st.penetration, -c.phi);
@@ -272,6 +278,7 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   }
   if (nc == 0) ids_.clear();
   if (nc > 0 && !solveContacts(bodies, &vstar, &wnew, &lam, &st)) return st;
+  lap(&t); // solveContacts timed its phases
   std::vector<Body> next = bodies;
   std::string bad;
   if (!integrate(vstar, wnew, o_.dt, &next, &bad)) {
@@ -287,6 +294,9 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   prev_ids_ = ids_;
   prev_rungs_ = nc > 0 ? rungs_ : std::vector<int>();
   ++steps_done_;
+  phases_.integration += lap(&t);
+  phases_.cpu_steps += threadCpu() - cpu0;
+  ++phases_.steps;
   return st;
 }
 

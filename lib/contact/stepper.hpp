@@ -13,6 +13,7 @@
 #pragma once
 
 #include "contact/collision.hpp"
+#include "contact/phase_times.hpp"
 #include "core/named_choice.hpp"
 #include "lcp/problem.hpp"
 
@@ -189,6 +190,8 @@ public:
   const lcp::Vec& lastSolution() const { return solution_; }
   // How the islands of a step are run (default: in order, on this process).
   void setTaskRunner(TaskRunner runner) { runner_ = std::move(runner); }
+  // Wall time per phase of the steps so far on this process (phase_times.hpp).
+  const PhaseTimes& phaseTimes() const { return phases_; }
   // The time step of the next steps (the app's retry of a failed step at half dt).
   void setDt(double dt);
 
@@ -233,6 +236,7 @@ private:
                     const std::vector<bool>& has_prev, const std::vector<int>& prev_rung,
                     std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st);
   TaskRunner runner_;
+  PhaseTimes phases_;
   StepperOptions o_;
   std::shared_ptr<const FrictionFormulation> form_;
   std::shared_ptr<const AutoFriction> auto_; // -friction auto (form_ is null then)

@@ -9,6 +9,7 @@
 #include "contact/stepper.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace suite::contact {
 
@@ -132,6 +133,7 @@ bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Ve
                            const std::vector<bool>& has_prev, const std::vector<int>& prev_rung,
                            std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam,
                            StepStats* st) {
+  auto t = std::chrono::steady_clock::now();
   const std::vector<Island> islands = splitIslands(bodies, contacts_);
   const int n = (int)islands.size();
   st->islands = n;
@@ -146,8 +148,17 @@ bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Ve
   } else {
     lcp::Vec sol;
     std::vector<lcp::Problem> probs;
-    auto one = [&](int k) { return solveIsland(bodies, islands[k], in, &probs, &sol); };
+    auto one = [&](int k) {
+      auto t0 = std::chrono::steady_clock::now();
+      const double c0 = threadCpu();
+      std::vector<double> r = solveIsland(bodies, islands[k], in, &probs, &sol);
+      phases_.own_solves += lap(&t0), ++phases_.own_islands, phases_.cpu_own_solves += threadCpu() - c0;
+      return r;
+    };
+    phases_.match += lap(&t);
+    const double c0 = threadCpu();
     const std::string err = runner_(n, one, &res);
+    phases_.dealing += lap(&t), phases_.islands += n, phases_.cpu_dealing += threadCpu() - c0;
     if (!err.empty()) return st->failed = true, st->message = "islands: " + err + "; ", false;
   }
   int bad = -1;
@@ -159,6 +170,7 @@ bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Ve
     if (res[k][0] == 0.0 && bad < 0) bad = k;
   }
   if (bad >= 0) failedIsland(bodies, islands, in, bad, res[bad], st);
+  phases_.unpack += lap(&t);
   return bad < 0;
 }
 
