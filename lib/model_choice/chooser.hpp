@@ -2,7 +2,8 @@
 // candidate.hpp) and a target, it
 //   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error constant,
 //      observed_order.hpp; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0, refitting each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
-//      and 32 n0 (at most n_max): with the pilots' timings, the cost model (cost_model.hpp). Families go
+//      and 32 n0 (at most n_max; a timing run predicted to cost more than the family's pilots is left out): with
+//      the pilots' timings, the cost model (cost_model.hpp). Families go
 //      cheapest first (by their n0 pilot); with an error target, a family whose next pilot is predicted to cost
 //      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
 //   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
@@ -110,6 +111,7 @@ private:
   PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
   bool preAsymptotic(size_t f, int k) const;
+  bool timingTooDear(size_t f, long long n) const;
   PetscErrorCode runTimings(const Runner& runner, size_t f);
   bool recordFailure(size_t f, long long n, const RunResult& r, std::vector<RunRecord>* into);
   PetscErrorCode explainAllFailed() const;

@@ -105,13 +105,18 @@ PetscErrorCode CostModel::checkCovers(MPI_Comm comm, const std::vector<std::stri
 }
 
 namespace {
-// The runs of one table (pilots: complete; timings: a few steps) of /model_choice.
-PetscErrorCode readRuns(const suite::H5Input& in, const std::string& table, std::vector<double> cols[4]) {
-  const char* names[4] = {"family", "n", "seconds", "steps"};
+// The runs of one table (pilots: complete; timings: a few steps) of /model_choice; cols[4]: the failed flag
+// (files written before it: none failed).
+PetscErrorCode readRuns(const suite::H5Input& in, const std::string& table, std::vector<double> cols[5]) {
+  const char* names[5] = {"family", "n", "seconds", "steps", "failed"};
   suite::Dims dims;
+  bool has_failed = false;
   PetscFunctionBeginUser;
   for (int c = 0; c < 4; ++c)
     PetscCall(in.readAll("/model_choice/" + table + "/" + names[c], &cols[c], &dims));
+  PetscCall(in.hasObject("/model_choice/" + table + "/failed", &has_failed));
+  if (has_failed) PetscCall(in.readAll("/model_choice/" + table + "/failed", &cols[4], &dims));
+  cols[4].resize(cols[0].size(), 0.0);
   PetscFunctionReturn(0);
 }
 } // namespace
@@ -120,7 +125,7 @@ PetscErrorCode CostModel::load(MPI_Comm comm, const std::string& path) {
   suite::H5Input in;
   bool has = false;
   std::string names;
-  std::vector<double> cols[2][4];
+  std::vector<double> cols[2][5];
   PetscFunctionBeginUser;
   PetscCall(in.open(comm, path));
   PetscCall(in.hasObject("/model_choice/timings/steps", &has));
@@ -135,6 +140,7 @@ PetscErrorCode CostModel::load(MPI_Comm comm, const std::string& path) {
   const std::vector<std::string> list = splitCommaList(names);
   for (int t = 0; t < 2; ++t)
     for (size_t i = 0; i < cols[t][0].size(); ++i) {
+      if (cols[t][4][i] != 0.0) continue; // a failed run: its time says nothing of the family's cost
       const long long f = (long long)cols[t][0][i];
       const double n = cols[t][1][i], sec = cols[t][2][i], steps = cols[t][3][i];
       PetscCheck(f >= 0 && f < (long long)list.size() && n > 0 && std::isfinite(sec) && sec >= 0 &&

@@ -95,13 +95,15 @@ def vortex():
 
 def failing_scheme():
     """LeBlanc without the positivity limiter: enopade6 stops at step 1 (negative density), muscl2 runs. The
-    target run leaves enopade6 out (its failed pilot recorded) and meets the target with muscl2, at 1 and 2 ranks."""
+    target run leaves enopade6 out (its failed pilot recorded) and meets the target with muscl2, at 1 and 2 ranks
+    (the 2-rank run loads its cost model from the 1-rank file, whose failed pilot it must skip)."""
     deck = os.path.join(ROOT, "inputs", "euler", "extreme_leblanc.yaml")
     with tempfile.TemporaryDirectory() as tmp:
         for np_ in (1, 2):
             out = os.path.join(tmp, f"leblanc_np{np_}.h5")
+            cost = ["-cost_model", os.path.join(tmp, "leblanc_np1.h5")] if np_ == 2 else []
             log = run(["-options_file", deck, "-positivity", "false", "-target_error", 2e-2, "-target_schemes",
-                       "enopade6,muscl2", "-output", out, "-quiet"], np_=np_)
+                       "enopade6,muscl2", "-output", out, "-quiet", *cost], np_=np_)
             check("enopade6 left out: its run at N = 32" in log, "the summary names the failed scheme")
             label, achieved = check_group(out, 2e-2)
             check(label.startswith("muscl2") and achieved <= 2e-2,
