@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <map>
 
 namespace suite::model_choice {
 
@@ -143,21 +145,23 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
 }
 
 // Whether a timing run of family f at n is predicted to cost more than the family's pilots together: its
-// kTimingSteps steps at the per-step cost of the family's 4 n0 pilot scaled by (n / 4 n0)^b, b the per-step
-// cost exponent seen between its n0 and 4 n0 pilots. Such a run is left out (the cost law then extrapolates
-// from the pilots and the cheaper timing runs): in 2D / 3D the 3-step run at 32 n0 (512^2) cost 4-7x the
-// pilots of its family, most of a whole target run on the isentropic vortex.
+// kTimingSteps steps at the per-step cost of the family's finest timed run scaled by (n / n_finest)^b, b the
+// per-step cost exponent between its two finest timed runs (pilots and timing runs so far). Such a run is left
+// out (the cost law then extrapolates from the runs made): in 2D / 3D the 3-step run at 32 n0 (512^2) cost 4-7x
+// the pilots of its family, most of a whole target run on the isentropic vortex.
 bool ModelChooser::timingTooDear(size_t f, long long n) const {
-  double pilots = 0.0, per_step[2] = {0.0, 0.0};
-  for (const RunRecord& r : pilots_) {
-    if (r.family != (int)f || r.failed) continue;
-    pilots += r.seconds;
-    if (r.n == set_.n0 || r.n == set_.n0 << 2) per_step[r.n == set_.n0 ? 0 : 1] = r.seconds / (double)r.steps;
-  }
-  if (!(per_step[0] > 0 && per_step[1] > 0)) return false;
-  const double b = std::max(0.0, std::log(per_step[1] / per_step[0]) / std::log(4.0));
-  const double predicted = kTimingSteps * per_step[1] * std::pow((double)n / (double)(set_.n0 << 2), b);
-  return predicted > pilots;
+  double pilots = 0.0;
+  std::map<long long, double> per_step; // by resolution: seconds per step of the family's timed runs
+  for (const RunRecord& r : pilots_)
+    if (r.family == (int)f && !r.failed) pilots += r.seconds, per_step[r.n] = r.seconds / (double)r.steps;
+  for (const RunRecord& r : timings_)
+    if (r.family == (int)f && !r.failed) per_step[r.n] = r.seconds / (double)r.steps;
+  if (per_step.size() < 2) return false;
+  const auto hi = std::prev(per_step.end()), lo = std::prev(hi);
+  if (!(lo->second > 0 && hi->second > 0)) return false;
+  const double b =
+      std::max(0.0, std::log(hi->second / lo->second) / std::log((double)hi->first / (double)lo->first));
+  return kTimingSteps * hi->second * std::pow((double)n / (double)hi->first, b) > pilots;
 }
 
 PetscErrorCode ModelChooser::runTimings(const Runner& runner, size_t f) {
