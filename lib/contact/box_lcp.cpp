@@ -84,7 +84,7 @@ constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, 
 
 // The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
 // by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
-bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double rel_tol, lcp::Vec* next,
+bool sparsePass(const DelassusSystem& sys, double mu, BoxRows& s, double rel_tol, lcp::Vec* next,
                 StepStats* st) {
   const int n = s.nc * s.per;
   lcp::Vec l(n), u(n);
@@ -94,6 +94,8 @@ bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double r
   }
   SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
   p.mass = &sys.mass;
+  if (!s.body) s.body = std::make_shared<BodySpaceSolver>(sys.rows, sys.mass, p.reg); // same reg every pass
+  p.body = s.body.get();
   lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
   SparseSolveStats ss;
   // the sweeps only from a poor start; the answer always from at least one exact solve on its index sets

@@ -52,8 +52,9 @@ bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* 
   sparseResidual(p, *z, &t); // t = A z_N + b (z_F = 0)
   lcp::Vec rhs(F.size());
   for (size_t a = 0; a < F.size(); ++a) rhs[a] = -t[F[a]];
-  if (!(p.mass && bodySpaceSolve(*p.rows, *p.mass, p.reg, F, rhs, &x)) && !rowSpaceSolve(p, F, pos, rhs, &x))
-    return false;
+  const bool body =
+      p.mass && (p.body ? p.body->solve(F, rhs, &x) : bodySpaceSolve(*p.rows, *p.mass, p.reg, F, rhs, &x));
+  if (!body && !rowSpaceSolve(p, F, pos, rhs, &x)) return false;
   for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
   return true;
 }
