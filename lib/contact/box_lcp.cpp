@@ -92,8 +92,7 @@ bool sparsePass(const DelassusSystem& sys, double mu, BoxRows& s, double rel_tol
     const double bound = r % s.per == 0 ? lcp::kInf : mu * s.nu[r / s.per];
     l[r] = r % s.per == 0 ? 0.0 : -bound, u[r] = bound;
   }
-  SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
-  p.mass = &sys.mass;
+  SparseBoxLcp p = makeSparseBoxLcp(sys, l, u);
   if (!s.body) s.body = std::make_shared<BodySpaceSolver>(sys.rows, sys.mass, p.reg); // same reg every pass
   p.body = s.body.get();
   lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
@@ -153,9 +152,7 @@ bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::s
 std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per) {
   const int n = nc * per;
   const lcp::Vec l = lcp::Vec::Constant(n, -lcp::kInf), u = lcp::Vec::Constant(n, lcp::kInf);
-  const SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
-  SparseBoxLcp q = p;
-  q.mass = &sys.mass;
+  const SparseBoxLcp q = makeSparseBoxLcp(sys, l, u);
   lcp::Vec z = lcp::Vec::Zero(n);
   SparseSolveStats st;
   std::vector<double> nu(nc, 0.0);

@@ -23,7 +23,7 @@ namespace suite::contact {
 
 struct SparseBoxLcp {
   const std::vector<JRow>* rows = nullptr;
-  const SpMat* A = nullptr; // the sparse Delassus matrix (regularised diagonal included)
+  const DelassusSystem* sys = nullptr; // its sparse Delassus matrix (regularised diagonal included)
   int nbodies = 0;
   const std::vector<M6>* mass = nullptr; // body mass matrices: free rows solved in body space when given
   BodySpaceSolver* body = nullptr; // with mass: the body-space solver kept across solves (else one each)
@@ -38,9 +38,9 @@ struct SparseBoxLcp {
   double upper(int i, const lcp::Vec& z) const { return link[i] >= 0 ? coef[i] * z[link[i]] : u[i]; }
 };
 
-// A problem with fixed bounds l, u (link -1 everywhere), A_ii's compliance part from diag_scale.
-SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
-                              lcp::Vec l, lcp::Vec u);
+// The problem of the sparse system sys (its rows, b, reg and masses) with fixed bounds l, u (link -1
+// everywhere).
+SparseBoxLcp makeSparseBoxLcp(const DelassusSystem& sys, lcp::Vec l, lcp::Vec u);
 
 // What a sparse solve did.
 struct SparseSolveStats {
