@@ -25,44 +25,63 @@ BodySpaceSolver::BodySpaceSolver(const std::vector<JRow>& rows, const std::vecto
   llt_.analyzePattern(K_);
 }
 
-// K's pattern: the 6 x 6 blocks of every body and of every body pair sharing a row (explicit zeros kept),
-// and the value offsets of each block and of each row's pair blocks.
+// The order of the bodies in K: AMD on the body graph (a body per node, an edge per pair sharing a row).
+void BodySpaceSolver::orderBodies(const std::vector<std::pair<int, int>>& pairs) {
+  const int nb = (int)mass_.size();
+  std::vector<Eigen::Triplet<double>> t;
+  for (int b = 0; b < nb; ++b) t.emplace_back(b, b, 1.0);
+  for (const auto& [a, b] : pairs) t.emplace_back(a, b, 1.0), t.emplace_back(b, a, 1.0);
+  Eigen::SparseMatrix<double> G(nb, nb);
+  G.setFromTriplets(t.begin(), t.end());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inv; // inv.indices()[k]: the k-th body
+  Eigen::AMDOrdering<int>()(G, inv);
+  at_.assign(nb, 0);
+  for (int k = 0; k < nb; ++k) at_[inv.indices()[k]] = 6 * k;
+}
+
+// K's pattern in the body order, upper triangle: the 6 x 6 blocks of every body and the upper block of every
+// body pair sharing a row (explicit zeros kept); the value offsets of each block and each row's pair block.
 void BodySpaceSolver::buildPattern() {
   const int nb = (int)mass_.size();
   std::map<std::pair<int, int>, int> pair_id; // (a, b) -> index among the pairs, a < b
   for (const JRow& J : rows_)
     if (J.ba >= 0 && J.bb >= 0 && J.ba != J.bb) pair_id.emplace(std::minmax(J.ba, J.bb), (int)pair_id.size());
+  std::vector<std::pair<int, int>> pairs(pair_id.size());
+  for (const auto& [ab, k] : pair_id) pairs[k] = ab;
+  orderBodies(pairs);
+  auto upper = [&](std::pair<int, int> ab) { // the pair's block above the diagonal: (row body, column body)
+    return at_[ab.first] < at_[ab.second] ? ab : std::make_pair(ab.second, ab.first);
+  };
   std::vector<Eigen::Triplet<double>> t;
-  auto block = [&t](int a, int b) {
+  auto block = [&](int a, int b) {
     for (int c = 0; c < 6; ++c)
-      for (int r = 0; r < 6; ++r) t.emplace_back(6 * a + r, 6 * b + c, 0.0);
+      for (int r = 0; r < 6; ++r) t.emplace_back(at_[a] + r, at_[b] + c, 0.0);
   };
   for (int b = 0; b < nb; ++b) block(b, b);
-  for (const auto& [ab, k] : pair_id) block(ab.first, ab.second), block(ab.second, ab.first);
+  for (const auto& ab : pairs) block(upper(ab).first, upper(ab).second);
   K_.resize(6 * nb, 6 * nb);
   K_.setFromTriplets(t.begin(), t.end());
-  blocks_.resize(nb + 2 * pair_id.size());
+  blocks_.resize(nb + pairs.size());
   for (int b = 0; b < nb; ++b) blocks_[b] = blockPositions(b, b);
-  for (const auto& [ab, k] : pair_id) {
-    blocks_[nb + 2 * k] = blockPositions(ab.first, ab.second);
-    blocks_[nb + 2 * k + 1] = blockPositions(ab.second, ab.first);
-  }
-  pair_of_.assign(rows_.size(), {-1, -1});
+  for (size_t k = 0; k < pairs.size(); ++k)
+    blocks_[nb + k] = blockPositions(upper(pairs[k]).first, upper(pairs[k]).second);
+  pair_of_.assign(rows_.size(), -1);
+  a_first_.assign(rows_.size(), true);
   for (size_t i = 0; i < rows_.size(); ++i) {
     const JRow& J = rows_[i];
     if (J.ba < 0 || J.bb < 0 || J.ba == J.bb) continue;
-    const int k = nb + 2 * pair_id.at(std::minmax(J.ba, J.bb));
-    pair_of_[i] = J.ba < J.bb ? std::array<int, 2>{k, k + 1} : std::array<int, 2>{k + 1, k};
+    pair_of_[i] = nb + pair_id.at(std::minmax(J.ba, J.bb));
+    a_first_[i] = at_[J.ba] < at_[J.bb];
   }
 }
 
-// Offsets in K's values of the entries (6a, 6b + c), c = 0..5 (the 6 rows of each block column are adjacent).
+// Offsets in K's values of the entries (at(a), at(b) + c), c = 0..5 (a block column's 6 rows are adjacent).
 BodySpaceSolver::Block BodySpaceSolver::blockPositions(int a, int b) const {
   Block pos;
   for (int c = 0; c < 6; ++c) {
-    const int j = 6 * b + c, *idx = K_.innerIndexPtr();
+    const int j = at_[b] + c, *idx = K_.innerIndexPtr();
     pos[c] =
-        (int)(std::lower_bound(idx + K_.outerIndexPtr()[j], idx + K_.outerIndexPtr()[j + 1], 6 * a) - idx);
+        (int)(std::lower_bound(idx + K_.outerIndexPtr()[j], idx + K_.outerIndexPtr()[j + 1], at_[a]) - idx);
   }
   return pos;
 }
@@ -70,6 +89,14 @@ BodySpaceSolver::Block BodySpaceSolver::blockPositions(int a, int b) const {
 void BodySpaceSolver::addBlock(int k, const V6& u, const V6& v, double s) {
   double* val = K_.valuePtr();
   for (int c = 0; c < 6; ++c) Eigen::Map<V6>(val + blocks_[k][c]) += (s * v[c]) * u;
+}
+
+void BodySpaceSolver::addRow(int i, double s) {
+  const JRow& J = rows_[i];
+  if (J.ba >= 0) addBlock(J.ba, J.ja, J.ja, s);
+  if (J.bb >= 0) addBlock(J.bb, J.jb, J.jb, s);
+  if (pair_of_[i] >= 0)
+    a_first_[i] ? addBlock(pair_of_[i], J.ja, J.jb, s) : addBlock(pair_of_[i], J.jb, J.ja, s);
 }
 
 // K(F) = M + J_F^T D_F^-1 J_F assembled into the fixed pattern and factorised (static bodies: identity).
@@ -80,13 +107,7 @@ bool BodySpaceSolver::factor(const std::vector<int>& F) {
     for (int c = 0; c < 6; ++c)
       Eigen::Map<V6>(K_.valuePtr() + blocks_[b][c]) =
           mass_[b].isZero() ? V6(V6::Unit(c)) : V6(mass_[b].col(c));
-  for (int i : F) {
-    const JRow& J = rows_[i];
-    const double s = 1.0 / reg_[i];
-    if (J.ba >= 0) addBlock(J.ba, J.ja, J.ja, s);
-    if (J.bb >= 0) addBlock(J.bb, J.jb, J.jb, s);
-    if (pair_of_[i][0] >= 0) addBlock(pair_of_[i][0], J.ja, J.jb, s), addBlock(pair_of_[i][1], J.jb, J.ja, s);
-  }
+  for (int i : F) addRow(i, 1.0 / reg_[i]);
   llt_.factorize(K_);
   ++factorizations_;
   if (llt_.info() != Eigen::Success) return false;
@@ -100,15 +121,15 @@ lcp::Vec BodySpaceSolver::woodbury(const std::vector<int>& F, const lcp::Vec& rh
   for (size_t a = 0; a < F.size(); ++a) {
     const JRow& J = rows_[F[a]];
     const double s = rhs[a] / reg_[F[a]];
-    if (J.ba >= 0) g.segment<6>(6 * J.ba) += s * J.ja;
-    if (J.bb >= 0) g.segment<6>(6 * J.bb) += s * J.jb;
+    if (J.ba >= 0) g.segment<6>(at_[J.ba]) += s * J.ja;
+    if (J.bb >= 0) g.segment<6>(at_[J.bb]) += s * J.jb;
   }
   const lcp::Vec y = llt_.solve(g);
   for (size_t a = 0; a < F.size(); ++a) {
     const JRow& J = rows_[F[a]];
     double jy = 0.0;
-    if (J.ba >= 0) jy += J.ja.dot(y.segment<6>(6 * J.ba));
-    if (J.bb >= 0) jy += J.jb.dot(y.segment<6>(6 * J.bb));
+    if (J.ba >= 0) jy += J.ja.dot(y.segment<6>(at_[J.ba]));
+    if (J.bb >= 0) jy += J.jb.dot(y.segment<6>(at_[J.bb]));
     out[a] = (rhs[a] - jy) / reg_[F[a]];
   }
   return out;
