@@ -81,8 +81,6 @@ lcp::Problem activeProblem(const lcp::Mat& A, const DelassusSystem& sys, double 
 }
 // Sweeps before the sparse active-set solve of an exact pass, and its factorisation cap.
 constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, kRetryFactorizations = 40;
-// Each pass exact on its index sets (sparse_box_lcp.hpp: ActiveSetStop::consistent).
-constexpr ActiveSetStop kExactStop{true, true};
 
 // The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
 // by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
@@ -103,10 +101,11 @@ bool sparsePass(const DelassusSystem& sys, double mu, BoxRows& s, double rel_tol
   const double poor = 1e-3 * (1.0 + p.b.lpNorm<Eigen::Infinity>());
   if (!(sparseResidual(p, z) <= poor)) freeStart(p, &z, &ss);
   if (!(sparseResidual(p, z) <= poor)) ss.sweeps = pgsSweeps(p, kExactSweeps, 0.0, &z);
-  bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, kExactStop);
+  const ActiveSetStop stop{true, s.consistent};
+  bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, stop);
   if (!ok) { // a second try from a closer start: many more (cheap) sweeps
     ss.sweeps += pgsSweeps(p, kRetrySweeps, 0.0, &z);
-    ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, kExactStop);
+    ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, stop);
   }
   st->iterations += ss.sweeps + ss.factorizations;
   st->pivots += ss.pivots;
