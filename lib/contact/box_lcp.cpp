@@ -101,11 +101,10 @@ bool sparsePass(const DelassusSystem& sys, double mu, BoxRows& s, double rel_tol
   const double poor = 1e-3 * (1.0 + p.b.lpNorm<Eigen::Infinity>());
   if (!(sparseResidual(p, z) <= poor)) freeStart(p, &z, &ss);
   if (!(sparseResidual(p, z) <= poor)) ss.sweeps = pgsSweeps(p, kExactSweeps, 0.0, &z);
-  const ActiveSetStop stop{true, s.consistent};
-  bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, stop);
+  bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, true);
   if (!ok) { // a second try from a closer start: many more (cheap) sweeps
     ss.sweeps += pgsSweeps(p, kRetrySweeps, 0.0, &z);
-    ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, stop);
+    ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, true);
   }
   st->iterations += ss.sweeps + ss.factorizations;
   st->pivots += ss.pivots;

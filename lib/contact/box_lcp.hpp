@@ -21,7 +21,6 @@ struct BoxRows {
   std::vector<double> nu;                // normal-impulse estimate per contact (the bounds are mu nu)
   lcp::Vec full;                         // impulse per row: the warm start before a pass, its answer after it
   std::shared_ptr<BodySpaceSolver> body; // sparse path: the body-space solver of the step, kept across passes
-  bool consistent = true; // sparse path: each pass solved to consistent states (ActiveSetStop::consistent)
 };
 
 // (n, t1, t2) per contact with friction, n alone without.

@@ -68,7 +68,7 @@ void polish(const SparseBoxLcp& p, const StepperOptions& o, int max_fact, lcp::V
     }
   lcp::Vec cand = *z;
   SparseSolveStats ss;
-  const bool solved = activeSetSolve(fixed, max_fact, o.lcp_tol, &cand, &ss, {true, false});
+  const bool solved = activeSetSolve(fixed, max_fact, o.lcp_tol, &cand, &ss, true);
   st->factorizations += ss.factorizations;
   st->pivots += ss.pivots;
   if (solved || sparseResidual(p, cand) < sparseResidual(p, *z)) *z = cand;

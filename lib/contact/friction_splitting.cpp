@@ -7,8 +7,7 @@
 // while nu <- lambda_n), and from the third pass on nu is extrapolated (Aitken) while the passes contract by
 // rho <= 0.5 per pass: an answer is accepted by the same rule, its bounds mu nu within tol of mu lambda_n.
 // After two passes in a row without a new lowest residual (a cycle: the pass map jumps where rows change
-// state) the estimates are damped instead, and the passes solved as before (the first answer within the
-// tolerance).
+// state) the estimates are damped instead.
 #include "contact/box_lcp.hpp"
 
 #include <algorithm>
@@ -130,7 +129,6 @@ bool SplittingFriction::impulses(const ContactStep& step, const DelassusSystem& 
     if (pass > 0 && err <= o_.splitting_tol * (1.0 + nmax)) break;
     if (sys.sparse && pass > 0) {
       update.next(nu, err, pass, &s);
-      s.consistent = !update.damped;
     } else {
       for (int i = 0; i < s.nc; ++i) s.nu[i] = out->lambda[i][0];
     }

@@ -25,22 +25,13 @@ double activeNormInf(const SparseBoxLcp& p, const lcp::Vec& v) {
 
 enum class RowState : signed char { Lower, Upper, Free };
 
-// ActiveSetStop::consistent: a row at a bound whose w pushes it inward by at most this fraction of the
-// acceptance tolerance is consistent there (its residual |w| is within the tolerance).
-constexpr double kDegenerateSlack = 1e-2;
-
-// States read off z - w (as lcp::statesFromSolution); inactive rows at their (zero) bound. A row with z at a
-// bound stays there while w pushes it inward by at most slack (a degenerate row, w ~ 0: read free on round-off
-// it would come back to the bound at the next solve, one more factorisation; its residual |w| <= slack).
-std::vector<RowState> readStates(const SparseBoxLcp& p, const lcp::Vec& z, const lcp::Vec& w, double slack) {
+// States read off z - w (as lcp::statesFromSolution); inactive rows at their (zero) bound.
+std::vector<RowState> readStates(const SparseBoxLcp& p, const lcp::Vec& z, const lcp::Vec& w) {
   std::vector<RowState> s(p.size(), RowState::Lower);
   for (int i = 0; i < p.size(); ++i) {
     if (!p.active(i)) continue;
     const double t = z[i] - w[i];
-    if (z[i] == p.l[i] && w[i] >= -slack) continue;
-    s[i] = t <= p.l[i]                                        ? RowState::Lower
-           : t >= p.u[i] || (z[i] == p.u[i] && w[i] <= slack) ? RowState::Upper
-                                                              : RowState::Free;
+    s[i] = t <= p.l[i] ? RowState::Lower : t >= p.u[i] ? RowState::Upper : RowState::Free;
   }
   return s;
 }
@@ -191,25 +182,21 @@ bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st) {
 }
 
 bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
-                    ActiveSetStop stop) {
+                    bool solve_once) {
   st->tolerance = sparseTolerance(p, rel_tol);
   lcp::Vec w, best = *z;
   st->residual = sparseResidual(p, *z, &w);
-  const double slack = stop.consistent ? kDegenerateSlack * st->tolerance : 0.0;
-  std::vector<RowState> cur = readStates(p, *z, w, slack);
+  std::vector<RowState> cur = readStates(p, *z, w);
   ExchangeRule rule;
-  const bool once = stop.solve_once || stop.consistent;
-  for (int it = 0; it < max_it && (stop.consistent || !(st->residual <= st->tolerance) || (once && it == 0));
-       ++it) {
+  for (int it = 0; it < max_it && (!(st->residual <= st->tolerance) || (solve_once && it == 0)); ++it) {
     lcp::Vec cand(p.size());
     ++st->factorizations;
     if (!solveFree(p, cur, &cand)) break;
     const double r = sparseResidual(p, cand, &w);
     *z = cand;
-    if (r < st->residual || (once && it == 0 && r <= st->tolerance)) st->residual = r, best = cand;
-    const std::vector<RowState> next = readStates(p, cand, w, slack);
+    if (r < st->residual || (solve_once && it == 0 && r <= st->tolerance)) st->residual = r, best = cand;
+    const std::vector<RowState> next = readStates(p, cand, w);
     const long long changed = rule.exchange(next, &cur);
-    if (changed == 0 && stop.consistent && r <= st->tolerance) st->residual = r, best = cand; // exact one
     if (changed == 0) break; // the states of the exact solve are consistent: nothing left to exchange
     st->pivots += changed;
   }

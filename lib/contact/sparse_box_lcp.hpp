@@ -63,23 +63,10 @@ int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* z);
 // factorisation: exact for a structure at rest with every contact pressed and sticking) replaces z when its
 // residual is lower. Returns whether it did.
 bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st);
-// When activeSetSolve stops.
-struct ActiveSetStop {
-  // at least one exact solve even when z already meets the tolerance (its answer then exact to round-off on
-  // the index sets of z)
-  bool solve_once = false;
-  // on until the states read off an exact solve are its own (not only until the tolerance is met), a row at a
-  // bound with w ~ 0 (inward by at most 1e-2 of the tolerance) counted consistent there; that answer is
-  // returned. On a pyramid's redundant contacts an answer merely within the tolerance moves the normal
-  // impulses by more than the splitting tolerance from pass to pass (the passes stall); the consistent one
-  // is exact on its index sets, and the slack keeps degenerate rows (z at the bound, w at round-off) from
-  // flipping between free and bound on round-off.
-  bool consistent = false;
-};
-
-// Active-set Newton from z (fixed bounds only), at most max_it factorisations; z <- the best iterate (see
-// ActiveSetStop). true: residual <= rel_tol (1 + |b|_inf) (st: counts, residual).
+// Active-set Newton from z (fixed bounds only), at most max_it factorisations; z <- the best iterate.
+// true: residual <= rel_tol (1 + |b|_inf) (st: counts, residual). solve_once: at least one exact solve even
+// when z already meets the tolerance (its answer then exact to round-off on the index sets of z).
 bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
-                    ActiveSetStop stop = {});
+                    bool solve_once = false);
 
 } // namespace suite::contact

@@ -1,13 +1,12 @@
 // Unit tests of the exact contact path's speed-ups (issue #19): the body-space solver reused across free sets
 // gives the same answers as a fresh one (its symbolic analysis kept, its last factorisation reused only for
-// the same free set), the deferred sparse Delassus matrix equals the eager one, the active-set solve to
-// consistent states returns an answer exact on its index sets, and the splitting passes of a resting pyramid
-// converge within the pass cap in a bounded number of factorisations.
+// the same free set), the deferred sparse Delassus matrix equals the eager one, and the splitting passes of
+// a resting pyramid (fixed-point residual, Aitken extrapolation, damping after a stall) converge within the
+// pass cap in a bounded number of factorisations.
 #include "contact/body_space_solve.hpp"
 #include "contact/box_lcp.hpp"
 #include "contact/delassus.hpp"
 #include "contact/scenes.hpp"
-#include "contact/sparse_box_lcp.hpp"
 #include "contact/stepper.hpp"
 
 #include <gtest/gtest.h>
@@ -86,45 +85,6 @@ TEST(ContactExactSolve, DeferredSparseMatrixEqualsEager) {
   }
 }
 
-TEST(ContactExactSolve, ConsistentActiveSetIsExactOnItsIndexSets) {
-  const auto b = pyramid(6);
-  const DelassusSystem s = system(b, StepperOptions{}, true);
-  const int n = (int)s.b.size();
-  // the sticking answer (every row free), then a friction box of mu = 0.3 about its normal impulses, which
-  // some tangent rows reach
-  Vec z = Vec::Zero(n), w, l = Vec::Constant(n, -suite::lcp::kInf), u = Vec::Constant(n, suite::lcp::kInf);
-  SparseSolveStats st;
-  ASSERT_TRUE(freeStart(makeSparseBoxLcp(s, l, u), &z, &st));
-  for (int r = 0; r < n; ++r) {
-    const double bound = r % 3 == 0 ? suite::lcp::kInf : 0.3 * std::max(0.0, z[r - r % 3]);
-    l[r] = r % 3 == 0 ? 0.0 : -bound, u[r] = bound;
-  }
-  SparseBoxLcp p = makeSparseBoxLcp(s, l, u);
-  BodySpaceSolver body(s.rows, s.mass, s.reg);
-  p.body = &body;
-  z = z.cwiseMax(l).cwiseMin(u);
-  const bool solved = activeSetSolve(p, 40, 1e-8, &z, &st, {true, true});
-  ASSERT_TRUE(solved);
-  sparseResidual(p, z, &w);
-  int at_bound = 0;
-  double free_w = 0.0, inward = 0.0;
-  for (int i = 0; i < n; ++i) {
-    if (!p.active(i)) continue;
-    if (z[i] == l[i] || z[i] == u[i]) {
-      ++at_bound;
-      inward = std::max(inward, z[i] == l[i] ? -w[i] : w[i]);
-    } else {
-      free_w = std::max(free_w, std::abs(w[i]));
-    }
-  }
-  std::printf("pyramid 6: %d rows, %d at a bound, %d factorisations; free rows max|w| %.1e, rows at a bound "
-              "pushed inward by at most %.1e (tolerance %.1e)\n",
-              n, at_bound, st.factorizations, free_w, inward, st.tolerance);
-  EXPECT_GT(at_bound, 0);
-  EXPECT_LE(free_w, 1e-6 * st.tolerance); // free rows: w = 0 to round-off
-  EXPECT_LE(inward, 1e-2 * st.tolerance); // at a bound: w of the right sign, or ~0 (degenerate)
-}
-
 TEST(ContactExactSolve, RestingPyramidPassesConvergeWithinTheCap) {
   auto b = pyramid(8); // 36 boxes, 768 rows: the sparse path
   const auto b0 = b;
@@ -145,5 +105,5 @@ TEST(ContactExactSolve, RestingPyramidPassesConvergeWithinTheCap) {
               factorizations / 99.0, max_passes, drift);
   EXPECT_LT(max_passes, o.splitting_max_it); // every step's passes converged, none stopped by the cap
   EXPECT_LE(drift, 1e-6);
-  EXPECT_LE(factorizations, 12 * 99); // measured 10.3 (14.2 before the consistent passes and Aitken)
+  EXPECT_LE(factorizations, 12 * 99); // measured 11.05 (14.19 on main at 06b88ad)
 }
