@@ -4,9 +4,10 @@
 // so that the factorised matrix K = M + J_F^T D_F^-1 J_F has the size 6 x bodies, whatever the number of
 // contact rows, and the sparsity of the body graph (6 x 6 blocks of the bodies sharing a free row): a resting
 // pyramid of 55 boxes factorises a 330-row K instead of a 1,200-row A_FF. The answer is refined on A_FF
-// (matrix-free products) until its residual is at round-off (16 eps |r|) or stops falling, at most 4 times. This is the compliant-constraint form of
-// the Schur complement (Lacoursiere, "Ghosts and machines", PhD thesis, Umea 2007, ch. 5; Servin et al.,
-// "Interactive simulation of elastic deformable materials", SIGRAD 2006, for the Woodbury step).
+// (matrix-free products) until its residual is at round-off (16 eps |r|) or stops falling, at most 4 times.
+// This is the compliant-constraint form of the Schur complement (Lacoursiere, "Ghosts and machines", PhD
+// thesis, Umea 2007, ch. 5; Servin et al., "Interactive simulation of elastic deformable materials", SIGRAD
+// 2006, for the Woodbury step).
 // BodySpaceSolver keeps one factorisation for the many free sets F of one problem (the active-set iterations
 // and the splitting passes of a step): the pattern of K over every row (the 6 x 6 blocks of each body and of
 // each body pair sharing a row) is ordered once, by AMD on the body graph (Amestoy, Davis & Duff, SIAM J.

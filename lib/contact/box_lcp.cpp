@@ -84,8 +84,9 @@ constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, 
 
 // The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
 // by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
-bool sparsePass(const DelassusSystem& sys, double mu, BoxRows& s, double rel_tol, lcp::Vec* next,
+bool sparsePass(const DelassusSystem& sys, double mu, BoxRows* sp, double rel_tol, lcp::Vec* next,
                 StepStats* st) {
+  BoxRows& s = *sp; // s.body: created by the step's first pass, kept by the next ones
   const int n = s.nc * s.per;
   lcp::Vec l(n), u(n);
   for (int r = 0; r < n; ++r) {
@@ -138,7 +139,7 @@ bool densePass(const DelassusSystem& sys, double mu, const std::vector<std::stri
 bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,
                   ChainSolve& solver, BoxRows* s, double* err, double* nmax, StepStats* st) {
   lcp::Vec next;
-  const bool sparse_ok = sys.sparse && sparsePass(sys, mu, *s, solver.options().lcp_tol, &next, st);
+  const bool sparse_ok = sys.sparse && sparsePass(sys, mu, s, solver.options().lcp_tol, &next, st);
   if (!sparse_ok && !densePass(sys, mu, chain, *s, solver, &next, st)) return false;
   *err = 0.0, *nmax = 0.0;
   for (int i = 0; i < s->nc; ++i) {
