@@ -4,19 +4,65 @@
 // so that the factorised matrix K = M + J_F^T D_F^-1 J_F has the size 6 x bodies, whatever the number of
 // contact rows, and the sparsity of the body graph (6 x 6 blocks of the bodies sharing a free row): a resting
 // pyramid of 55 boxes factorises a 330-row K instead of a 1,200-row A_FF. The answer is refined on A_FF
-// (matrix-free products) until it stops improving, at most 4 times. This is the compliant-constraint form of
-// the Schur complement (Lacoursiere, "Ghosts and machines", PhD thesis, Umea 2007, ch. 5; Servin et al.,
-// "Interactive simulation of elastic deformable materials", SIGRAD 2006, for the Woodbury step).
+// (matrix-free products) until its residual is at round-off (16 eps |r|) or stops falling, at most 4 times.
+// This is the compliant-constraint form of the Schur complement (Lacoursiere, "Ghosts and machines", PhD
+// thesis, Umea 2007, ch. 5; Servin et al., "Interactive simulation of elastic deformable materials", SIGRAD
+// 2006, for the Woodbury step).
+// BodySpaceSolver keeps one factorisation for the many free sets F of one problem (the active-set iterations
+// and the splitting passes of a step): the pattern of K over every row (the 6 x 6 blocks of each body and of
+// each body pair sharing a row) is ordered once, by AMD on the body graph (Amestoy, Davis & Duff, SIAM J.
+// Matrix Anal. Appl. 17 (1996); the 6 unknowns of a body kept together, K built in that order, upper
+// triangle only, so that the factorisation reads it in place) and analysed once (elimination tree, column
+// counts), so that each new F costs the numeric factorisation only, its values added straight into K's
+// value array at the rows' block positions (Davis, "Direct methods for sparse linear systems", SIAM 2006,
+// ch. 4: the symbolic analysis depends on the pattern alone); a solve with the F of the last factorisation
+// reuses it as is.
 #pragma once
 
 #include "contact/delassus.hpp"
 
+#include <Eigen/SparseCholesky>
+
+#include <array>
 #include <vector>
 
 namespace suite::contact {
 
 // Body mass matrices diag(m I, I_world) (zero for static bodies).
 std::vector<M6> bodyMassMatrices(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i);
+
+class BodySpaceSolver {
+public:
+  // rows, mass: referenced (they must outlive the solver); reg: D per row of A.
+  BodySpaceSolver(const std::vector<JRow>& rows, const std::vector<M6>& mass, lcp::Vec reg);
+  // x = A_FF^-1 r (r, x indexed like F, F increasing); false as bodySpaceSolve.
+  bool solve(const std::vector<int>& F, const lcp::Vec& r, lcp::Vec* x);
+  int factorizations() const { return factorizations_; } // numeric factorisations so far
+  int solves() const { return solves_; }
+
+private:
+  using Block = std::array<int, 6>; // value offsets of the block's columns (its first row in each)
+  bool factor(const std::vector<int>& F);
+  void orderBodies(const std::vector<std::pair<int, int>>& pairs);
+  void buildPattern();
+  Block blockPositions(int a, int b) const;
+  void addBlock(int k, const V6& u, const V6& v, double s); // block k += s u v^T
+  void addRow(int i, double s);                             // K += s J_i^T J_i (upper triangle)
+  lcp::Vec woodbury(const std::vector<int>& F, const lcp::Vec& rhs) const;
+  lcp::Vec applyFree(const std::vector<int>& F, const lcp::Vec& x) const;
+  const std::vector<JRow>& rows_;
+  const std::vector<M6>& mass_;
+  const lcp::Vec reg_;
+  Eigen::SparseMatrix<double> K_;
+  std::vector<int> at_;       // first unknown of each body in K (6 x its place in the order)
+  std::vector<Block> blocks_; // diagonal blocks 0..bodies-1, then the upper block of each pair
+  std::vector<int> pair_of_;  // per row: its pair block, -1 without a pair
+  std::vector<bool> a_first_; // per row: body ba comes before bb in the order
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>> llt_;
+  std::vector<int> F_; // the free set of the current factorisation
+  bool ok_ = false;    // the current factorisation holds K(F_)
+  int factorizations_ = 0, solves_ = 0;
+};
 
 // x = A_FF^-1 r for the rows F (r, x indexed like F); reg: D per row of A. false: some D_i <= 0, or K not
 // positive definite (the caller uses the row-space factorisation).

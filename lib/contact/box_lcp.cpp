@@ -84,16 +84,18 @@ constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, 
 
 // The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
 // by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
-bool sparsePass(const DelassusSystem& sys, double mu, const BoxRows& s, double rel_tol, lcp::Vec* next,
+bool sparsePass(const DelassusSystem& sys, double mu, BoxRows* sp, double rel_tol, lcp::Vec* next,
                 StepStats* st) {
+  BoxRows& s = *sp; // s.body: created by the step's first pass, kept by the next ones
   const int n = s.nc * s.per;
   lcp::Vec l(n), u(n);
   for (int r = 0; r < n; ++r) {
     const double bound = r % s.per == 0 ? lcp::kInf : mu * s.nu[r / s.per];
     l[r] = r % s.per == 0 ? 0.0 : -bound, u[r] = bound;
   }
-  SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
-  p.mass = &sys.mass;
+  SparseBoxLcp p = makeSparseBoxLcp(sys, l, u);
+  if (!s.body) s.body = std::make_shared<BodySpaceSolver>(sys.rows, sys.mass, p.reg); // same reg every pass
+  p.body = s.body.get();
   lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
   SparseSolveStats ss;
   // the sweeps only from a poor start; the answer always from at least one exact solve on its index sets
@@ -137,7 +139,7 @@ bool densePass(const DelassusSystem& sys, double mu, const std::vector<std::stri
 bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,
                   ChainSolve& solver, BoxRows* s, double* err, double* nmax, StepStats* st) {
   lcp::Vec next;
-  const bool sparse_ok = sys.sparse && sparsePass(sys, mu, *s, solver.options().lcp_tol, &next, st);
+  const bool sparse_ok = sys.sparse && sparsePass(sys, mu, s, solver.options().lcp_tol, &next, st);
   if (!sparse_ok && !densePass(sys, mu, chain, *s, solver, &next, st)) return false;
   *err = 0.0, *nmax = 0.0;
   for (int i = 0; i < s->nc; ++i) {
@@ -151,9 +153,7 @@ bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::s
 std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per) {
   const int n = nc * per;
   const lcp::Vec l = lcp::Vec::Constant(n, -lcp::kInf), u = lcp::Vec::Constant(n, lcp::kInf);
-  const SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
-  SparseBoxLcp q = p;
-  q.mass = &sys.mass;
+  const SparseBoxLcp q = makeSparseBoxLcp(sys, l, u);
   lcp::Vec z = lcp::Vec::Zero(n);
   SparseSolveStats st;
   std::vector<double> nu(nc, 0.0);

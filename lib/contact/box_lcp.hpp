@@ -7,16 +7,20 @@
 
 #include "contact/friction_formulation.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace suite::contact {
 
+class BodySpaceSolver;
+
 // The impulses of every row and the estimates of one box-LCP formulation in a step.
 struct BoxRows {
-  int nc = 0, per = 1;    // contacts, rows per contact (3 with friction, 1 without)
-  std::vector<double> nu; // normal-impulse estimate per contact (the bounds are mu nu)
-  lcp::Vec full;          // impulse per row: the warm start before a pass, its answer after it
+  int nc = 0, per = 1;                   // contacts, rows per contact (3 with friction, 1 without)
+  std::vector<double> nu;                // normal-impulse estimate per contact (the bounds are mu nu)
+  lcp::Vec full;                         // impulse per row: the warm start before a pass, its answer after it
+  std::shared_ptr<BodySpaceSolver> body; // sparse path: the body-space solver of the step, kept across passes
 };
 
 // (n, t1, t2) per contact with friction, n alone without.

@@ -79,8 +79,7 @@ bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const St
                     Impulses* out, StepStats* st) {
   const int nc = (int)step.contacts.size(), n = (int)sys.rows.size(), per = nc ? n / nc : 1;
   lcp::Vec l = lcp::Vec::Zero(n), u = lcp::Vec::Constant(n, lcp::kInf);
-  SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
-  p.mass = &sys.mass;
+  SparseBoxLcp p = makeSparseBoxLcp(sys, l, u);
   if (per == 3) setBounds(step, o, per, &p);
   p.order = heightOrder(step.contacts, o.gravity, per);
   p.symmetric = true; // up the stack (support) and down (weight) in turn

@@ -52,7 +52,8 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
 
 DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
                              const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
-                             const std::vector<ConstraintRow>& rows, const StepperOptions& o, bool sparse) {
+                             const std::vector<ConstraintRow>& rows, const StepperOptions& o, bool sparse,
+                             bool defer_S) {
   DelassusSystem s;
   s.sparse = sparse;
   s.nbodies = (int)bodies.size();
@@ -79,7 +80,15 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
   std::vector<double> scale(n);
   for (int r = 0; r < n; ++r) scale[r] = rows[r].normal ? o.regularisation : o.regularisation_t;
   if (sparse) {
-    s.S = sparseDelassus(s.rows, s.nbodies, scale);
+    s.reg.resize(n);
+    for (int r = 0; r < n; ++r) { // as A_ii - (J M^-1 J^T)_ii from S (the same rounding)
+      const JRow& J = s.rows[r];
+      const double d = (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
+      s.reg[r] = d * (1.0 + scale[r]) - d;
+    }
+    s.scale = std::move(scale);
+    s.S_deferred = defer_S;
+    if (!defer_S) s.S = sparseDelassus(s.rows, s.nbodies, s.scale);
     s.mass = bodyMassMatrices(bodies, inv_i);
     return s;
   }
@@ -88,8 +97,13 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
   return s;
 }
 
+const SpMat& sparseMatrix(const DelassusSystem& sys) {
+  if (sys.S_deferred) sys.S = sparseDelassus(sys.rows, sys.nbodies, sys.scale), sys.S_deferred = false;
+  return sys.S;
+}
+
 lcp::Mat denseDelassus(const DelassusSystem& sys) {
-  return sys.sparse ? lcp::Mat(sys.S) : sys.A;
+  return sys.sparse ? lcp::Mat(sparseMatrix(sys)) : sys.A;
 }
 
 void applyImpulses(const DelassusSystem& sys, const lcp::Vec& z, std::vector<Vec3>* v, std::vector<Vec3>* w) {

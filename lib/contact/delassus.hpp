@@ -35,25 +35,34 @@ struct JRow {
 using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 using M6 = Eigen::Matrix<double, 6, 6>;
 
-// A dense (sparse false) or sparse in S (delassus_sparse.hpp; A left empty, denseDelassus() forms it).
+// A dense (sparse false) or sparse in S (delassus_sparse.hpp; A left empty, denseDelassus() forms it). A
+// deferred S is built by sparseMatrix() on first use (the body-space solves of the exact path need only the
+// rows, the masses and reg).
 struct DelassusSystem {
   std::vector<JRow> rows;
   lcp::Mat A;
   lcp::Vec b;
   bool sparse = false;
-  SpMat S;
+  mutable SpMat S;
+  mutable bool S_deferred = false;
   int nbodies = 0;
-  std::vector<M6> mass; // sparse: the body mass matrices diag(m I, I_world) (zero for static bodies)
+  std::vector<M6> mass;      // sparse: the body mass matrices diag(m I, I_world) (zero for static bodies)
+  lcp::Vec reg;              // sparse: the compliance part of A_ii, A_ii - (J M^-1 J^T)_ii, per row
+  std::vector<double> scale; // sparse: A_ii = (1 + scale_i) (J M^-1 J^T)_ii
 };
 
 // inv_i: world inverse inertia per body (0 for static ones); vstar: velocities after the external forces.
 DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
                              const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
                              const std::vector<ConstraintRow>& rows, const StepperOptions& o);
-// sparse: build S instead of A (the dense A only below the crossover, see StepperOptions::dense_max_rows).
+// sparse: build S instead of A (the dense A only below the crossover, see StepperOptions::dense_max_rows);
+// defer_S: S left to sparseMatrix().
 DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
                              const std::vector<Vec3>& vstar, const std::vector<Contact>& cs,
-                             const std::vector<ConstraintRow>& rows, const StepperOptions& o, bool sparse);
+                             const std::vector<ConstraintRow>& rows, const StepperOptions& o, bool sparse,
+                             bool defer_S = false);
+// The sparse A of a sparse sys: sys.S, built here on the first call when deferred.
+const SpMat& sparseMatrix(const DelassusSystem& sys);
 // The dense A of sys (sys.A, or formed from sys.S).
 lcp::Mat denseDelassus(const DelassusSystem& sys);
 // v += M^-1 J^T z, w += (M^-1 J^T z) angular part, over the rows of sys (z: one impulse per row).

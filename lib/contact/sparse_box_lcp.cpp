@@ -52,8 +52,9 @@ bool solveFree(const SparseBoxLcp& p, const std::vector<RowState>& s, lcp::Vec* 
   sparseResidual(p, *z, &t); // t = A z_N + b (z_F = 0)
   lcp::Vec rhs(F.size());
   for (size_t a = 0; a < F.size(); ++a) rhs[a] = -t[F[a]];
-  if (!(p.mass && bodySpaceSolve(*p.rows, *p.mass, p.reg, F, rhs, &x)) && !rowSpaceSolve(p, F, pos, rhs, &x))
-    return false;
+  const bool body =
+      p.mass && (p.body ? p.body->solve(F, rhs, &x) : bodySpaceSolve(*p.rows, *p.mass, p.reg, F, rhs, &x));
+  if (!body && !rowSpaceSolve(p, F, pos, rhs, &x)) return false;
   for (size_t a = 0; a < F.size(); ++a) (*z)[F[a]] = x[a];
   return true;
 }
@@ -63,7 +64,7 @@ bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::
                    const lcp::Vec& rhs, lcp::Vec* xp) {
   std::vector<Eigen::Triplet<double>> trip;
   for (size_t a = 0; a < F.size(); ++a) {
-    for (SpMat::InnerIterator it(*p.A, F[a]); it; ++it)
+    for (SpMat::InnerIterator it(sparseMatrix(*p.sys), F[a]); it; ++it)
       if (pos[it.col()] >= 0) trip.emplace_back((int)a, pos[it.col()], it.value());
   }
   Eigen::SparseMatrix<double> K(F.size(), F.size());
@@ -102,15 +103,14 @@ struct ExchangeRule {
 };
 } // namespace
 
-SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
-                              lcp::Vec l, lcp::Vec u) {
+SparseBoxLcp makeSparseBoxLcp(const DelassusSystem& sys, lcp::Vec l, lcp::Vec u) {
   SparseBoxLcp p;
-  p.rows = &rows;
-  p.A = &A;
-  p.nbodies = nbodies;
-  p.b = std::move(b), p.l = std::move(l), p.u = std::move(u);
-  p.reg.resize(p.size());
-  for (int i = 0; i < p.size(); ++i) p.reg[i] = A.coeff(i, i) - bareDiagonal(rows[i]);
+  p.rows = &sys.rows;
+  p.sys = &sys;
+  p.nbodies = sys.nbodies;
+  p.b = sys.b, p.l = std::move(l), p.u = std::move(u);
+  p.reg = sys.reg;
+  p.mass = &sys.mass;
   p.link.assign(p.size(), -1);
   p.coef.assign(p.size(), 0.0);
   return p;

@@ -9,11 +9,13 @@
 //   activeSet   active-set Newton (block principal pivoting without the Murty backup; Judice & Pires,
 //               Comput. Oper. Res. 21 (1994)) from the states read off z - w: the free rows solved with a
 //               body-space factorisation (body_space_solve.hpp) when the compliance is positive and the
-//               masses are given, else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
+//               masses are given (by BodySpaceSolver when given one: its symbolic analysis and its last
+//               factorisation reused), else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
 // The residual is the natural-map residual of lcp/problem.hpp, so an answer is accepted by the same rule as
 // the dense chain's.
 #pragma once
 
+#include "contact/body_space_solve.hpp"
 #include "contact/collision.hpp"
 #include "contact/delassus_sparse.hpp"
 
@@ -21,10 +23,11 @@ namespace suite::contact {
 
 struct SparseBoxLcp {
   const std::vector<JRow>* rows = nullptr;
-  const SpMat* A = nullptr; // the sparse Delassus matrix (regularised diagonal included)
+  const DelassusSystem* sys = nullptr; // its sparse Delassus matrix (regularised diagonal included)
   int nbodies = 0;
   const std::vector<M6>* mass = nullptr; // body mass matrices: free rows solved in body space when given
-  lcp::Vec b, l, u, reg;                 // reg: the compliance part of A_ii (A_ii - (J M^-1 J^T)_ii)
+  BodySpaceSolver* body = nullptr; // with mass: the body-space solver kept across solves (else one each)
+  lcp::Vec b, l, u, reg;           // reg: the compliance part of A_ii (A_ii - (J M^-1 J^T)_ii)
   std::vector<int> link; // coupled bounds: row link[i] >= 0 gives |z_i| <= coef[i] z_link (else l, u)
   std::vector<double> coef;
   std::vector<int> order; // PGS row order (empty: 0..n-1)
@@ -35,9 +38,9 @@ struct SparseBoxLcp {
   double upper(int i, const lcp::Vec& z) const { return link[i] >= 0 ? coef[i] * z[link[i]] : u[i]; }
 };
 
-// A problem with fixed bounds l, u (link -1 everywhere), A_ii's compliance part from diag_scale.
-SparseBoxLcp makeSparseBoxLcp(const std::vector<JRow>& rows, const SpMat& A, int nbodies, lcp::Vec b,
-                              lcp::Vec l, lcp::Vec u);
+// The problem of the sparse system sys (its rows, b, reg and masses) with fixed bounds l, u (link -1
+// everywhere).
+SparseBoxLcp makeSparseBoxLcp(const DelassusSystem& sys, lcp::Vec l, lcp::Vec u);
 
 // What a sparse solve did.
 struct SparseSolveStats {

@@ -241,7 +241,7 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   const bool exact = o.accuracy == ContactAccuracy::Exact;
   const bool sparse =
       o.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o.dense_max_rows);
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, o, sparse);
+  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, o, sparse, true);
   const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
   if (!exact) {
