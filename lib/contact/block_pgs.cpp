@@ -1,0 +1,136 @@
+// Block projected Gauss-Seidel over contact manifolds (see block_pgs.hpp).
+#include "contact/block_pgs.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <map>
+
+namespace suite::contact {
+
+namespace {
+// Fixed-capacity storage (no allocation per block update): a box-box manifold has at most 8 points.
+constexpr int kMax = 16;
+using MatX = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, kMax>;
+using VecX = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMax, 1>;
+
+// (J M^-1 J^T)_ij of two rows: the bodies they share.
+double coupling(const JRow& i, const JRow& j) {
+  double s = 0.0;
+  if (i.ba >= 0 && i.ba == j.ba) s += i.ja.dot(j.ma);
+  if (i.ba >= 0 && i.ba == j.bb) s += i.ja.dot(j.mb);
+  if (i.bb >= 0 && i.bb == j.ba) s += i.jb.dot(j.ma);
+  if (i.bb >= 0 && i.bb == j.bb) s += i.jb.dot(j.mb);
+  return s;
+}
+
+// Proximal weight of a block update (relative to D's diagonal): the corners' rows are nearly dependent (D
+// singular up to the 1e-6 / 1e-8 compliance), so the plain block answer can carry large self-equilibrated
+// parts; (D + P) x = P z0 - q has the same fixed point (x = z0 where D z0 + q = 0) and stays near z0.
+// Measured on the base-10 pyramid (fast mode): 1e-4 .. 1e-1 all stand, 1e-2 the least work.
+constexpr double kProx = 1e-2;
+// One group of rows solved together: D (regularised), its LDL^T.
+struct Block {
+  std::vector<int> rows;
+  MatX D, Dp; // Dp = D + diag(prox): the proximal term
+  VecX prox;
+  Eigen::LDLT<MatX> ldlt;
+  void build(const SparseBoxLcp& p) {
+    const int m = (int)rows.size();
+    D.resize(m, m);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b)
+        D(a, b) = coupling((*p.rows)[rows[a]], (*p.rows)[rows[b]]) + (a == b ? p.reg[rows[a]] : 0.0);
+    prox = kProx * D.diagonal();
+    Dp = D;
+    Dp.diagonal() += prox;
+    ldlt.compute(Dp);
+  }
+};
+
+struct Manifold {
+  Block normal, tangent;
+};
+
+// Inner PGS iterations of a block whose proximal answer leaves its bounds (the outer sweeps go on from there):
+// 2 and 5 stand the same, 20 costs twice the time (base-10 pyramid, fast mode).
+constexpr int kInner = 2;
+
+// The block's rows to the solution of its box LCP with the other rows fixed; u and z updated. Returns max |dz|.
+double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
+  const int m = (int)blk.rows.size();
+  if (m == 0) return 0.0;
+  VecX z0(m), q(m), lo(m), hi(m);
+  for (int a = 0; a < m; ++a) {
+    const int r = blk.rows[a];
+    z0[a] = (*z)[r];
+    lo[a] = p.lower(r, *z), hi[a] = p.upper(r, *z);
+    q[a] = rowVelocity((*p.rows)[r], *u) + p.reg[r] * z0[a] + p.b[r]; // w at z0
+  }
+  q -= blk.D * z0; // w = D z + q on the block
+  const VecX r =
+      blk.prox.cwiseProduct(z0) - q; // proximal step: (D + P) x = P z0 - q, fixed point D x + q = 0
+  VecX x = blk.ldlt.solve(r);
+  bool inside = x.allFinite();
+  for (int a = 0; inside && a < m; ++a) inside = x[a] >= lo[a] && x[a] <= hi[a];
+  if (!inside) {
+    x = z0.cwiseMax(lo).cwiseMin(hi);
+    for (int it = 0; it < kInner; ++it)
+      for (int a = 0; a < m; ++a)
+        if (blk.Dp(a, a) > 0)
+          x[a] = std::clamp(x[a] - (blk.Dp.row(a).dot(x) - r[a]) / blk.Dp(a, a), lo[a], hi[a]);
+  }
+  double change = 0.0;
+  for (int a = 0; a < m; ++a) {
+    const double dz = x[a] - z0[a];
+    if (dz == 0.0) continue;
+    addRowImpulse((*p.rows)[blk.rows[a]], dz, u);
+    (*z)[blk.rows[a]] = x[a];
+    change = std::max(change, std::abs(dz));
+  }
+  return change;
+}
+
+// The manifolds of cs (contacts grouped by body pair) in the order of p.order; active rows only.
+std::vector<Manifold> manifolds(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per) {
+  std::map<std::pair<int, int>, int> index;
+  std::vector<Manifold> out;
+  std::vector<int> order = p.order;
+  if (order.empty())
+    for (int i = 0; i < p.size(); ++i) order.push_back(i);
+  for (int r : order) {
+    if (r % per != 0) continue; // one visit per contact, at its normal row
+    const int c = r / per;
+    const auto [it, fresh] = index.try_emplace({cs[c].a, cs[c].b}, (int)out.size());
+    if (fresh) out.emplace_back();
+    if ((int)out[it->second].tangent.rows.size() + per >
+        kMax) { // an oversized manifold goes on in a new block
+      index[{cs[c].a, cs[c].b}] = (int)out.size();
+      out.emplace_back();
+    }
+    Manifold& cur = out[index[{cs[c].a, cs[c].b}]];
+    for (int k = 0; k < per; ++k)
+      if (p.active(c * per + k)) (k == 0 ? cur.normal : cur.tangent).rows.push_back(c * per + k);
+  }
+  for (Manifold& mf : out) mf.normal.build(p), mf.tangent.build(p);
+  return out;
+}
+} // namespace
+
+int blockPgsSweeps(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, int max_sweeps, double tol,
+                   lcp::Vec* z) {
+  const std::vector<Manifold> mfs = manifolds(p, cs, per);
+  V6s u = bodyImpulseVelocities(*p.rows, *z, p.nbodies);
+  const int n = (int)mfs.size();
+  int sweep = 0;
+  for (double change = lcp::kInf; sweep < max_sweeps && !(change <= tol); ++sweep) {
+    change = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const Manifold& mf = mfs[p.symmetric && sweep % 2 ? n - 1 - k : k];
+      change = std::max(change, solveBlock(p, mf.normal, &u, z));
+      change = std::max(change, solveBlock(p, mf.tangent, &u, z));
+    }
+  }
+  return sweep;
+}
+
+} // namespace suite::contact
