@@ -31,9 +31,8 @@ constexpr double kProx = 1e-2;
 // One group of rows solved together: D (regularised), its LDL^T.
 struct Block {
   std::vector<int> rows;
-  MatX D, Dp; // Dp = D + diag(prox): the proximal term
+  MatX D, Dp, Dpinv; // Dp = D + diag(prox): the proximal term
   VecX prox;
-  Eigen::LDLT<MatX> ldlt;
   void build(const SparseBoxLcp& p) {
     const int m = (int)rows.size();
     D.resize(m, m);
@@ -43,7 +42,7 @@ struct Block {
     prox = kProx * D.diagonal();
     Dp = D;
     Dp.diagonal() += prox;
-    ldlt.compute(Dp);
+    Dpinv = Dp.ldlt().solve(MatX::Identity(m, m)); // m <= kMax: applied many times per step
   }
 };
 
@@ -59,20 +58,19 @@ constexpr int kInner = 2;
 double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
   const int m = (int)blk.rows.size();
   if (m == 0) return 0.0;
-  VecX z0(m), q(m), lo(m), hi(m);
+  VecX z0(m), w(m), lo(m), hi(m);
   for (int a = 0; a < m; ++a) {
     const int r = blk.rows[a];
     z0[a] = (*z)[r];
     lo[a] = p.lower(r, *z), hi[a] = p.upper(r, *z);
-    q[a] = rowVelocity((*p.rows)[r], *u) + p.reg[r] * z0[a] + p.b[r]; // w at z0
+    w[a] = rowVelocity((*p.rows)[r], *u) + p.reg[r] * z0[a] + p.b[r];
   }
-  q -= blk.D * z0; // w = D z + q on the block
-  const VecX r =
-      blk.prox.cwiseProduct(z0) - q; // proximal step: (D + P) x = P z0 - q, fixed point D x + q = 0
-  VecX x = blk.ldlt.solve(r);
+  // proximal step (D + P) x = P z0 - q with w = D z0 + q: x = z0 - (D + P)^-1 w; fixed point w = 0
+  VecX x = z0 - blk.Dpinv * w;
   bool inside = x.allFinite();
   for (int a = 0; inside && a < m; ++a) inside = x[a] >= lo[a] && x[a] <= hi[a];
-  if (!inside) {
+  if (!inside) { // inner PGS on (D + P) x = P z0 - q = Dp z0 - w
+    const VecX r = blk.Dp * z0 - w;
     x = z0.cwiseMax(lo).cwiseMin(hi);
     for (int it = 0; it < kInner; ++it)
       for (int a = 0; a < m; ++a)

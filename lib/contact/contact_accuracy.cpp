@@ -59,6 +59,18 @@ void setBounds(const ContactStep& step, const StepperOptions& o, int per, Sparse
   }
 }
 
+// The problem of sys's rows without a matrix (p.A null: sweeps and residuals only), bounds [0, inf).
+SparseBoxLcp matrixFree(const DelassusSystem& sys, const lcp::Vec& reg) {
+  SparseBoxLcp p;
+  p.rows = &sys.rows;
+  p.nbodies = sys.nbodies;
+  p.b = sys.b, p.reg = reg;
+  p.l = lcp::Vec::Zero(p.size()), p.u = lcp::Vec::Constant(p.size(), lcp::kInf);
+  p.link.assign(p.size(), -1);
+  p.coef.assign(p.size(), 0.0);
+  return p;
+}
+
 // The bounds frozen at mu lambda_n of z (one splitting pass), at most max_fact active-set factorisations; its
 // answer replaces z when it solves the frozen problem or lowers the residual on p (the coupled bounds).
 void polish(const SparseBoxLcp& p, const StepperOptions& o, int max_fact, lcp::Vec* z, StepStats* st) {
@@ -78,10 +90,11 @@ void polish(const SparseBoxLcp& p, const StepperOptions& o, int max_fact, lcp::V
 } // namespace
 
 bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const StepperOptions& o,
-                    Impulses* out, StepStats* st) {
+                    Impulses* out, StepStats* st, const lcp::Vec* reg) {
   const int nc = (int)step.contacts.size(), n = (int)sys.rows.size(), per = nc ? n / nc : 1;
-  lcp::Vec l = lcp::Vec::Zero(n), u = lcp::Vec::Constant(n, lcp::kInf);
-  SparseBoxLcp p = makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, l, u);
+  SparseBoxLcp p = reg ? matrixFree(sys, *reg)
+                       : makeSparseBoxLcp(sys.rows, sys.S, sys.nbodies, sys.b, lcp::Vec::Zero(n),
+                                          lcp::Vec::Constant(n, lcp::kInf));
   p.mass = &sys.mass;
   if (per == 3) setBounds(step, o, per, &p);
   p.order = heightOrder(step.contacts, o.gravity, per);

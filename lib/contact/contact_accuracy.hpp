@@ -23,7 +23,8 @@ namespace suite::contact {
 // The sweep budget of a mode (StepperOptions::contact_sweeps, or the mode's default).
 int sweepBudget(const StepperOptions& o);
 // The impulses of a balanced / fast step (see above); always true (never a failed step).
+// reg: the rows' compliance when sys carries no matrix (contact_rows.hpp; fast mode), else read from sys.S.
 bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const StepperOptions& o,
-                    Impulses* out, StepStats* st);
+                    Impulses* out, StepStats* st, const lcp::Vec* reg = nullptr);
 
 } // namespace suite::contact

@@ -4,6 +4,7 @@
 #include "contact/stepper.hpp"
 
 #include "contact/contact_accuracy.hpp"
+#include "contact/contact_rows.hpp"
 #include "contact/delassus.hpp"
 #include "contact/friction_auto.hpp"
 #include "contact/friction_formulation.hpp"
@@ -254,9 +255,16 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
       o.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o.dense_max_rows);
   StepperOptions ob = o; // balanced / fast: their own Baumgarte factor (contact_accuracy.hpp)
   if (!exact) ob.baumgarte = o.budget_baumgarte;
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse);
   const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
+  if (o.accuracy == ContactAccuracy::Fast) { // matrix-free: no Delassus matrix formed
+    const ContactRows cr = buildContactRows(bodies, inv_i, *v, in.cs, rows, ob);
+    budgetImpulses(step, cr.sys, o, &imp, st, &cr.reg);
+    applyImpulses(cr.sys, imp.z, v, w);
+    *lam = imp.lambda;
+    return true;
+  }
+  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse);
   if (!exact) {
     budgetImpulses(step, sys, o, &imp, st);
   } else {
