@@ -54,7 +54,8 @@ struct Manifold {
 // 2 and 5 stand the same, 20 costs twice the time (base-10 pyramid, fast mode).
 constexpr int kInner = 2;
 
-// The block's rows to the solution of its box LCP with the other rows fixed; u and z updated. Returns max |dz|.
+// One proximal block step on the block's rows (the other rows fixed); u and z updated. Returns the largest
+// change of the block's row velocities it made.
 double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
   const int m = (int)blk.rows.size();
   if (m == 0) return 0.0;
@@ -77,15 +78,15 @@ double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) 
         if (blk.Dp(a, a) > 0)
           x[a] = std::clamp(x[a] - (blk.Dp.row(a).dot(x) - r[a]) / blk.Dp(a, a), lo[a], hi[a]);
   }
-  double change = 0.0;
+  const VecX dz = x - z0;
   for (int a = 0; a < m; ++a) {
-    const double dz = x[a] - z0[a];
-    if (dz == 0.0) continue;
-    addRowImpulse((*p.rows)[blk.rows[a]], dz, u);
+    if (dz[a] == 0.0) continue;
+    addRowImpulse((*p.rows)[blk.rows[a]], dz[a], u);
     (*z)[blk.rows[a]] = x[a];
-    change = std::max(change, std::abs(dz));
   }
-  return change;
+  // the change of the block's row velocities, D dz (a move along the corners' near-dependent directions, which
+  // changes no velocity, does not count)
+  return (blk.D * dz).lpNorm<Eigen::Infinity>();
 }
 
 // The manifolds of cs (contacts grouped by body pair) in the order of p.order; active rows only.
