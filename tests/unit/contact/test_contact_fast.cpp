@@ -186,8 +186,8 @@ TEST(ContactAccuracyModes, StickingCreepWithinStatedError) {
     Stepper st(o);
     for (int k = 0; k < 200; ++k) ASSERT_FALSE(st.step(&b).failed);
     std::printf("incline 20 deg mu 0.5 (%s): creep %.2e m in 2 s\n", accuracyName(m), drift(b, b0));
-    // stated bounds (measured: exact 5.2e-9, balanced 1.1e-8, fast 1.0e-5)
-    const double bound = m == ContactAccuracy::Exact ? 1e-8 : m == ContactAccuracy::Balanced ? 1e-7 : 1e-4;
+    // stated bounds (measured: exact 5.2e-9, balanced 2.0e-8, fast 2.5e-8; fast was 1.0e-5 with point PGS)
+    const double bound = m == ContactAccuracy::Exact ? 1e-8 : 1e-7;
     EXPECT_LE(drift(b, b0), bound) << accuracyName(m);
   }
 }
