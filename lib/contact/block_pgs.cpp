@@ -3,6 +3,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace suite::contact {
@@ -28,6 +29,38 @@ double coupling(const JRow& i, const JRow& j) {
 // parts; (D + P) x = P z0 - q has the same fixed point (x = z0 where D z0 + q = 0) and stays near z0.
 // Measured on the base-10 pyramid (fast mode): 1e-4 .. 1e-1 all stand, 1e-2 the least work.
 constexpr double kProx = 1e-2;
+// The inverse of a small symmetric positive definite matrix (Cholesky D = L L^T, then L^-T L^-1), written out:
+// Eigen's general small-matrix paths cost more than the arithmetic at m <= 16.
+MatX spdInverse(const MatX& D) {
+  const int m = (int)D.rows();
+  MatX L = MatX::Zero(m, m), Li = MatX::Zero(m, m), out(m, m);
+  for (int j = 0; j < m; ++j) {
+    double d = D(j, j);
+    for (int k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
+    L(j, j) = std::sqrt(d);
+    for (int i = j + 1; i < m; ++i) {
+      double s = D(i, j);
+      for (int k = 0; k < j; ++k) s -= L(i, k) * L(j, k);
+      L(i, j) = s / L(j, j);
+    }
+  }
+  for (int j = 0; j < m; ++j) { // Li = L^-1 (lower), column by column
+    Li(j, j) = 1.0 / L(j, j);
+    for (int i = j + 1; i < m; ++i) {
+      double s = 0.0;
+      for (int k = j; k < i; ++k) s -= L(i, k) * Li(k, j);
+      Li(i, j) = s / L(i, i);
+    }
+  }
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j <= i; ++j) {
+      double s = 0.0;
+      for (int k = i; k < m; ++k) s += Li(k, i) * Li(k, j);
+      out(i, j) = out(j, i) = s;
+    }
+  return out;
+}
+
 // One group of rows solved together: D (regularised), its LDL^T.
 struct Block {
   std::vector<int> rows;
@@ -42,7 +75,7 @@ struct Block {
     prox = kProx * D.diagonal();
     Dp = D;
     Dp.diagonal() += prox;
-    Dpinv = Dp.ldlt().solve(MatX::Identity(m, m)); // m <= kMax: applied many times per step
+    Dpinv = spdInverse(Dp); // applied many times per step
   }
 };
 
