@@ -119,6 +119,8 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
              "-contact_accuracy %s: unknown", acc.c_str());
   PetscCall(r.integer("-contact_sweeps", "balanced/fast: PGS sweeps per step (0: the mode's default)",
                       &t->contact_sweeps));
+  PetscCall(r.real("-contact_budget_baumgarte", "balanced/fast: Baumgarte factor (0, 1] of their normal rows",
+                   &t->budget_baumgarte));
   PetscCall(r.integer("-contact_dense_max_rows",
                       "exact: dense contact problems up to this many rows, sparse above",
                       &t->dense_max_rows));
@@ -229,6 +231,7 @@ PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
       {"-sleep_steps", (double)t.sleep_steps, '[', 1, inf, ']', true},
       {"-overlap_tol", o.overlap_tol, '[', 0, inf, ']'},
       {"-contact_sweeps", (double)t.contact_sweeps, '[', 0, inf, ']', true},
+      {"-contact_budget_baumgarte", t.budget_baumgarte, '(', 0, 1, ']'},
       {"-contact_dense_max_rows", (double)t.dense_max_rows, '[', 0, inf, ']', true},
   };
   PetscFunctionBeginUser;

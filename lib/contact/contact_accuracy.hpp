@@ -4,16 +4,23 @@
 //             box_lcp.cpp), with its fallbacks; a step no solver answers ends the run.
 //   balanced  one box LCP per step with the Coulomb bounds |lambda_t| <= mu lambda_n read from the current
 //             normal impulse during the sweeps (splitting; box / scaled_box: their estimates), solved by at
-//             most -contact_sweeps (default 50) symmetric projected Gauss-Seidel sweeps in height order,
-//             matrix-free, warm-started from the previous step's matching contacts, then one splitting pass:
-//             the bounds frozen at mu lambda_n and at most 4 sparse active-set factorisations (its answer kept
-//             when it solves that pass or lowers the residual).
-//   fast      the same with at most 10 sweeps (-contact_sweeps) and 1 factorisation.
+//             most -contact_sweeps (default 40) symmetric block projected Gauss-Seidel sweeps over the contact
+//             manifolds (block_pgs.hpp) in height order, matrix-free, warm-started from the previous step's
+//             matching contacts (tangential impulses turned into the new frames), then one splitting pass: the
+//             bounds frozen at mu lambda_n and 1 sparse active-set factorisation (its answer kept when it solves
+//             that pass or lowers the residual; it makes a stack exact, on a pyramid it is never kept).
+//   fast      at most 10 block sweeps (-contact_sweeps), no factorisation, no Delassus matrix formed (the
+//             deferred S of delassus.hpp is never asked for).
+// Both use Baumgarte factor -contact_budget_baumgarte (0.05) instead of -baumgarte (0.2): the penetration an
+// unconverged answer leaves (~1e-3 m) biases the next step's b by beta phi / dt, 0.02 m/s at 0.2, more than the
+// sweeps remove; measured on the base-10 pyramid (200 steps): drift 7.7e-3 m (fast) / 4.0e-3 (balanced) at
+// 0.2, 3.3e-4 / 1.1e-4 at 0.05.
+// Point-by-point PGS (pgsSweeps) left a base-10 pyramid drifting 1.4e-2 (fast) / 1.8e-2 m (balanced) in 2 s.
 // balanced and fast never end the run for accuracy: the step goes on and its natural-map residual
 // (complementarity error, of the box LCP with the bounds mu lambda_n of the answer), cone violation and
 // penetration are recorded (StepStats, /steps in the output). Sequential impulses with warm starting: Catto,
 // "Iterative dynamics with temporal coherence", GDC 2005; Erleben, ACM TOG 26 (2007) 12.
-// The sweeps stop early after one that changes no impulse by more than lcp_tol (1 + |b|_inf).
+// The sweeps stop early after one that changes no row velocity by more than lcp_tol (1 + |b|_inf).
 #pragma once
 
 #include "contact/friction_formulation.hpp"

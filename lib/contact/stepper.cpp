@@ -87,6 +87,16 @@ int matchPrevious(const std::vector<Contact>& prev, const std::vector<int>& cand
   return best;
 }
 
+// The impulse (n, t1, t2) of the previous step's contact pc carried to its match c: balanced / fast turn the
+// tangential part into c's frame (the world vector lt1 pt1 + lt2 pt2 projected on c.t1, c.t2), since their
+// frames, read from gravity, point anywhere in the tangent plane once a normal tilts by round-off; exact keeps
+// the components (its frames follow the slip, and its answers do not depend on the start).
+Vec3 carriedImpulse(const Contact& pc, const Vec3& l, const Contact& c, const StepperOptions& o) {
+  if (o.accuracy == ContactAccuracy::Exact) return l;
+  const Vec3 ft = l[1] * pc.t1 + l[2] * pc.t2;
+  return Vec3(l[0], ft.dot(c.t1), ft.dot(c.t2));
+}
+
 // x += dt v, q <- exp(dt w / 2) q with the new velocities; false (and the body's name) on a non-finite state.
 bool integrate(const std::vector<Vec3>& v, const std::vector<Vec3>& w, double dt, std::vector<Body>* bodies,
                std::string* bad) {
@@ -197,7 +207,8 @@ void Stepper::matchPreviousImpulses(const std::vector<Body>& bodies, std::vector
     const double tol = 0.1 * std::min(bodies[c.a].boundingRadius(), bodies[c.b].boundingRadius());
     const auto it = by_pair.find({c.a, c.b});
     const int k = matchPrevious(prev_contacts_, it == by_pair.end() ? none : it->second, c, tol);
-    if (k >= 0) (*prev)[i] = prev_impulses_[k], (*has_prev)[i] = true;
+    if (k >= 0)
+      (*prev)[i] = carriedImpulse(prev_contacts_[k], prev_impulses_[k], c, o_), (*has_prev)[i] = true;
     if (k >= 0 && k < (int)prev_rungs_.size()) (*prev_rung)[i] = prev_rungs_[k];
     ids[i] = k >= 0 && k < (int)prev_ids_.size() ? prev_ids_[k] : next_id_++;
   }
@@ -241,7 +252,11 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   const bool exact = o.accuracy == ContactAccuracy::Exact;
   const bool sparse =
       o.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o.dense_max_rows);
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, o, sparse, true);
+  StepperOptions ob = o; // balanced / fast: their own Baumgarte factor (contact_accuracy.hpp)
+  if (!exact) ob.baumgarte = o.budget_baumgarte;
+  // S deferred (sparseMatrix()): the block PGS sweeps of fast and balanced and the exact path's body-space
+  // solves need only the rows, masses and compliance; a fallback builds it when it needs it
+  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse, true);
   const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
   if (!exact) {

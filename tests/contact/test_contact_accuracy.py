@@ -43,7 +43,8 @@ def drift(f):
     return np.abs(p[-1] - p[0]).max()
 
 
-for mode, bound in (("fast", 1e-3), ("balanced", 1e-4), ("exact", 1e-6)):
+# measured with the block sweeps (block_pgs.hpp): fast 5.4e-5, balanced 6.1e-7, exact 3.2e-8
+for mode, bound in (("fast", 2e-4), ("balanced", 1e-5), ("exact", 1e-6)):
     f = run(f"pyr_{mode}", *PYRAMID, "-contact_accuracy", mode, "-contact_dense_max_rows", 0)
     s = f["/steps"]
     done = f.attrs["status"] in ("completed", b"completed") and len(s["residual"]) == 100
