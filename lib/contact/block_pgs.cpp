@@ -14,16 +14,6 @@ constexpr int kMax = 16;
 using MatX = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, kMax>;
 using VecX = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMax, 1>;
 
-// (J M^-1 J^T)_ij of two rows: the bodies they share.
-double coupling(const JRow& i, const JRow& j) {
-  double s = 0.0;
-  if (i.ba >= 0 && i.ba == j.ba) s += i.ja.dot(j.ma);
-  if (i.ba >= 0 && i.ba == j.bb) s += i.ja.dot(j.mb);
-  if (i.bb >= 0 && i.bb == j.ba) s += i.jb.dot(j.ma);
-  if (i.bb >= 0 && i.bb == j.bb) s += i.jb.dot(j.mb);
-  return s;
-}
-
 // Proximal weight of a block update (relative to D's diagonal): the corners' rows are nearly dependent (D
 // singular up to the 1e-6 / 1e-8 compliance), so the plain block answer can carry large self-equilibrated
 // parts; (D + P) x = P z0 - q has the same fixed point (x = z0 where D z0 + q = 0) and stays near z0.
@@ -71,7 +61,7 @@ struct Block {
     D.resize(m, m);
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b)
-        D(a, b) = coupling((*p.rows)[rows[a]], (*p.rows)[rows[b]]) + (a == b ? p.reg[rows[a]] : 0.0);
+        D(a, b) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[b]]) + (a == b ? p.reg[rows[a]] : 0.0);
     prox = kProx * D.diagonal();
     Dp = D;
     Dp.diagonal() += prox;

@@ -3,9 +3,7 @@
 
 namespace suite::contact {
 
-namespace {
-// A_rq's contribution of the bodies row r shares with row q.
-double coupling(const JRow& R, const JRow& Q) {
+double rowCoupling(const JRow& R, const JRow& Q) {
   double v = 0.0;
   if (R.ba >= 0 && R.ba == Q.ba) v += R.ja.dot(Q.ma);
   if (R.ba >= 0 && R.ba == Q.bb) v += R.ja.dot(Q.mb);
@@ -13,6 +11,8 @@ double coupling(const JRow& R, const JRow& Q) {
   if (R.bb >= 0 && R.bb == Q.bb) v += R.jb.dot(Q.mb);
   return v;
 }
+
+namespace {
 
 // The rows at each body (each row at most once per body), in increasing row order.
 std::vector<std::vector<int>> rowsAtBodies(const std::vector<JRow>& rows, int nbodies) {
@@ -38,7 +38,7 @@ SpMat sparseDelassus(const std::vector<JRow>& rows, int nbodies, const std::vect
         for (int q : at[b])
           if (mark[q] != r) mark[q] = r, cols.push_back(q);
     for (int q : cols) {
-      double v = coupling(rows[r], rows[q]);
+      double v = rowCoupling(rows[r], rows[q]);
       if (q == r) v *= 1.0 + diag_scale[r];
       t.emplace_back(r, q, v);
     }

@@ -19,6 +19,8 @@ using V6s = std::vector<V6>;
 // number of bodies (the body indices of the rows are below it).
 SpMat sparseDelassus(const std::vector<JRow>& rows, int nbodies, const std::vector<double>& diag_scale);
 
+// A_rq = (J M^-1 J^T)_rq of two rows: the contributions of the bodies they share (no compliance).
+double rowCoupling(const JRow& R, const JRow& Q);
 // u = M^-1 J^T z per body (6-vectors: linear, angular), over nbodies bodies.
 V6s bodyImpulseVelocities(const std::vector<JRow>& rows, const lcp::Vec& z, int nbodies);
 // J_i u of row i.
