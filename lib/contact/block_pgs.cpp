@@ -54,17 +54,16 @@ MatX spdInverse(const MatX& D) {
 // One group of rows solved together: D (regularised), its LDL^T.
 struct Block {
   std::vector<int> rows;
-  MatX D, Dp, Dpinv; // Dp = D + diag(prox): the proximal term
-  VecX prox;
+  MatX D, Dp, Dpinv; // Dp = D + kProx diag(D): the proximal term
   void build(const SparseBoxLcp& p) {
     const int m = (int)rows.size();
     D.resize(m, m);
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b)
-        D(a, b) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[b]]) + (a == b ? p.reg[rows[a]] : 0.0);
-    prox = kProx * D.diagonal();
+    for (int a = 0; a < m; ++a) {
+      D(a, a) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[a]]) + p.reg[rows[a]];
+      for (int b = a + 1; b < m; ++b) D(a, b) = D(b, a) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[b]]);
+    }
     Dp = D;
-    Dp.diagonal() += prox;
+    Dp.diagonal() *= 1.0 + kProx;
     Dpinv = spdInverse(Dp); // applied many times per step
   }
 };

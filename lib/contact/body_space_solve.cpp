@@ -22,7 +22,6 @@ std::vector<M6> bodyMassMatrices(const std::vector<Body>& bodies, const std::vec
 BodySpaceSolver::BodySpaceSolver(const std::vector<JRow>& rows, const std::vector<M6>& mass, lcp::Vec reg)
     : rows_(rows), mass_(mass), reg_(std::move(reg)) {
   buildPattern();
-  llt_.analyzePattern(K_);
 }
 
 // The order of the bodies in K: AMD on the body graph (a body per node, an edge per pair sharing a row).
@@ -39,8 +38,8 @@ void BodySpaceSolver::orderBodies(const std::vector<std::pair<int, int>>& pairs)
   for (int k = 0; k < nb; ++k) at_[inv.indices()[k]] = 6 * k;
 }
 
-// K's pattern in the body order, upper triangle: the 6 x 6 blocks of every body and the upper block of every
-// body pair sharing a row (explicit zeros kept); the value offsets of each block and each row's pair block.
+// K's block pattern in the body order (the 6 x 6 blocks of every body and of every body pair sharing a row),
+// analysed by the block Cholesky; each row's pair and which of its bodies comes first in the order.
 void BodySpaceSolver::buildPattern() {
   const int nb = (int)mass_.size();
   std::map<std::pair<int, int>, int> pair_id; // (a, b) -> index among the pairs, a < b
@@ -49,82 +48,57 @@ void BodySpaceSolver::buildPattern() {
   std::vector<std::pair<int, int>> pairs(pair_id.size());
   for (const auto& [ab, k] : pair_id) pairs[k] = ab;
   orderBodies(pairs);
-  auto upper = [&](std::pair<int, int> ab) { // the pair's block above the diagonal: (row body, column body)
-    return at_[ab.first] < at_[ab.second] ? ab : std::make_pair(ab.second, ab.first);
-  };
-  std::vector<Eigen::Triplet<double>> t;
-  auto block = [&](int a, int b) {
-    for (int c = 0; c < 6; ++c)
-      for (int r = 0; r < 6; ++r) t.emplace_back(at_[a] + r, at_[b] + c, 0.0);
-  };
-  for (int b = 0; b < nb; ++b) block(b, b);
-  for (const auto& ab : pairs) block(upper(ab).first, upper(ab).second);
-  K_.resize(6 * nb, 6 * nb);
-  K_.setFromTriplets(t.begin(), t.end());
-  blocks_.resize(nb + pairs.size());
-  for (int b = 0; b < nb; ++b) blocks_[b] = blockPositions(b, b);
-  for (size_t k = 0; k < pairs.size(); ++k)
-    blocks_[nb + k] = blockPositions(upper(pairs[k]).first, upper(pairs[k]).second);
+  std::vector<std::pair<int, int>> edges(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k) edges[k] = {pos(pairs[k].first), pos(pairs[k].second)};
+  pair_block_ = chol_.analyze(nb, edges);
   pair_of_.assign(rows_.size(), -1);
   a_first_.assign(rows_.size(), true);
   for (size_t i = 0; i < rows_.size(); ++i) {
     const JRow& J = rows_[i];
     if (J.ba < 0 || J.bb < 0 || J.ba == J.bb) continue;
-    pair_of_[i] = nb + pair_id.at(std::minmax(J.ba, J.bb));
+    pair_of_[i] = pair_id.at(std::minmax(J.ba, J.bb));
     a_first_[i] = at_[J.ba] < at_[J.bb];
   }
 }
 
-// Offsets in K's values of the entries (at(a), at(b) + c), c = 0..5 (a block column's 6 rows are adjacent).
-BodySpaceSolver::Block BodySpaceSolver::blockPositions(int a, int b) const {
-  Block pos;
-  for (int c = 0; c < 6; ++c) {
-    const int j = at_[b] + c, *idx = K_.innerIndexPtr();
-    pos[c] =
-        (int)(std::lower_bound(idx + K_.outerIndexPtr()[j], idx + K_.outerIndexPtr()[j + 1], at_[a]) - idx);
-  }
-  return pos;
-}
-
-void BodySpaceSolver::addBlock(int k, const V6& u, const V6& v, double s) {
-  double* val = K_.valuePtr();
-  for (int c = 0; c < 6; ++c) Eigen::Map<V6>(val + blocks_[k][c]) += (s * v[c]) * u;
-}
-
+// K += s J_i^T J_i: the diagonal blocks of its bodies and the lower block of its pair (row: the later body in
+// the order, column: the earlier one).
 void BodySpaceSolver::addRow(int i, double s) {
   const JRow& J = rows_[i];
-  if (J.ba >= 0) addBlock(J.ba, J.ja, J.ja, s);
-  if (J.bb >= 0) addBlock(J.bb, J.jb, J.jb, s);
-  if (pair_of_[i] >= 0)
-    a_first_[i] ? addBlock(pair_of_[i], J.ja, J.jb, s) : addBlock(pair_of_[i], J.jb, J.ja, s);
+  if (J.ba >= 0) chol_.diag(pos(J.ba)).noalias() += (s * J.ja) * J.ja.transpose();
+  if (J.bb >= 0) chol_.diag(pos(J.bb)).noalias() += (s * J.jb) * J.jb.transpose();
+  if (pair_of_[i] < 0) return;
+  M6& L = chol_.lower(pair_block_[pair_of_[i]]);
+  if (a_first_[i])
+    L.noalias() += (s * J.jb) * J.ja.transpose();
+  else
+    L.noalias() += (s * J.ja) * J.jb.transpose();
 }
 
 // K(F) = M + J_F^T D_F^-1 J_F assembled into the fixed pattern and factorised (static bodies: identity).
 bool BodySpaceSolver::factor(const std::vector<int>& F) {
   ok_ = false;
-  std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
+  chol_.setZero();
   for (size_t b = 0; b < mass_.size(); ++b)
-    for (int c = 0; c < 6; ++c)
-      Eigen::Map<V6>(K_.valuePtr() + blocks_[b][c]) =
-          mass_[b].isZero() ? V6(V6::Unit(c)) : V6(mass_[b].col(c));
+    chol_.diag(pos((int)b)) = mass_[b].isZero() ? M6(M6::Identity()) : mass_[b];
   for (int i : F) addRow(i, 1.0 / reg_[i]);
-  llt_.factorize(K_);
   ++factorizations_;
-  if (llt_.info() != Eigen::Success) return false;
+  if (!chol_.factor()) return false;
   F_ = F, ok_ = true;
   return true;
 }
 
 // A_FF^-1 rhs by the Woodbury identity on the current factorisation.
 lcp::Vec BodySpaceSolver::woodbury(const std::vector<int>& F, const lcp::Vec& rhs) const {
-  lcp::Vec g = lcp::Vec::Zero(K_.rows()), out(F.size());
+  lcp::Vec g = lcp::Vec::Zero(6 * (int)mass_.size()), out(F.size());
   for (size_t a = 0; a < F.size(); ++a) {
     const JRow& J = rows_[F[a]];
     const double s = rhs[a] / reg_[F[a]];
     if (J.ba >= 0) g.segment<6>(at_[J.ba]) += s * J.ja;
     if (J.bb >= 0) g.segment<6>(at_[J.bb]) += s * J.jb;
   }
-  const lcp::Vec y = llt_.solve(g);
+  chol_.solve(&g);
+  const lcp::Vec& y = g;
   for (size_t a = 0; a < F.size(); ++a) {
     const JRow& J = rows_[F[a]];
     double jy = 0.0;

@@ -9,21 +9,17 @@
 // thesis, Umea 2007, ch. 5; Servin et al., "Interactive simulation of elastic deformable materials", SIGRAD
 // 2006, for the Woodbury step).
 // BodySpaceSolver keeps one factorisation for the many free sets F of one problem (the active-set iterations
-// and the splitting passes of a step): the pattern of K over every row (the 6 x 6 blocks of each body and of
-// each body pair sharing a row) is ordered once, by AMD on the body graph (Amestoy, Davis & Duff, SIAM J.
-// Matrix Anal. Appl. 17 (1996); the 6 unknowns of a body kept together, K built in that order, upper
-// triangle only, so that the factorisation reads it in place) and analysed once (elimination tree, column
-// counts), so that each new F costs the numeric factorisation only, its values added straight into K's
-// value array at the rows' block positions (Davis, "Direct methods for sparse linear systems", SIAM 2006,
-// ch. 4: the symbolic analysis depends on the pattern alone); a solve with the F of the last factorisation
-// reuses it as is.
+// and the splitting passes of a step): the block pattern of K over every row (the 6 x 6 blocks of each body and
+// of each body pair sharing a row) is ordered once, by AMD on the body graph (Amestoy, Davis & Duff, SIAM J.
+// Matrix Anal. Appl. 17 (1996)), and analysed once by the block Cholesky (block_cholesky.hpp: elimination tree
+// and column structures over bodies), so that each new F costs the numeric factorisation only, its values added
+// straight into K's blocks (Davis, "Direct methods for sparse linear systems", SIAM 2006, ch. 4: the symbolic
+// analysis depends on the pattern alone); a solve with the F of the last factorisation reuses it as is.
 #pragma once
 
+#include "contact/block_cholesky.hpp"
 #include "contact/delassus.hpp"
 
-#include <Eigen/SparseCholesky>
-
-#include <array>
 #include <vector>
 
 namespace suite::contact {
@@ -41,26 +37,23 @@ public:
   int solves() const { return solves_; }
 
 private:
-  using Block = std::array<int, 6>; // value offsets of the block's columns (its first row in each)
   bool factor(const std::vector<int>& F);
   void orderBodies(const std::vector<std::pair<int, int>>& pairs);
   void buildPattern();
-  Block blockPositions(int a, int b) const;
-  void addBlock(int k, const V6& u, const V6& v, double s); // block k += s u v^T
-  void addRow(int i, double s);                             // K += s J_i^T J_i (upper triangle)
+  int pos(int body) const { return at_[body] / 6; } // the body's block in K
+  void addRow(int i, double s);                     // K += s J_i^T J_i
   lcp::Vec woodbury(const std::vector<int>& F, const lcp::Vec& rhs) const;
   lcp::Vec applyFree(const std::vector<int>& F, const lcp::Vec& x) const;
   const std::vector<JRow>& rows_;
   const std::vector<M6>& mass_;
   const lcp::Vec reg_;
-  Eigen::SparseMatrix<double> K_;
-  std::vector<int> at_;       // first unknown of each body in K (6 x its place in the order)
-  std::vector<Block> blocks_; // diagonal blocks 0..bodies-1, then the upper block of each pair
-  std::vector<int> pair_of_;  // per row: its pair block, -1 without a pair
-  std::vector<bool> a_first_; // per row: body ba comes before bb in the order
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>> llt_;
-  std::vector<int> F_; // the free set of the current factorisation
-  bool ok_ = false;    // the current factorisation holds K(F_)
+  BlockCholesky chol_;
+  std::vector<int> at_;         // first unknown of each body in K (6 x its place in the order)
+  std::vector<int> pair_block_; // per body pair: its lower block in chol_
+  std::vector<int> pair_of_;    // per row: its pair, -1 without a pair
+  std::vector<bool> a_first_;   // per row: body ba comes before bb in the order
+  std::vector<int> F_;          // the free set of the current factorisation
+  bool ok_ = false;             // the current factorisation holds K(F_)
   int factorizations_ = 0, solves_ = 0;
 };
 

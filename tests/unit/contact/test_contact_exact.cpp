@@ -2,7 +2,9 @@
 // gives the same answers as a fresh one (its symbolic analysis kept, its last factorisation reused only for
 // the same free set), the deferred sparse Delassus matrix equals the eager one, and the splitting passes of
 // a resting pyramid (fixed-point residual, Aitken extrapolation, damping after a stall) converge within the
-// pass cap in a bounded number of factorisations.
+// pass cap in a bounded number of factorisations; the block Cholesky of the body-space matrix equals a dense
+// one.
+#include "contact/block_cholesky.hpp"
 #include "contact/body_space_solve.hpp"
 #include "contact/box_lcp.hpp"
 #include "contact/delassus.hpp"
@@ -106,4 +108,42 @@ TEST(ContactExactSolve, RestingPyramidPassesConvergeWithinTheCap) {
   EXPECT_LT(max_passes, o.splitting_max_it); // every step's passes converged, none stopped by the cap
   EXPECT_LE(drift, 1e-6);
   EXPECT_LE(factorizations, 12 * 99); // measured 11.05 (14.19 on main at 06b88ad)
+}
+
+// The block Cholesky of the body-space matrix (block_cholesky.hpp) on a random block-sparse SPD matrix whose
+// ordering makes fill (a ring of 12 blocks plus chords): its solve equals the dense LL^T solve to round-off, and
+// an indefinite matrix is refused.
+TEST(ContactExactSolve, BlockCholeskyEqualsDense) {
+  const int n = 12;
+  std::vector<std::pair<int, int>> edges;
+  for (int k = 0; k < n; ++k) edges.push_back({k, (k + 1) % n});
+  edges.push_back({0, 6}), edges.push_back({3, 9}), edges.push_back({9, 3}); // a repeat as well
+  BlockCholesky chol;
+  const std::vector<int> at = chol.analyze(n, edges);
+  ASSERT_EQ(at.size(), edges.size());
+  EXPECT_EQ(at[edges.size() - 1], at[edges.size() - 2]);
+  EXPECT_GT(chol.blocksInL(), n + 14); // the ring's fill
+  suite::lcp::Mat K = suite::lcp::Mat::Zero(6 * n, 6 * n);
+  std::srand(7);
+  for (size_t e = 0; e + 1 < edges.size(); ++e) { // off-diagonal blocks: random, lower storage
+    const int i = std::max(edges[e].first, edges[e].second), j = std::min(edges[e].first, edges[e].second);
+    const BlockCholesky::M6 B = BlockCholesky::M6::Random();
+    chol.lower(at[e]) = B;
+    K.block<6, 6>(6 * i, 6 * j) = B;
+    K.block<6, 6>(6 * j, 6 * i) = B.transpose();
+  }
+  for (int k = 0; k < n; ++k) { // diagonally dominant diagonal blocks
+    const BlockCholesky::M6 R = BlockCholesky::M6::Random();
+    const BlockCholesky::M6 D = R * R.transpose() + 40.0 * BlockCholesky::M6::Identity();
+    chol.diag(k) = D;
+    K.block<6, 6>(6 * k, 6 * k) = D;
+  }
+  ASSERT_TRUE(chol.factor());
+  Vec x = Vec::LinSpaced(6 * n, -1.0, 2.0), ref = K.llt().solve(x);
+  chol.solve(&x);
+  const double err = (x - ref).lpNorm<Eigen::Infinity>() / ref.lpNorm<Eigen::Infinity>();
+  std::printf("block Cholesky, 12 blocks with fill: relative difference to dense LL^T %.1e\n", err);
+  EXPECT_LE(err, 1e-13);
+  chol.diag(5) = -chol.diag(5); // indefinite
+  EXPECT_FALSE(chol.factor());
 }
