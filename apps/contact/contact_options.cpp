@@ -117,8 +117,10 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
                                  accuracyChoices(), &acc));
   PetscCheck(accuracyFromName(acc, &t->accuracy), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-contact_accuracy %s: unknown", acc.c_str());
-  PetscCall(r.integer("-contact_sweeps", "balanced/fast: PGS sweeps per step (0: the mode's default)",
-                      &t->contact_sweeps));
+  PetscCall(
+      r.integer("-contact_sweeps",
+                "balanced/fast: PGS sweeps per step (0: the mode's default, growing with the pile height)",
+                &t->contact_sweeps));
   PetscCall(r.real("-contact_budget_baumgarte", "balanced/fast: Baumgarte factor (0, 1] of their normal rows",
                    &t->budget_baumgarte));
   PetscCall(r.integer("-contact_dense_max_rows",

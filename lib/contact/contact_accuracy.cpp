@@ -33,13 +33,28 @@ bool accuracyFromName(const std::string& name, ContactAccuracy* a) {
 std::vector<Choice> accuracyChoices() {
   return {{"exact", "every problem solved to -lcp_tol, fallbacks; an unsolved step ends the run"},
           {"balanced",
-           "block PGS sweeps (-contact_sweeps, default 40) + 1 sparse factorisation; errors recorded"},
-          {"fast", "block PGS sweeps (-contact_sweeps, default 10); errors recorded"}};
+           "block PGS sweeps (-contact_sweeps; default max(40, H^2 / 10), H the pile height) + 1 sparse "
+           "factorisation; errors recorded"},
+          {"fast", "block PGS sweeps (-contact_sweeps; default max(10, H^2 / 10)); errors recorded"}};
 }
 
-int sweepBudget(const StepperOptions& o) {
+int pileHeight(const std::vector<Contact>& cs, const std::vector<Body>& bodies) {
+  std::vector<std::vector<int>> nbr(bodies.size());
+  for (const Contact& c : cs) nbr[c.a].push_back(c.b), nbr[c.b].push_back(c.a);
+  std::vector<int> layer(bodies.size(), -1), queue;
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].is_static && !nbr[i].empty()) layer[i] = 0, queue.push_back((int)i);
+  int height = 0;
+  for (size_t k = 0; k < queue.size(); ++k)
+    for (int j : nbr[queue[k]])
+      if (layer[j] < 0) layer[j] = layer[queue[k]] + 1, height = layer[j], queue.push_back(j);
+  return height;
+}
+
+int sweepBudget(const StepperOptions& o, int height) {
   if (o.contact_sweeps > 0) return o.contact_sweeps;
-  return o.accuracy == ContactAccuracy::Fast ? 10 : 40;
+  const int base = o.accuracy == ContactAccuracy::Fast ? 10 : 40;
+  return std::max(base, (height * height + 9) / 10);
 }
 
 namespace {
@@ -87,7 +102,7 @@ bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const St
   lcp::Vec z(n);
   for (int i = 0; i < nc; ++i)
     for (int k = 0; k < per; ++k) z[i * per + k] = o.warm_start && step.has_prev[i] ? step.prev[i][k] : 0.0;
-  const int budget = sweepBudget(o);
+  const int budget = sweepBudget(o, pileHeight(step.contacts, step.bodies));
   const int sweeps = blockPgsSweeps(p, step.contacts, per, budget, sparseTolerance(p, o.lcp_tol), &z);
   st->iterations += sweeps;
   st->budget_stop = sweeps >= budget;

@@ -1,11 +1,12 @@
 // Unit tests of the fast end of the contact stepper (issue #19): the sparse Delassus matrix equals the dense
 // one to round-off, the sparse exact path agrees with the dense chain and is chosen only above the
 // crossover, contacts keep their identities and impulses across steps, and the balanced / fast modes stay
-// within their stated errors on the incline and a stack without ever stopping the run; block PGS over contact
-// manifolds converges to the active-set answer.
+// within their stated errors on the incline and a stack without ever stopping the run, their sweep budget grows
+// with the pile height; block PGS over contact manifolds converges to the active-set answer.
 #include "contact/body_space_solve.hpp"
 #include "contact/block_pgs.hpp"
 #include "contact/box_lcp.hpp"
+#include "contact/contact_accuracy.hpp"
 #include "contact/delassus.hpp"
 #include "contact/scenes.hpp"
 #include "contact/stepper.hpp"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 using namespace suite::contact;
 
@@ -214,6 +216,28 @@ TEST(ContactAccuracyModes, StackOfTenNeverStoppedByTheBudget) {
     // beta is 4x exact's: measured 2.0e-6 (balanced), 2.2e-6 (fast), a fixed offset, not a growing drift
     EXPECT_LE(drift(b, b0), 3e-6) << accuracyName(m);
   }
+}
+
+// The budget modes' default sweep budget grows with the square of the pile height (contact_accuracy.hpp): the
+// height counts body layers from the ground, and an explicit -contact_sweeps is kept as given.
+TEST(ContactAccuracyModes, SweepBudgetGrowsWithThePileHeight) {
+  StepperOptions o;
+  for (auto [name, size, height] :
+       {std::tuple<const char*, int, int>{"box_stack", 10, 10}, {"pyramid", 5, 5}, {"pyramid", 30, 30}}) {
+    const auto b = scene(name, size);
+    const auto cs = findContacts(b, o.margin, o.gravity, o.dt);
+    EXPECT_EQ(pileHeight(cs, b), height) << name << " " << size;
+  }
+  EXPECT_EQ(pileHeight({}, scene("box_stack", 3)), 0);
+  o.accuracy = ContactAccuracy::Fast;
+  EXPECT_EQ(sweepBudget(o, 10), 10);
+  EXPECT_EQ(sweepBudget(o, 30), 90);
+  EXPECT_EQ(sweepBudget(o, 31), 97); // ceil(961 / 10)
+  o.accuracy = ContactAccuracy::Balanced;
+  EXPECT_EQ(sweepBudget(o, 20), 40);
+  EXPECT_EQ(sweepBudget(o, 30), 90);
+  o.contact_sweeps = 7;
+  EXPECT_EQ(sweepBudget(o, 30), 7);
 }
 
 // Block PGS over contact manifolds (block_pgs.hpp) converges to the answer of the active-set solve (exact to
