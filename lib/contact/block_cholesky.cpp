@@ -82,9 +82,9 @@ bool BlockCholesky::factor() {
     }
     const Eigen::LLT<M6> llt(w);
     if (llt.info() != Eigen::Success || !llt.matrixLLT().allFinite()) return false;
-    ld_[k] = llt.matrixL();
-    for (int e = colptr_[k]; e < colptr_[k + 1]; ++e) // L_ik = W_ik L_kk^-T
-      ld_[k].transpose().triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(lo_[e]);
+    ld_[k] = llt.matrixL().solve(M6::Identity()); // L_kk^-1: fixed-size products from here on
+    const M6 inv_t = ld_[k].transpose();
+    for (int e = colptr_[k]; e < colptr_[k + 1]; ++e) lo_[e] = lo_[e] * inv_t; // L_ik = W_ik L_kk^-T
   }
   return true;
 }
@@ -92,8 +92,7 @@ bool BlockCholesky::factor() {
 void BlockCholesky::solve(Eigen::VectorXd* xp) const {
   Eigen::VectorXd& x = *xp;
   for (int k = 0; k < n_; ++k) { // L y = x, column by column
-    V6d y = x.segment<6>(6 * k);
-    ld_[k].triangularView<Eigen::Lower>().solveInPlace(y);
+    const V6d y = ld_[k] * x.segment<6>(6 * k);
     x.segment<6>(6 * k) = y;
     for (int e = colptr_[k]; e < colptr_[k + 1]; ++e) x.segment<6>(6 * rowidx_[e]).noalias() -= lo_[e] * y;
   }
@@ -101,8 +100,7 @@ void BlockCholesky::solve(Eigen::VectorXd* xp) const {
     V6d t = x.segment<6>(6 * k);
     for (int e = colptr_[k]; e < colptr_[k + 1]; ++e)
       t.noalias() -= lo_[e].transpose() * x.segment<6>(6 * rowidx_[e]);
-    ld_[k].transpose().triangularView<Eigen::Upper>().solveInPlace(t);
-    x.segment<6>(6 * k) = t;
+    x.segment<6>(6 * k) = ld_[k].transpose() * t;
   }
 }
 

@@ -7,7 +7,8 @@
 // struct(L_c) \ {k} over the children c of k (Davis, "Direct methods for sparse linear systems", SIAM 2006,
 // ch. 4.1-4.2), computed once per pattern; numeric: column k gathers L_kj-scaled updates from the columns j of
 // its row structure (left-looking; Ng & Peyton, SIAM J. Sci. Comput. 14 (1993), supernodal left-looking
-// Cholesky), then L_kk = chol(W_kk), L_ik = W_ik L_kk^-T.
+// Cholesky), then L_kk = chol(W_kk), L_ik = W_ik L_kk^-T; L_kk^-1 is kept, so that every later step is a
+// fixed-size 6 x 6 product.
 // The block order is the caller's (it orders the bodies, e.g. by AMD on the body graph).
 #pragma once
 
