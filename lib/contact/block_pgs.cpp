@@ -4,7 +4,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <array>
+#include <type_traits>
 
 namespace suite::contact {
 
@@ -51,12 +52,13 @@ MatX spdInverse(const MatX& D) {
   return out;
 }
 
-// One group of rows solved together: D (regularised), its LDL^T.
+// One group of rows solved together: D (regularised), Dp = D + P, Dp^-1. Fixed capacity throughout: the
+// blocks are kept from step to step (blockPgsSweeps), so a step allocates nothing for them.
 struct Block {
-  std::vector<int> rows;
+  int m = 0;
+  std::array<int, kMax> rows;
   MatX D, Dp, Dpinv; // Dp = D + kProx diag(D): the proximal term
   void build(const SparseBoxLcp& p) {
-    const int m = (int)rows.size();
     D.resize(m, m);
     for (int a = 0; a < m; ++a) {
       D(a, a) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[a]]) + p.reg[rows[a]];
@@ -66,10 +68,12 @@ struct Block {
     Dp.diagonal() *= 1.0 + kProx;
     Dpinv = spdInverse(Dp); // applied many times per step
   }
+  void add(int row) { rows[m++] = row; }
 };
 
 struct Manifold {
   Block normal, tangent;
+  int first = 0; // the position of its first contact in the sweep order
 };
 
 // Inner PGS iterations of a block whose proximal answer leaves its bounds (the outer sweeps go on from there):
@@ -77,11 +81,15 @@ struct Manifold {
 constexpr int kInner = 2;
 
 // One proximal block step on the block's rows (the other rows fixed); u and z updated. Returns the largest
-// change of the block's row velocities it made.
-double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
-  const int m = (int)blk.rows.size();
-  if (m == 0) return 0.0;
-  VecX z0(m), w(m), lo(m), hi(m);
+// change of the block's row velocities it made. M: the block's size when known at compile time (a box face on
+// a box face: 4 normal rows, 8 tangent rows; unrolled fixed-size products), else Eigen::Dynamic.
+template <int M> double solveBlockSized(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
+  using Vec = std::conditional_t<M == Eigen::Dynamic, VecX, Eigen::Matrix<double, M, 1>>;
+  using Mat = std::conditional_t<M == Eigen::Dynamic, MatX, Eigen::Matrix<double, M, M>>;
+  const int m = blk.m;
+  const Eigen::Map<const Mat> D(blk.D.data(), m, m), Dp(blk.Dp.data(), m, m), Dpinv(blk.Dpinv.data(), m, m);
+  Vec z0, w, lo, hi;
+  if constexpr (M == Eigen::Dynamic) z0.resize(m), w.resize(m), lo.resize(m), hi.resize(m);
   for (int a = 0; a < m; ++a) {
     const int r = blk.rows[a];
     z0[a] = (*z)[r];
@@ -89,18 +97,17 @@ double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) 
     w[a] = rowVelocity((*p.rows)[r], *u) + p.reg[r] * z0[a] + p.b[r];
   }
   // proximal step (D + P) x = P z0 - q with w = D z0 + q: x = z0 - (D + P)^-1 w; fixed point w = 0
-  VecX x = z0 - blk.Dpinv * w;
+  Vec x = z0 - Dpinv * w;
   bool inside = x.allFinite();
   for (int a = 0; inside && a < m; ++a) inside = x[a] >= lo[a] && x[a] <= hi[a];
   if (!inside) { // inner PGS on (D + P) x = P z0 - q = Dp z0 - w
-    const VecX r = blk.Dp * z0 - w;
+    const Vec r = Dp * z0 - w;
     x = z0.cwiseMax(lo).cwiseMin(hi);
     for (int it = 0; it < kInner; ++it)
       for (int a = 0; a < m; ++a)
-        if (blk.Dp(a, a) > 0)
-          x[a] = std::clamp(x[a] - (blk.Dp.row(a).dot(x) - r[a]) / blk.Dp(a, a), lo[a], hi[a]);
+        if (Dp(a, a) > 0) x[a] = std::clamp(x[a] - (Dp.row(a).dot(x) - r[a]) / Dp(a, a), lo[a], hi[a]);
   }
-  const VecX dz = x - z0;
+  const Vec dz = x - z0;
   for (int a = 0; a < m; ++a) {
     if (dz[a] == 0.0) continue;
     addRowImpulse((*p.rows)[blk.rows[a]], dz[a], u);
@@ -108,45 +115,67 @@ double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) 
   }
   // the change of the block's row velocities, D dz (a move along the corners' near-dependent directions, which
   // changes no velocity, does not count)
-  return (blk.D * dz).lpNorm<Eigen::Infinity>();
+  return (D * dz).template lpNorm<Eigen::Infinity>();
 }
 
-// The manifolds of cs (contacts grouped by body pair) in the order of p.order; active rows only.
-std::vector<Manifold> manifolds(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per) {
-  std::map<std::pair<int, int>, int> index;
-  std::vector<Manifold> out;
-  std::vector<int> order = p.order;
-  if (order.empty())
-    for (int i = 0; i < p.size(); ++i) order.push_back(i);
-  for (int r : order) {
-    if (r % per != 0) continue; // one visit per contact, at its normal row
-    const int c = r / per;
-    const auto [it, fresh] = index.try_emplace({cs[c].a, cs[c].b}, (int)out.size());
-    if (fresh) out.emplace_back();
-    if ((int)out[it->second].tangent.rows.size() + per >
-        kMax) { // an oversized manifold goes on in a new block
-      index[{cs[c].a, cs[c].b}] = (int)out.size();
-      out.emplace_back();
-    }
-    Manifold& cur = out[index[{cs[c].a, cs[c].b}]];
-    for (int k = 0; k < per; ++k)
-      if (p.active(c * per + k)) (k == 0 ? cur.normal : cur.tangent).rows.push_back(c * per + k);
+double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
+  switch (blk.m) {
+  case 0:
+    return 0.0;
+  case 4:
+    return solveBlockSized<4>(p, blk, u, z);
+  case 8:
+    return solveBlockSized<8>(p, blk, u, z);
+  default:
+    return solveBlockSized<Eigen::Dynamic>(p, blk, u, z);
   }
-  for (Manifold& mf : out) mf.normal.build(p), mf.tangent.build(p);
-  return out;
+}
+
+// The manifolds of cs (contacts grouped by body pair, a new block when one is full; active rows only) into
+// *out, reused: their number returned, *seq their sweep order (by their first contact's place in p.order).
+int manifolds(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, std::vector<Manifold>* out,
+              std::vector<int>* seq) {
+  std::vector<std::array<int, 4>> key; // (a, b, place in the sweep order, contact), sorted by pair then place
+  key.reserve(p.size() / per);
+  auto visit = [&](int r) {
+    if (r % per == 0) key.push_back({cs[r / per].a, cs[r / per].b, (int)key.size(), r / per});
+  };
+  if (p.order.empty())
+    for (int i = 0; i < p.size(); ++i) visit(i);
+  else
+    for (int r : p.order) visit(r);
+  std::sort(key.begin(), key.end());
+  int n = 0;
+  for (size_t k = 0; k < key.size(); ++k) {
+    const bool same_pair = k > 0 && key[k][0] == key[k - 1][0] && key[k][1] == key[k - 1][1];
+    if (!same_pair || (*out)[n - 1].tangent.m + per > kMax) {
+      if (n == (int)out->size()) out->emplace_back();
+      Manifold& mf = (*out)[n++];
+      mf.normal.m = mf.tangent.m = 0, mf.first = key[k][2];
+    }
+    Manifold& cur = (*out)[n - 1];
+    for (int j = 0, c = key[k][3]; j < per; ++j)
+      if (p.active(c * per + j)) (j == 0 ? cur.normal : cur.tangent).add(c * per + j);
+  }
+  seq->resize(n);
+  for (int k = 0; k < n; ++k) (*seq)[k] = k, (*out)[k].normal.build(p), (*out)[k].tangent.build(p);
+  std::sort(seq->begin(), seq->end(), [&](int a, int b) { return (*out)[a].first < (*out)[b].first; });
+  return n;
 }
 } // namespace
 
 int blockPgsSweeps(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, int max_sweeps, double tol,
                    lcp::Vec* z) {
-  const std::vector<Manifold> mfs = manifolds(p, cs, per);
+  // the manifolds' fixed-capacity blocks (4 kB of matrices each) kept from call to call on this thread
+  thread_local std::vector<Manifold> mfs;
+  thread_local std::vector<int> seq;
+  const int n = manifolds(p, cs, per, &mfs, &seq);
   V6s u = bodyImpulseVelocities(*p.rows, *z, p.nbodies);
-  const int n = (int)mfs.size();
   int sweep = 0;
   for (double change = lcp::kInf; sweep < max_sweeps && !(change <= tol); ++sweep) {
     change = 0.0;
     for (int k = 0; k < n; ++k) {
-      const Manifold& mf = mfs[p.symmetric && sweep % 2 ? n - 1 - k : k];
+      const Manifold& mf = mfs[seq[p.symmetric && sweep % 2 ? n - 1 - k : k]];
       change = std::max(change, solveBlock(p, mf.normal, &u, z));
       change = std::max(change, solveBlock(p, mf.tangent, &u, z));
     }
