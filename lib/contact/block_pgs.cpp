@@ -14,59 +14,84 @@ namespace {
 constexpr int kMax = 16;
 using MatX = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, kMax>;
 using VecX = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMax, 1>;
+using JX = Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor, kMax, 6>;
 
 // Proximal weight of a block update (relative to D's diagonal): the corners' rows are nearly dependent (D
 // singular up to the 1e-6 / 1e-8 compliance), so the plain block answer can carry large self-equilibrated
 // parts; (D + P) x = P z0 - q has the same fixed point (x = z0 where D z0 + q = 0) and stays near z0.
 // Measured on the base-10 pyramid (fast mode): 1e-4 .. 1e-1 all stand, 1e-2 the least work.
 constexpr double kProx = 1e-2;
-// The inverse of a small symmetric positive definite matrix (Cholesky D = L L^T, then L^-T L^-1), written out:
-// Eigen's general small-matrix paths cost more than the arithmetic at m <= 16.
-MatX spdInverse(const MatX& D) {
-  const int m = (int)D.rows();
-  MatX L = MatX::Zero(m, m), Li = MatX::Zero(m, m), out(m, m);
+// The inverse of a small symmetric positive definite matrix (Cholesky D = L L^T, then L^-T L^-1), written out
+// on plain arrays: Eigen's general small-matrix paths cost more than the arithmetic at m <= 16. M: the size
+// when known at compile time (the loops unrolled; a box face's 4 and 8 rows), else Eigen::Dynamic.
+template <int M> void spdInverseSized(const MatX& D, MatX* out) {
+  const int m = M == Eigen::Dynamic ? (int)D.rows() : M;
+  double L[kMax][kMax], Li[kMax][kMax];
   for (int j = 0; j < m; ++j) {
     double d = D(j, j);
-    for (int k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
-    L(j, j) = std::sqrt(d);
+    for (int k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
+    L[j][j] = std::sqrt(d);
     for (int i = j + 1; i < m; ++i) {
       double s = D(i, j);
-      for (int k = 0; k < j; ++k) s -= L(i, k) * L(j, k);
-      L(i, j) = s / L(j, j);
+      for (int k = 0; k < j; ++k) s -= L[i][k] * L[j][k];
+      L[i][j] = s / L[j][j];
     }
   }
   for (int j = 0; j < m; ++j) { // Li = L^-1 (lower), column by column
-    Li(j, j) = 1.0 / L(j, j);
+    Li[j][j] = 1.0 / L[j][j];
     for (int i = j + 1; i < m; ++i) {
       double s = 0.0;
-      for (int k = j; k < i; ++k) s -= L(i, k) * Li(k, j);
-      Li(i, j) = s / L(i, i);
+      for (int k = j; k < i; ++k) s -= L[i][k] * Li[k][j];
+      Li[i][j] = s / L[i][i];
     }
   }
+  out->resize(m, m);
   for (int i = 0; i < m; ++i)
     for (int j = 0; j <= i; ++j) {
       double s = 0.0;
-      for (int k = i; k < m; ++k) s += Li(k, i) * Li(k, j);
-      out(i, j) = out(j, i) = s;
+      for (int k = i; k < m; ++k) s += Li[k][i] * Li[k][j];
+      (*out)(i, j) = (*out)(j, i) = s;
     }
-  return out;
 }
 
-// One group of rows solved together: D (regularised), Dp = D + P, Dp^-1. Fixed capacity throughout: the
-// blocks are kept from step to step (blockPgsSweeps), so a step allocates nothing for them.
+void spdInverse(const MatX& D, MatX* out) {
+  if (D.rows() == 4) return spdInverseSized<4>(D, out);
+  if (D.rows() == 8) return spdInverseSized<8>(D, out);
+  spdInverseSized<Eigen::Dynamic>(D, out);
+}
+
+// One group of rows solved together, all between the same two bodies ba, bb (-1: static): the rows' J and
+// M^-1 J^T parts at each body stacked (Ja, Ma, Jb, Mb: m x 6), so that the block's row velocities are
+// Ja u_a + Jb u_b and its impulses move the bodies by Ma^T dz, Mb^T dz; D = Ja Ma^T + Jb Mb^T + diag(reg)
+// (the rows share no other body), Dp = D + P, Dp^-1. Fixed capacity throughout: the blocks are kept from step
+// to step (blockPgsSweeps), so a step allocates nothing for them.
 struct Block {
-  int m = 0;
+  int m = 0, ba = -1, bb = -1;
   std::array<int, kMax> rows;
+  JX Ja, Jb, Ma, Mb;
+  VecX reg, b;
   MatX D, Dp, Dpinv; // Dp = D + kProx diag(D): the proximal term
   void build(const SparseBoxLcp& p) {
-    D.resize(m, m);
+    if (m == 0) return;
+    ba = (*p.rows)[rows[0]].ba, bb = (*p.rows)[rows[0]].bb;
+    Ja.resize(m, 6), Jb.resize(m, 6), Ma.resize(m, 6), Mb.resize(m, 6), reg.resize(m), b.resize(m);
     for (int a = 0; a < m; ++a) {
-      D(a, a) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[a]]) + p.reg[rows[a]];
-      for (int b = a + 1; b < m; ++b) D(a, b) = D(b, a) = rowCoupling((*p.rows)[rows[a]], (*p.rows)[rows[b]]);
+      const JRow& R = (*p.rows)[rows[a]];
+      Ja.row(a) = R.ja.transpose(), Jb.row(a) = R.jb.transpose();
+      Ma.row(a) = R.ma.transpose(), Mb.row(a) = R.mb.transpose();
+      reg[a] = p.reg[rows[a]], b[a] = p.b[rows[a]];
     }
+    D.resize(m, m);
+    for (int a = 0; a < m; ++a)
+      for (int c = a; c < m; ++c) {
+        double v = a == c ? reg[a] : 0.0;
+        if (ba >= 0) v += Ja.row(a).dot(Ma.row(c));
+        if (bb >= 0) v += Jb.row(a).dot(Mb.row(c));
+        D(a, c) = D(c, a) = v;
+      }
     Dp = D;
     Dp.diagonal() *= 1.0 + kProx;
-    Dpinv = spdInverse(Dp); // applied many times per step
+    spdInverse(Dp, &Dpinv); // applied many times per step
   }
   void add(int row) { rows[m++] = row; }
 };
@@ -86,36 +111,40 @@ constexpr int kInner = 2;
 template <int M> double solveBlockSized(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {
   using Vec = std::conditional_t<M == Eigen::Dynamic, VecX, Eigen::Matrix<double, M, 1>>;
   using Mat = std::conditional_t<M == Eigen::Dynamic, MatX, Eigen::Matrix<double, M, M>>;
+  using Jm = std::conditional_t<M == Eigen::Dynamic, JX, Eigen::Matrix<double, M, 6, Eigen::RowMajor>>;
   const int m = blk.m;
   const Eigen::Map<const Mat> D(blk.D.data(), m, m), Dp(blk.Dp.data(), m, m), Dpinv(blk.Dpinv.data(), m, m);
-  Vec z0, w, lo, hi;
-  if constexpr (M == Eigen::Dynamic) z0.resize(m), w.resize(m), lo.resize(m), hi.resize(m);
+  const Eigen::Map<const Jm> Ja(blk.Ja.data(), m, 6), Jb(blk.Jb.data(), m, 6), Ma(blk.Ma.data(), m, 6),
+      Mb(blk.Mb.data(), m, 6);
+  const Eigen::Map<const Vec> reg(blk.reg.data(), m), b(blk.b.data(), m);
+  Vec z0, lo, hi;
+  if constexpr (M == Eigen::Dynamic) z0.resize(m), lo.resize(m), hi.resize(m);
   for (int a = 0; a < m; ++a) {
     const int r = blk.rows[a];
     z0[a] = (*z)[r];
     lo[a] = p.lower(r, *z), hi[a] = p.upper(r, *z);
-    w[a] = rowVelocity((*p.rows)[r], *u) + p.reg[r] * z0[a] + p.b[r];
   }
+  Vec w = reg.cwiseProduct(z0) + b; // the block's row velocities
+  if (blk.ba >= 0) w.noalias() += Ja.lazyProduct((*u)[blk.ba]);
+  if (blk.bb >= 0) w.noalias() += Jb.lazyProduct((*u)[blk.bb]);
   // proximal step (D + P) x = P z0 - q with w = D z0 + q: x = z0 - (D + P)^-1 w; fixed point w = 0
-  Vec x = z0 - Dpinv * w;
+  Vec x = z0 - Dpinv.lazyProduct(w); // coefficient-wise: no general gemv at these sizes
   bool inside = x.allFinite();
   for (int a = 0; inside && a < m; ++a) inside = x[a] >= lo[a] && x[a] <= hi[a];
   if (!inside) { // inner PGS on (D + P) x = P z0 - q = Dp z0 - w
-    const Vec r = Dp * z0 - w;
+    const Vec r = Dp.lazyProduct(z0) - w;
     x = z0.cwiseMax(lo).cwiseMin(hi);
     for (int it = 0; it < kInner; ++it)
       for (int a = 0; a < m; ++a)
         if (Dp(a, a) > 0) x[a] = std::clamp(x[a] - (Dp.row(a).dot(x) - r[a]) / Dp(a, a), lo[a], hi[a]);
   }
   const Vec dz = x - z0;
-  for (int a = 0; a < m; ++a) {
-    if (dz[a] == 0.0) continue;
-    addRowImpulse((*p.rows)[blk.rows[a]], dz[a], u);
-    (*z)[blk.rows[a]] = x[a];
-  }
+  if (blk.ba >= 0) (*u)[blk.ba].noalias() += Ma.transpose().lazyProduct(dz);
+  if (blk.bb >= 0) (*u)[blk.bb].noalias() += Mb.transpose().lazyProduct(dz);
+  for (int a = 0; a < m; ++a) (*z)[blk.rows[a]] = x[a];
   // the change of the block's row velocities, D dz (a move along the corners' near-dependent directions, which
   // changes no velocity, does not count)
-  return (D * dz).template lpNorm<Eigen::Infinity>();
+  return D.lazyProduct(dz).template lpNorm<Eigen::Infinity>();
 }
 
 double solveBlock(const SparseBoxLcp& p, const Block& blk, V6s* u, lcp::Vec* z) {

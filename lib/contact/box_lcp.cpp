@@ -10,6 +10,7 @@ namespace suite::contact {
 
 std::vector<ConstraintRow> boxRows(const std::vector<Contact>& cs, bool friction) {
   std::vector<ConstraintRow> rows;
+  rows.reserve(cs.size() * (friction ? 3 : 1));
   for (int i = 0; i < (int)cs.size(); ++i) {
     rows.push_back({i, cs[i].n, true});
     if (friction) {

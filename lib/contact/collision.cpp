@@ -36,16 +36,17 @@ void planeContacts(const Body& A, int a, const Body& P, int b, double margin, Cs
     break;
   }
   case ShapeType::Box: {
-    std::vector<std::pair<double, int>> corners;
+    std::array<std::pair<double, int>, 8> corners;
+    int nk = 0;
     for (int k = 0; k < 8; ++k) {
       const Vec3 s((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1);
       const Vec3 c = A.x + R * s.cwiseProduct(A.shape.half);
       const double phi = n.dot(c) - d;
-      if (phi < margin) corners.push_back({phi, k});
+      if (phi < margin) corners[nk++] = {phi, k};
     }
-    std::sort(corners.begin(), corners.end());
-    if (corners.size() > 4) corners.resize(4);
-    for (auto& [phi, k] : corners) {
+    std::sort(corners.begin(), corners.begin() + nk);
+    for (int i = 0; i < std::min(nk, 4); ++i) {
+      const auto [phi, k] = corners[i];
       const Vec3 s((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1);
       push(out, a, b, A.x + R * s.cwiseProduct(A.shape.half), n, phi, k);
     }
@@ -253,40 +254,51 @@ void edgeEdge(const Body& A, int a, const Body& B, int b, const Mat3& Ra, const 
   push(out, a, b, 0.5 * (ca + cb), -L, (cb - ca).dot(L), 0); // normal from b into a
 }
 
+// A convex polygon of at most 8 vertices (a quad clipped by 4 planes gains at most one vertex per plane), and
+// the contact points taken from it: fixed capacity, nothing allocated per pair.
+struct Poly {
+  std::array<Vec3, 8> v;
+  int n = 0;
+};
+struct Points {
+  std::array<std::pair<Vec3, double>, 8> v;
+  int n = 0;
+};
+
 // Sutherland-Hodgman: poly clipped against the four side planes s . (p - fc) <= e of the reference face
 // (false: nothing left).
-bool clipToFace(const Vec3& fc, const Vec3& u1, double e1, const Vec3& u2, double e2,
-                std::vector<Vec3>* poly) {
+bool clipToFace(const Vec3& fc, const Vec3& u1, double e1, const Vec3& u2, double e2, Poly* poly) {
   const std::array<std::pair<Vec3, double>, 4> planes = {
       std::make_pair(u1, e1), std::make_pair(Vec3(-u1), e1), std::make_pair(u2, e2),
       std::make_pair(Vec3(-u2), e2)};
   for (const auto& [s, e] : planes) {
-    std::vector<Vec3> next;
-    for (size_t i = 0; i < poly->size(); ++i) {
-      const Vec3& P = (*poly)[i];
-      const Vec3& Q = (*poly)[(i + 1) % poly->size()];
+    Poly next;
+    for (int i = 0; i < poly->n; ++i) {
+      const Vec3& P = poly->v[i];
+      const Vec3& Q = poly->v[(i + 1) % poly->n];
       const double dp = s.dot(P - fc) - e, dq = s.dot(Q - fc) - e;
-      if (dp <= 0) next.push_back(P);
-      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) next.push_back(P + (Q - P) * (dp / (dp - dq)));
+      if (dp <= 0 && next.n < 8) next.v[next.n++] = P;
+      if (((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) && next.n < 8)
+        next.v[next.n++] = P + (Q - P) * (dp / (dp - dq));
     }
-    poly->swap(next);
-    if (poly->empty()) return false;
+    *poly = next;
+    if (poly->n == 0) return false;
   }
   return true;
 }
 
 // More than 4 points: keep the extreme points along the diagonals of the reference face (axes u1, u2).
-void keepFour(const Vec3& u1, const Vec3& u2, std::vector<std::pair<Vec3, double>>* pts) {
-  std::vector<std::pair<Vec3, double>> keep;
+void keepFour(const Vec3& u1, const Vec3& u2, Points* pts) {
+  Points keep;
   for (const Vec3& dir : {Vec3(u1 + u2), Vec3(u1 - u2), Vec3(-u1 - u2), Vec3(-u1 + u2)}) {
-    size_t bi = 0;
-    for (size_t i = 1; i < pts->size(); ++i)
-      if ((*pts)[i].first.dot(dir) > (*pts)[bi].first.dot(dir)) bi = i;
+    int bi = 0;
+    for (int i = 1; i < pts->n; ++i)
+      if (pts->v[i].first.dot(dir) > pts->v[bi].first.dot(dir)) bi = i;
     bool dup = false;
-    for (auto& k : keep) dup = dup || (k.first - (*pts)[bi].first).norm() < 1e-12;
-    if (!dup) keep.push_back((*pts)[bi]);
+    for (int k = 0; k < keep.n; ++k) dup = dup || (keep.v[k].first - pts->v[bi].first).norm() < 1e-12;
+    if (!dup) keep.v[keep.n++] = pts->v[bi];
   }
-  pts->swap(keep);
+  *pts = keep;
 }
 
 // Face contact: the incident face of the other box clipped by face `axis` of the reference box (owner 0: A,
@@ -311,17 +323,17 @@ void faceContact(const Body& A, int a, const Body& B, int b, const Mat3& Ra, con
   const Vec3 ic = In.x + sgn * In.shape.half[j] * Ri.col(j);
   const int iu = (j + 1) % 3, iv = (j + 2) % 3;
   const Vec3 w1 = Ri.col(iu) * In.shape.half[iu], w2 = Ri.col(iv) * In.shape.half[iv];
-  std::vector<Vec3> poly = {ic + w1 + w2, ic - w1 + w2, ic - w1 - w2, ic + w1 - w2};
+  Poly poly;
+  poly.v = {ic + w1 + w2, ic - w1 + w2, ic - w1 - w2, ic + w1 - w2}, poly.n = 4;
   if (!clipToFace(fc, u1, e1, u2, e2, &poly)) return;
-  std::vector<std::pair<Vec3, double>> pts;
-  for (const Vec3& p : poly) {
-    const double phi = (p - fc).dot(nr);
-    if (phi < margin) pts.push_back({p, phi});
+  Points pts;
+  for (int i = 0; i < poly.n; ++i) {
+    const double phi = (poly.v[i] - fc).dot(nr);
+    if (phi < margin) pts.v[pts.n++] = {poly.v[i], phi};
   }
-  if (pts.size() > 4) keepFour(u1, u2, &pts);
+  if (pts.n > 4) keepFour(u1, u2, &pts);
   const Vec3 n = (&In == &A) ? nr : Vec3(-nr); // from b into a
-  int f = 0;
-  for (auto& [p, phi] : pts) push(out, a, b, p, n, phi, f++);
+  for (int f = 0; f < pts.n; ++f) push(out, a, b, pts.v[f].first, n, pts.v[f].second, f);
 }
 
 // Box-box: separating axis over the six face axes and the nine edge-edge axes; a face axis gives the incident
@@ -424,6 +436,7 @@ Vec3 relativeVelocity(const std::vector<Body>& bodies, const Contact& c) {
 std::vector<Contact> findContacts(const std::vector<Body>& bodies, double margin, const Vec3& gravity,
                                   double dt, double slip_eps) {
   std::vector<Contact> cs;
+  cs.reserve(4 * bodies.size()); // a resting box: about 4 points
   std::vector<double> reach(bodies.size());
   for (size_t i = 0; i < bodies.size(); ++i) reach[i] = stepReach(bodies[i], dt, gravity);
   for (auto& [i, j] : broadPhase(bodies, margin, false, &reach))

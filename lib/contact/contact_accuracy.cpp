@@ -39,15 +39,21 @@ std::vector<Choice> accuracyChoices() {
 }
 
 int pileHeight(const std::vector<Contact>& cs, const std::vector<Body>& bodies) {
-  std::vector<std::vector<int>> nbr(bodies.size());
-  for (const Contact& c : cs) nbr[c.a].push_back(c.b), nbr[c.b].push_back(c.a);
-  std::vector<int> layer(bodies.size(), -1), queue;
-  for (size_t i = 0; i < bodies.size(); ++i)
-    if (bodies[i].is_static && !nbr[i].empty()) layer[i] = 0, queue.push_back((int)i);
+  const int nb = (int)bodies.size();
+  std::vector<int> start(nb + 1, 0), nbr(2 * cs.size()); // the contacts' body graph, compressed rows
+  for (const Contact& c : cs) ++start[c.a + 1], ++start[c.b + 1];
+  for (int i = 0; i < nb; ++i) start[i + 1] += start[i];
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (const Contact& c : cs) nbr[next[c.a]++] = c.b, nbr[next[c.b]++] = c.a;
+  std::vector<int> layer(nb, -1), queue;
+  queue.reserve(nb);
+  for (int i = 0; i < nb; ++i)
+    if (bodies[i].is_static && start[i + 1] > start[i]) layer[i] = 0, queue.push_back(i);
   int height = 0;
   for (size_t k = 0; k < queue.size(); ++k)
-    for (int j : nbr[queue[k]])
-      if (layer[j] < 0) layer[j] = layer[queue[k]] + 1, height = layer[j], queue.push_back(j);
+    for (int e = start[queue[k]]; e < start[queue[k] + 1]; ++e)
+      if (layer[nbr[e]] < 0)
+        layer[nbr[e]] = layer[queue[k]] + 1, height = layer[nbr[e]], queue.push_back(nbr[e]);
   return height;
 }
 

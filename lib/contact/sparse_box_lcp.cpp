@@ -136,6 +136,7 @@ double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w_out)
 
 std::vector<int> heightOrder(const std::vector<Contact>& cs, const Vec3& gravity, int per) {
   std::vector<int> c(cs.size()), rows;
+  rows.reserve(cs.size() * per);
   for (size_t i = 0; i < cs.size(); ++i) c[i] = (int)i;
   std::stable_sort(c.begin(), c.end(),
                    [&](int a, int b) { return -gravity.dot(cs[a].p) < -gravity.dot(cs[b].p); });

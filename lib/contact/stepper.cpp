@@ -9,9 +9,9 @@
 #include "contact/friction_formulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 namespace suite::contact {
@@ -57,17 +57,23 @@ std::string simplifications(const StepperOptions& o, const std::vector<Body>& bo
 
 void forceMeasures(const std::vector<Contact>& cs, const std::vector<Vec3>& lam, double mu, double* ratio,
                    double* violation, double* normal) {
-  std::map<std::pair<int, int>, Vec3> ft;
+  std::vector<std::array<int, 3>> by_pair(cs.size()); // (a, b, index): each pair's contacts together
   double fn = 0.0, viol = 0.0;
   for (size_t i = 0; i < cs.size(); ++i) {
-    const Vec3 t = lam[i][1] * cs[i].t1 + lam[i][2] * cs[i].t2;
-    auto it = ft.emplace(std::make_pair(cs[i].a, cs[i].b), Vec3::Zero()).first;
-    it->second += t;
+    by_pair[i] = {cs[i].a, cs[i].b, (int)i};
     fn += lam[i][0];
     viol += std::max(0.0, std::hypot(lam[i][1], lam[i][2]) - mu * lam[i][0]);
   }
+  std::sort(by_pair.begin(), by_pair.end());
   double tsum = 0.0;
-  for (auto& e : ft) tsum += e.second.norm();
+  Vec3 ft = Vec3::Zero(); // the tangential impulse of the current pair
+  for (size_t k = 0; k < by_pair.size(); ++k) {
+    const int i = by_pair[k][2];
+    ft += lam[i][1] * cs[i].t1 + lam[i][2] * cs[i].t2;
+    const bool last =
+        k + 1 == by_pair.size() || by_pair[k + 1][0] != by_pair[k][0] || by_pair[k + 1][1] != by_pair[k][1];
+    if (last) tsum += ft.norm(), ft.setZero();
+  }
   *normal = fn;
   *ratio = fn > 0 ? tsum / fn : 0.0;
   *violation = fn > 0 ? viol / fn : 0.0;
@@ -197,16 +203,21 @@ void Stepper::matchPreviousImpulses(const std::vector<Body>& bodies, std::vector
   prev->assign(nc, Vec3::Zero());
   has_prev->assign(nc, false);
   prev_rung->assign(nc, -1);
-  std::map<std::pair<int, int>, std::vector<int>> by_pair;
+  // the previous contacts sorted by (pair, index): a pair's candidates are one contiguous, increasing range
+  std::vector<std::array<int, 3>> by_pair(prev_contacts_.size());
   for (int i = 0; i < (int)prev_contacts_.size(); ++i)
-    by_pair[{prev_contacts_[i].a, prev_contacts_[i].b}].push_back(i);
+    by_pair[i] = {prev_contacts_[i].a, prev_contacts_[i].b, i};
+  std::sort(by_pair.begin(), by_pair.end());
   std::vector<long long> ids(nc);
-  const std::vector<int> none;
+  std::vector<int> candidates;
   for (int i = 0; i < nc; ++i) {
     const Contact& c = contacts_[i];
     const double tol = 0.1 * std::min(bodies[c.a].boundingRadius(), bodies[c.b].boundingRadius());
-    const auto it = by_pair.find({c.a, c.b});
-    const int k = matchPrevious(prev_contacts_, it == by_pair.end() ? none : it->second, c, tol);
+    candidates.clear();
+    for (auto it = std::lower_bound(by_pair.begin(), by_pair.end(), std::array<int, 3>{c.a, c.b, -1});
+         it != by_pair.end() && (*it)[0] == c.a && (*it)[1] == c.b; ++it)
+      candidates.push_back((*it)[2]);
+    const int k = matchPrevious(prev_contacts_, candidates, c, tol);
     if (k >= 0)
       (*prev)[i] = carriedImpulse(prev_contacts_[k], prev_impulses_[k], c, o_), (*has_prev)[i] = true;
     if (k >= 0 && k < (int)prev_rungs_.size()) (*prev_rung)[i] = prev_rungs_[k];
