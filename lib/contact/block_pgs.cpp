@@ -26,23 +26,24 @@ constexpr double kProx = 1e-2;
 // when known at compile time (the loops unrolled; a box face's 4 and 8 rows), else Eigen::Dynamic.
 template <int M> void spdInverseSized(const MatX& D, MatX* out) {
   const int m = M == Eigen::Dynamic ? (int)D.rows() : M;
-  double L[kMax][kMax], Li[kMax][kMax];
+  double L[kMax][kMax], Li[kMax][kMax], inv_diag[kMax]; // inv_diag = 1 / L_jj: one division per row
   for (int j = 0; j < m; ++j) {
     double d = D(j, j);
     for (int k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
     L[j][j] = std::sqrt(d);
+    inv_diag[j] = 1.0 / L[j][j];
     for (int i = j + 1; i < m; ++i) {
       double s = D(i, j);
       for (int k = 0; k < j; ++k) s -= L[i][k] * L[j][k];
-      L[i][j] = s / L[j][j];
+      L[i][j] = s * inv_diag[j];
     }
   }
   for (int j = 0; j < m; ++j) { // Li = L^-1 (lower), column by column
-    Li[j][j] = 1.0 / L[j][j];
+    Li[j][j] = inv_diag[j];
     for (int i = j + 1; i < m; ++i) {
       double s = 0.0;
       for (int k = j; k < i; ++k) s -= L[i][k] * Li[k][j];
-      Li[i][j] = s / L[i][i];
+      Li[i][j] = s * inv_diag[i];
     }
   }
   out->resize(m, m);

@@ -68,8 +68,9 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
     const Body& B = bodies[c.b];
     J.ja = jacobian(A, c.p, d, 1.0);
     J.jb = jacobian(B, c.p, d, -1.0);
-    if (!A.is_static) J.ba = c.a, J.ma = applyInvMass(A, inv_i[c.a], J.ja);
-    if (!B.is_static) J.bb = c.b, J.mb = applyInvMass(B, inv_i[c.b], J.jb);
+    J.ba = A.is_static ? -1 : c.a, J.bb = B.is_static ? -1 : c.b;
+    J.ma = A.is_static ? V6::Zero().eval() : applyInvMass(A, inv_i[c.a], J.ja);
+    J.mb = B.is_static ? V6::Zero().eval() : applyInvMass(B, inv_i[c.b], J.jb);
     V6 va, vb;
     va << vstar[c.a], A.w;
     vb << vstar[c.b], B.w;

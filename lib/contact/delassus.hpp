@@ -26,10 +26,11 @@ struct ConstraintRow {
 
 using V6 = Eigen::Matrix<double, 6, 1>;
 
-// One constraint row: J = [ja for body ba, jb for body bb], with M^-1 J^T parts ma, mb (-1: static).
+// One constraint row: J = [ja for body ba, jb for body bb], with M^-1 J^T parts ma, mb (-1: static; its m part
+// zero). Set by buildDelassus, which writes every member (the rows are rebuilt each step: no zero-fill first).
 struct JRow {
   int ba = -1, bb = -1;
-  V6 ja = V6::Zero(), jb = V6::Zero(), ma = V6::Zero(), mb = V6::Zero();
+  V6 ja, jb, ma, mb;
 };
 
 using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor>;

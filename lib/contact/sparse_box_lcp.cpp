@@ -135,12 +135,12 @@ double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w_out)
 }
 
 std::vector<int> heightOrder(const std::vector<Contact>& cs, const Vec3& gravity, int per) {
-  std::vector<int> c(cs.size()), rows;
+  std::vector<std::pair<double, int>> key(cs.size()); // (height, index): the stable order by height
+  for (size_t i = 0; i < cs.size(); ++i) key[i] = {-gravity.dot(cs[i].p), (int)i};
+  std::sort(key.begin(), key.end());
+  std::vector<int> rows;
   rows.reserve(cs.size() * per);
-  for (size_t i = 0; i < cs.size(); ++i) c[i] = (int)i;
-  std::stable_sort(c.begin(), c.end(),
-                   [&](int a, int b) { return -gravity.dot(cs[a].p) < -gravity.dot(cs[b].p); });
-  for (int i : c)
+  for (const auto& [h, i] : key)
     for (int k = 0; k < per; ++k) rows.push_back(i * per + k);
   return rows;
 }
