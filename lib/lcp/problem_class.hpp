@@ -21,6 +21,7 @@
 #include "lcp/problem.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace suite::lcp {
@@ -36,10 +37,13 @@ struct ProblemFeatures {
   bool cholesky_tried = false; // the factorisation below was attempted
   bool cholesky_ok = false; // Cholesky of M (symmetric) or of its symmetric part succeeded (not tried if dd)
   int finite_lower = 0, finite_upper = 0; // number of finite bounds
-  std::string structure;                  // "lcp", "box", "mlcp"
-  std::string matrix;                     // "dd", "spd", "sym", "pd", "gen"
-  std::string size;                       // "small", "medium", "large"
-  std::string name() const { return structure + "-" + matrix + "-" + size; }
+  std::string_view structure;             // "lcp", "box", "mlcp" (static strings: no copy per problem)
+  std::string_view matrix;                // "dd", "spd", "sym", "pd", "gen"
+  std::string_view size;                  // "small", "medium", "large"
+  int class_index = -1;                   // index of name() in problemClassNames()
+  std::string name() const {
+    return std::string(structure) + "-" + std::string(matrix) + "-" + std::string(size);
+  }
 };
 
 // The features and class of p (which must be valid, see validate()). thorough: decide definiteness by an
