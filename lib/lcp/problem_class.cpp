@@ -14,7 +14,7 @@ namespace {
 
 // The parts of a class name; problemClassNames() lists every combination in this order.
 const char* const kStructures[] = {"lcp", "box", "mlcp"};
-const char* const kMatrices[] = {"dd", "spd", "sym", "pd", "gen"};
+const char* const kMatrices[] = {"dd", "spd", "sym", "pd", "gen", "tri"};
 const char* const kSizes[] = {"small", "medium", "large"};
 constexpr int kNumMatrices = sizeof kMatrices / sizeof kMatrices[0];
 constexpr int kNumSizes = sizeof kSizes / sizeof kSizes[0];
@@ -98,6 +98,18 @@ bool minorsPositive(const Mat& M) {
   return true;
 }
 
+// M lower or upper triangular (every entry on one side of the diagonal exactly 0); stops at the first nonzero
+// entry on each side (a dense matrix: after a few entries).
+bool triangular(const Mat& M) {
+  const Eigen::Index n = M.rows();
+  bool lower = true, upper = true;
+  for (Eigen::Index j = 0; j < n && (lower || upper); ++j) {
+    lower = lower && (M.col(j).head(j).array() == 0.0).all();
+    upper = upper && (M.col(j).tail(n - 1 - j).array() == 0.0).all();
+  }
+  return lower || upper;
+}
+
 bool choleskySucceeds(const Mat& S) {
   Eigen::LLT<Mat> llt(S);
   return llt.info() == Eigen::Success && llt.matrixLLT().diagonal().allFinite() &&
@@ -131,8 +143,9 @@ ProblemFeatures classify(const Problem& p, bool thorough) {
     scanColumns(p.M, &f);
     f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
   }
-  int matrix = 0; // dd
-  if (!f.diag_dominant) {
+  f.triangular = !f.symmetric && !f.diag_dominant && f.diag_positive && triangular(p.M);
+  int matrix = f.diag_dominant ? 0 : 5; // dd, tri
+  if (!f.diag_dominant && !f.triangular) {
     const bool def = definite(p, thorough, &f);
     matrix = f.symmetric ? (def ? 1 : 2) : (def ? 3 : 4);
   }
