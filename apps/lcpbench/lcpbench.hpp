@@ -10,6 +10,7 @@
 #include "lcp/solver.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -38,6 +39,9 @@ struct Options {
   PetscInt chunk = 0, flush_every = 4096;
   PetscReal flush_seconds = 30.0, delay = 0.0, max_walltime = 0.0;
   PetscBool strict = PETSC_FALSE, resume = PETSC_TRUE;
+  // timing (lcpbench_timing.cpp): 0 = one timed run per (solver, problem)
+  PetscReal time_repeat = 0.0;
+  PetscInt time_batches = 3;
 
   bool fromFiles() const { return family == "file"; }
   bool hasAuto() const { return std::find(solvers.begin(), solvers.end(), "auto") != solvers.end(); }
@@ -56,6 +60,20 @@ inline const char* const kFieldNames[kFields] = {"status", "iterations", "pivots
 // order, -1: none), number of solvers tried, the tried ones in order (-1 padding).
 constexpr int kAutoFields = 3 + suite::lcp::kAutoMaxTried;
 
+// Timing of one (solver, problem), lcpbench_timing.cpp: repeat_time 0 = the one timed run of solve().
+struct Timing {
+  double repeat_time = 0.0; // seconds of CPU time one batch of repetitions lasts at least
+  int batches = 3;          // batches timed; the fastest one's time per run is recorded
+};
+constexpr long long kMaxRepetitions = 1000000; // runs in one batch at most
+// run(timed) solves once (timed: fill Result::time / cpu_time). Returns the first, timed run's result; with
+// t.repeat_time > 0 its time / cpu_time are replaced by the time per run of the fastest of t.batches batches
+// of R untimed runs, R grown until a batch takes >= t.repeat_time CPU seconds (at most kMaxRepetitions).
+suite::lcp::Result timedRun(const std::function<suite::lcp::Result(bool timed)>& run, const Timing& t);
+// The next batch size after a batch of reps runs took batch_cpu seconds: reps when the batch reached
+// repeat_time (or kMaxRepetitions), else at least twice reps, aiming at 1.2 repeat_time.
+long long repetitionsFor(double batch_cpu, long long reps, double repeat_time);
+
 struct Batch {
   std::string family;
   suite::lcp::GeneratorParams gp;
@@ -68,6 +86,7 @@ struct Batch {
   suite::lcp::Portfolio portfolio; // the table of "auto"
   int auto_index = -1;             // position of "auto" in solver_names, -1 if absent
   double delay = 0.0;              // testing: seconds of sleep after each problem
+  Timing timing;                   // -time_repeat, -time_batches
 
   bool fromFiles() const { return family == "file"; }
   // index, n, kFields per solver, then (with auto) class, succeeding solver, tried count, kAutoMaxTried tried

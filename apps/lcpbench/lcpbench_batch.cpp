@@ -52,6 +52,7 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
   b->opt = {static_cast<int>(o.max_it), o.rel_tol, nullptr, o.omega, static_cast<int>(o.block_size),
             o.refine == PETSC_TRUE};
   b->delay = o.delay;
+  b->timing = {o.time_repeat, static_cast<int>(o.time_batches)};
   b->count = o.count;
   if (!b->fromFiles()) PetscFunctionReturn(0);
   b->file_problems.resize(o.files.size());
@@ -86,7 +87,12 @@ Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec) {
   ao.max_iterations = b.opt.max_iterations;
   ao.portfolio = &b.portfolio;
   AutoInfo info;
-  const Result r = solveAuto(*p, ao, &info);
+  const Result r = timedRun(
+      [&](bool timed) {
+        ao.timed = timed;
+        return solveAuto(*p, ao, timed ? &info : nullptr);
+      },
+      b.timing);
   rec[0] = problemClassIndex(info.features.name());
   rec[1] = r.ok() ? registryIndex(info.solver) : -1.0;
   rec[2] = static_cast<double>(info.attempts.size());
@@ -117,7 +123,13 @@ void solveOne(const Batch& b, long long k, double* rec) {
     if (static_cast<int>(s) == b.auto_index)
       r = solveAutoRecorded(b, err.empty() ? p : nullptr, rec + b.autoBase());
     else if (err.empty() && p)
-      r = solve(*b.solvers[s], *p, b.opt);
+      r = timedRun(
+          [&](bool timed) {
+            SolverOptions so = b.opt;
+            so.timed = timed;
+            return solve(*b.solvers[s], *p, so);
+          },
+          b.timing);
     const double v[kFields] = {static_cast<double>(r.status),
                                static_cast<double>(r.iterations),
                                static_cast<double>(r.pivots),

@@ -70,7 +70,9 @@ BatchHeader batchHeader(const Options& o, const Batch& b) {
                    {"omega", exactText(o.omega)},
                    {"block_size", to_string(o.block_size)},
                    {"rel_tol", exactText(o.rel_tol)},
-                   {"refine", o.refine ? "1" : "0"}};
+                   {"refine", o.refine ? "1" : "0"},
+                   {"time_repeat", exactText(o.time_repeat)},
+                   {"time_batches", to_string(o.time_batches)}};
   const BatchHeader files = {{"files", suite::joinCommaList(o.files)}, {"fclib_model", o.fclib_model}};
   const BatchHeader generated = {{"n", to_string(o.n)},         {"seed", to_string(o.seed)},
                                  {"cond", exactText(o.cond)},   {"qrange", exactText(o.qrange)},

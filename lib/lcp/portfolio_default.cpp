@@ -6,41 +6,47 @@
 namespace suite::lcp {
 
 const Portfolio& builtinPortfolio() {
-  static const Portfolio t = {{
-                                  "box-dd-small",
-                                  "box-spd-large",
-                                  "box-spd-medium",
-                                  "box-spd-small",
-                                  "lcp-dd-small",
-                                  "lcp-gen-medium",
-                                  "lcp-gen-small",
-                                  "lcp-pd-medium",
-                                  "lcp-spd-large",
-                                  "lcp-spd-medium",
-                                  "lcp-spd-small",
-                                  "lcp-sym-small",
-                                  "mlcp-gen-small",
-                                  "mlcp-pd-small",
-                                  "default",
-                              },
-                              {
-                                  {"pgs", "lemke", "keller", "cottle_dantzig"},
-                                  {"bpp", "lemke", "keller", "cottle_dantzig"},
-                                  {"bpp", "keller", "smoothed_newton", "cottle_dantzig"},
-                                  {"bpp", "lemke", "keller", "cottle_dantzig"},
-                                  {"lemke", "keller", "cottle_dantzig", "murty"},
-                                  {"lemke", "cottle_dantzig", "smoothed_newton", "fb_newton"},
-                                  {"pgs", "lemke", "smoothed_newton", "fb_newton"},
-                                  {"lemke", "keller", "cottle_dantzig", "murty"},
-                                  {"bpp", "lemke", "keller", "cottle_dantzig"},
-                                  {"bpp", "lemke", "keller", "cottle_dantzig"},
-                                  {"cottle_dantzig", "lemke", "keller", "murty"},
-                                  {"pgs", "lemke", "keller", "cottle_dantzig"},
-                                  {"pgs", "smoothed_newton", "lemke", "cottle_dantzig"},
-                                  {"murty", "lemke", "keller", "cottle_dantzig"},
-                                  {"smoothed_newton", "lemke", "cottle_dantzig", "keller"},
-                              },
-                              "built-in"};
+  static const Portfolio t = [] {
+    Portfolio p = {{
+                       "box-dd-small",
+                       "box-spd-large",
+                       "box-spd-medium",
+                       "box-spd-small",
+                       "lcp-dd-small",
+                       "lcp-gen-medium",
+                       "lcp-gen-small",
+                       "lcp-pd-medium",
+                       "lcp-spd-large",
+                       "lcp-spd-medium",
+                       "lcp-spd-small",
+                       "lcp-sym-small",
+                       "lcp-tri-small",
+                       "mlcp-gen-small",
+                       "mlcp-tri-small",
+                       "default",
+                   },
+                   {
+                       {"pgs", "lemke", "keller", "cottle_dantzig"},
+                       {"bpp", "lemke", "keller", "cottle_dantzig"},
+                       {"bpp", "lemke", "keller", "cottle_dantzig"},
+                       {"bpp", "lemke", "keller", "cottle_dantzig"},
+                       {"lemke", "keller", "cottle_dantzig", "murty"},
+                       {"lemke", "cottle_dantzig", "smoothed_newton", "fb_newton"},
+                       {"lemke", "bpp", "fb_newton", "smoothed_newton"},
+                       {"lemke", "keller", "cottle_dantzig", "murty"},
+                       {"bpp", "lemke", "keller", "cottle_dantzig"},
+                       {"bpp", "lemke", "keller", "cottle_dantzig"},
+                       {"cottle_dantzig", "lemke", "keller", "murty"},
+                       {"pgs", "lemke", "keller", "cottle_dantzig"},
+                       {"pgs", "lemke", "keller", "cottle_dantzig"},
+                       {"murty", "lemke", "cottle_dantzig", "bpp"},
+                       {"pgs", "lemke", "keller", "cottle_dantzig"},
+                       {"lemke", "smoothed_newton", "cottle_dantzig", "fb_newton"},
+                   },
+                   "built-in"};
+    p.indexRows();
+    return p;
+  }();
   return t;
 }
 

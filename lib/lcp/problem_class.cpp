@@ -12,42 +12,51 @@ namespace suite::lcp {
 
 namespace {
 
-const char* structureOf(const Problem& p) {
-  if (p.n_eq > 0) return "mlcp";
-  return p.isStandard() ? "lcp" : "box";
+// The parts of a class name; problemClassNames() lists every combination in this order.
+const char* const kStructures[] = {"lcp", "box", "mlcp"};
+const char* const kMatrices[] = {"dd", "spd", "sym", "pd", "gen", "tri"};
+const char* const kSizes[] = {"small", "medium", "large"};
+constexpr int kNumMatrices = sizeof kMatrices / sizeof kMatrices[0];
+constexpr int kNumSizes = sizeof kSizes / sizeof kSizes[0];
+
+int structureOf(const Problem& p) {
+  if (p.n_eq > 0) return 2;
+  return p.isStandard() ? 0 : 1;
 }
 
-const char* sizeOf(int n) {
-  return n <= 32 ? "small" : n <= 256 ? "medium" : "large";
+int sizeOf(int n) {
+  return n <= 32 ? 0 : n <= 256 ? 1 : 2;
 }
 
-// Sum of |c_i| over c[0, n): four independent accumulators (a single += chain waits on each addition's
-// latency: measured 120 us for the columns of a 300 x 300 matrix, against bpp's 80 us solve).
-double absSum(const double* c, Eigen::Index n) {
-  double s[4] = {0, 0, 0, 0};
-  Eigen::Index i = 0;
-  for (; i + 4 <= n; i += 4)
-    for (int k = 0; k < 4; ++k) s[k] += std::abs(c[i + k]);
-  for (; i < n; ++i) s[0] += std::abs(c[i]);
-  return (s[0] + s[1]) + (s[2] + s[3]);
+// Sets the class (names and index) from the parts' indices.
+void setClass(int structure, int matrix, int size, ProblemFeatures* f) {
+  f->structure = kStructures[structure];
+  f->matrix = kMatrices[matrix];
+  f->size = kSizes[size];
+  f->class_index = (structure * kNumMatrices + matrix) * kNumSizes + size;
 }
 
-// min over i in [from, n) of d_j d_i - c_i^2 (the 2 x 2 principal minors of rows i, j), +inf if empty.
-double minMinor(const double* c, const double* d, double dj, Eigen::Index from, Eigen::Index n) {
-  double m[4] = {kInf, kInf, kInf, kInf};
-  Eigen::Index i = from;
-  for (; i + 4 <= n; i += 4)
-    for (int k = 0; k < 4; ++k) m[k] = std::min(m[k], dj * d[i + k] - c[i + k] * c[i + k]);
-  for (; i < n; ++i) m[0] = std::min(m[0], dj * d[i] - c[i] * c[i]);
-  return std::min(std::min(m[0], m[1]), std::min(m[2], m[3]));
-}
+// n doubles, on the stack up to kStack (a malloc and free cost as much as classifying n = 10), else on the heap.
+class Scratch {
+public:
+  explicit Scratch(Eigen::Index n) : heap_(n > kStack ? n : 0), n_(n) {}
+  Eigen::Map<Vec> vec() { return Eigen::Map<Vec>(n_ > kStack ? heap_.data() : stack_, n_); }
+
+private:
+  static constexpr Eigen::Index kStack = 64;
+  double stack_[kStack];
+  Vec heap_;
+  Eigen::Index n_;
+};
 
 // Column by column (contiguous, vectorised): positive diagonal, strict row diagonal dominance.
 void scanColumns(const Mat& M, ProblemFeatures* f) {
   const Eigen::Index n = M.rows();
-  Vec off = Vec::Zero(n);                                          // row sums of |M_ij|, j != i
+  Scratch so(n), sd(n);
+  Eigen::Map<Vec> off = so.vec(), d = sd.vec(); // off: row sums of |M_ij|, j != i
+  off.setZero();
   for (Eigen::Index j = 0; j < n; ++j) off += M.col(j).cwiseAbs(); // elementwise: vectorised
-  const Vec d = M.diagonal();
+  d = M.diagonal();
   off -= d.cwiseAbs();
   f->diag_positive = n > 0 && d.minCoeff() > 0;
   f->diag_dominant = f->diag_positive && (off.array() < d.array()).all();
@@ -57,12 +66,16 @@ void scanColumns(const Mat& M, ProblemFeatures* f) {
 // diagonal, strict diagonal dominance, and every 2 x 2 principal minor > 0 (necessary for definiteness).
 void scanSymmetric(const Mat& M, ProblemFeatures* f) {
   const Eigen::Index n = M.rows();
-  const Vec d = M.diagonal();
+  Scratch sd(n);
+  Eigen::Map<Vec> d = sd.vec();
+  d = M.diagonal();
   const bool pos = n > 0 && d.minCoeff() > 0;
   bool dd = pos, minors = pos;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    dd = dd && absSum(M.col(j).data(), n) - std::abs(d(j)) < d(j);
-    minors = minors && minMinor(M.col(j).data(), d.data(), d(j), j + 1, n) > 0.0;
+  for (Eigen::Index j = 0; j < n && (dd || minors); ++j) { // Eigen's reductions: vectorised
+    const auto c = M.col(j).array();
+    const Eigen::Index k = n - 1 - j;
+    dd = dd && c.abs().sum() - std::abs(d(j)) < d(j);
+    minors = minors && (k == 0 || (d(j) * d.tail(k).array() - c.tail(k).square()).minCoeff() > 0.0);
   }
   f->diag_positive = pos;
   f->diag_dominant = dd;
@@ -73,7 +86,7 @@ void scanSymmetric(const Mat& M, ProblemFeatures* f) {
 // entries are read in 16 x 16 tiles.
 bool minorsPositive(const Mat& M) {
   const Eigen::Index n = M.rows();
-  const Vec d = M.diagonal();
+  const auto d = M.diagonal();
   constexpr Eigen::Index T = 16;
   for (Eigen::Index jb = 0; jb < n; jb += T)
     for (Eigen::Index ib = jb; ib < n; ib += T)
@@ -83,6 +96,18 @@ bool minorsPositive(const Mat& M) {
           if (!(d(i) * d(j) > s * s)) return false;
         }
   return true;
+}
+
+// M lower or upper triangular (every entry on one side of the diagonal exactly 0); stops at the first nonzero
+// entry on each side (a dense matrix: after a few entries).
+bool triangular(const Mat& M) {
+  const Eigen::Index n = M.rows();
+  bool lower = true, upper = true;
+  for (Eigen::Index j = 0; j < n && (lower || upper); ++j) {
+    lower = lower && (M.col(j).head(j).array() == 0.0).all();
+    upper = upper && (M.col(j).tail(n - 1 - j).array() == 0.0).all();
+  }
+  return lower || upper;
 }
 
 bool choleskySucceeds(const Mat& S) {
@@ -105,8 +130,6 @@ ProblemFeatures classify(const Problem& p, bool thorough) {
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
-  f.structure = structureOf(p);
-  f.size = sizeOf(f.n);
   for (int i = 0; i < f.n; ++i) {
     f.finite_lower += std::isfinite(p.l[i]);
     f.finite_upper += std::isfinite(p.u[i]);
@@ -120,21 +143,22 @@ ProblemFeatures classify(const Problem& p, bool thorough) {
     scanColumns(p.M, &f);
     f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
   }
-  if (f.diag_dominant) {
-    f.matrix = "dd";
-    return f;
+  f.triangular = !f.symmetric && !f.diag_dominant && f.diag_positive && triangular(p.M);
+  int matrix = f.diag_dominant ? 0 : 5; // dd, tri
+  if (!f.diag_dominant && !f.triangular) {
+    const bool def = definite(p, thorough, &f);
+    matrix = f.symmetric ? (def ? 1 : 2) : (def ? 3 : 4);
   }
-  const bool def = definite(p, thorough, &f);
-  f.matrix = f.symmetric ? (def ? "spd" : "sym") : (def ? "pd" : "gen");
+  setClass(structureOf(p), matrix, sizeOf(f.n), &f);
   return f;
 }
 
 const std::vector<std::string>& problemClassNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> v;
-    for (const char* s : {"lcp", "box", "mlcp"})
-      for (const char* m : {"dd", "spd", "sym", "pd", "gen"})
-        for (const char* z : {"small", "medium", "large"}) v.push_back(std::string(s) + "-" + m + "-" + z);
+    for (const char* s : kStructures)
+      for (const char* m : kMatrices)
+        for (const char* z : kSizes) v.push_back(std::string(s) + "-" + m + "-" + z);
     return v;
   }();
   return names;

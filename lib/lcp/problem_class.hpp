@@ -6,6 +6,9 @@
 // Matrix type, first that applies:
 //   dd      strictly row diagonally dominant with a positive diagonal (a P-matrix; PGS converges: Cottle,
 //           Pang & Stone 2009, 5.3)
+//   tri     nonsymmetric, lower or upper triangular with a positive diagonal: a P-matrix (its principal minors
+//           are products of diagonal entries), e.g. Murty's example (Murty 1988, ch. 6: 2^n - 1 Lemke pivots),
+//           whose symmetric part is indefinite (it was "gen", with the Siconos files' general matrices)
 //   sym     symmetric (exactly) and not positive definite: a diagonal entry or a 2 x 2 principal minor <= 0,
 //           or (with the Cholesky test) the factorisation of M fails
 //   spd     symmetric otherwise: every diagonal entry and 2 x 2 principal minor > 0 (necessary for
@@ -21,6 +24,7 @@
 #include "lcp/problem.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace suite::lcp {
@@ -32,14 +36,18 @@ struct ProblemFeatures {
   bool symmetric = false;      // M == M^T exactly (isSymmetric(p) of solver.hpp, as the solvers test it)
   bool diag_positive = false;  // M_ii > 0 for all i
   bool diag_dominant = false;  // strictly row diagonally dominant with a positive diagonal
+  bool triangular = false;     // nonsymmetric, not dd, lower or upper triangular with a positive diagonal
   bool minors_ok = false;      // every diagonal entry and 2 x 2 principal minor of (M + M^T) / 2 is > 0
   bool cholesky_tried = false; // the factorisation below was attempted
   bool cholesky_ok = false; // Cholesky of M (symmetric) or of its symmetric part succeeded (not tried if dd)
   int finite_lower = 0, finite_upper = 0; // number of finite bounds
-  std::string structure;                  // "lcp", "box", "mlcp"
-  std::string matrix;                     // "dd", "spd", "sym", "pd", "gen"
-  std::string size;                       // "small", "medium", "large"
-  std::string name() const { return structure + "-" + matrix + "-" + size; }
+  std::string_view structure;             // "lcp", "box", "mlcp" (static strings: no copy per problem)
+  std::string_view matrix;                // "dd", "tri", "spd", "sym", "pd", "gen"
+  std::string_view size;                  // "small", "medium", "large"
+  int class_index = -1;                   // index of name() in problemClassNames()
+  std::string name() const {
+    return std::string(structure) + "-" + std::string(matrix) + "-" + std::string(size);
+  }
 };
 
 // The features and class of p (which must be valid, see validate()). thorough: decide definiteness by an

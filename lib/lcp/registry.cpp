@@ -62,4 +62,16 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
   return nullptr;
 }
 
+const Solver* registeredSolver(const std::string& name) {
+  static const std::vector<std::unique_ptr<Solver>> instances = [] {
+    std::vector<std::unique_ptr<Solver>> v;
+    for (const Entry& e : table()) v.push_back(e.make());
+    return v;
+  }();
+  static const std::vector<std::string> names = solverNames(); // std::string == compares sizes first
+  for (size_t i = 0; i < names.size(); ++i)
+    if (name == names[i]) return instances[i].get();
+  return nullptr;
+}
+
 } // namespace suite::lcp

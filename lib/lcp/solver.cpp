@@ -258,14 +258,18 @@ Result attempt(const Solver& s, const Problem& p, const Problem& solved, const V
 
 } // namespace
 
+Result attemptOn(const Solver& s, const Problem& p, bool first, const ChainOptions& o, double tol,
+                 Attempt* a) {
+  return attempt(s, p, p, nullptr, first, o, tol, a);
+}
+
 // The chain with each "auto" replaced by the built-in portfolio's chain of p's class (portfolio.hpp), solvers
 // already named left out.
 static std::vector<std::string> expandAuto(const Problem& p, const std::vector<std::string>& names) {
-  if (std::find(names.begin(), names.end(), "auto") == names.end()) return names;
   std::vector<std::string> out;
   for (const std::string& n : names) {
     const std::vector<std::string> one{n};
-    for (const std::string& s : n == "auto" ? builtinPortfolio().chainFor(classify(p).name()) : one)
+    for (const std::string& s : n == "auto" ? builtinPortfolio().chainFor(classify(p).class_index) : one)
       if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
   }
   return out;
@@ -273,27 +277,34 @@ static std::vector<std::string> expandAuto(const Problem& p, const std::vector<s
 
 Result solveWithChain(const Problem& p, const std::vector<std::string>& chain, const ChainOptions& o,
                       std::vector<Attempt>* attempts) {
-  const std::vector<std::string> names = expandAuto(p, chain);
+  const bool has_auto = std::any_of(chain.begin(), chain.end(),
+                                    [](const std::string& s) { return s.size() == 4 && s == "auto"; });
+  const std::vector<std::string> expanded = has_auto ? expandAuto(p, chain) : std::vector<std::string>();
+  const std::vector<std::string>& names = has_auto ? expanded : chain; // no copy without "auto"
   std::vector<Attempt> local;
   std::vector<Attempt>& att = attempts ? *attempts : local;
+  const int forms = o.scale ? 2 : 1;
   att.clear();
+  att.reserve(names.size() * forms);
   const Problem ps = o.scale ? scaledProblem(p, *o.scale) : Problem();
   const double tol = acceptanceTolerance(p, o.rel_tol);
   Result r;
-  for (size_t k = 0; k < names.size(); ++k)
-    for (int f = 0; f < (o.scale ? 2 : 1); ++f) {
-      Attempt a;
+  for (size_t k = 0; k < names.size(); ++k) {
+    const std::unique_ptr<Solver> made = o.make ? o.make(names[k]) : nullptr;
+    const Solver* s = o.make ? made.get() : registeredSolver(names[k]);
+    for (int f = 0; f < forms; ++f) {
+      att.emplace_back();
+      Attempt& a = att.back();
       a.solver = names[k];
       a.form = !o.scale ? Form::Plain : f == 0 ? Form::Scaled : Form::Unscaled;
-      const std::unique_ptr<Solver> s = o.make ? o.make(names[k]) : makeSolver(names[k]);
       a.known = s != nullptr;
       if (s) r = attempt(*s, p, f == 0 && o.scale ? ps : p, f == 0 ? o.scale : nullptr, k == 0, o, tol, &a);
-      att.push_back(a);
       if (a.accepted) {
         r.status = Status::Solved;
         return r;
       }
     }
+  }
   if (r.status == Status::Solved) r.status = Status::NotAccepted;
   return r;
 }

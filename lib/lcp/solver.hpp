@@ -71,6 +71,9 @@ struct SolverInfo {
 std::vector<SolverInfo> solverRegistry();
 // nullptr if the name is unknown.
 std::unique_ptr<Solver> makeSolver(const std::string& name);
+// The registry's shared instance of a solver (the solvers hold no state: run() is const), nullptr if the name
+// is unknown; solveWithChain uses it to create no solver per attempt.
+const Solver* registeredSolver(const std::string& name);
 
 // Runs the solver, recomputes w = Mz + q, residual and complementarity, optionally refines a claimed
 // solution by exact solves on its active set (at most 3, counted in Result::refinements), and accepts
@@ -117,6 +120,11 @@ struct ChainOptions {
 // attempts (optional): every attempt in order.
 Result solveWithChain(const Problem& p, const std::vector<std::string>& names, const ChainOptions& o,
                       std::vector<Attempt>* attempts = nullptr);
+// One attempt of a chain on p as given (no scaling; o.scale is not read): solve() with o's options (the
+// iteration cap o.first_max_iterations when first), refinement on p, acceptance when residual <= tol; fills
+// a but a->solver. solveWithChain's step, for callers running their own chain (solveAuto).
+Result attemptOn(const Solver& s, const Problem& p, bool first, const ChainOptions& o, double tol,
+                 Attempt* a);
 // The failed attempts in one line: "name[ (scaled| (unscaled)]: status (residual r[, message]); " each.
 std::string describeAttempts(const std::vector<Attempt>& attempts);
 

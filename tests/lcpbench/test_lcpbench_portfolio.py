@@ -6,6 +6,8 @@
 - Fallback recorded: a -portfolio table whose chain starts with pgs, on lcp_CPS_2 (pgs: unsupported, a zero
   diagonal entry): tried pgs then fb_newton, fb_newton succeeded.
 - Records identical at 1 and 2 ranks (every dataset but the times), auto included.
+- Timing by repetition (-time_repeat, -time_batches): every record but the times identical to one timed run
+  per solve, auto included; times positive and finite; the method in the /batch header; bad values refused.
 - A bad -portfolio file (not HDF5, wrong format, unknown solver index, no "default" class) and -portfolio
   without auto: non-zero exit and the message exactly once, at 1 and 2 ranks.
 Usage: test_lcpbench_portfolio.py LCPBENCH SICONOS_DIR
@@ -106,6 +108,35 @@ def ranks(exe, tmp):
     check(not diff and "results/auto/tried_0" in res[0], f"{len(res[0])} datasets identical at 1 and 2 ranks {diff[:3]}")
 
 
+def non_time_datasets(path):
+    d = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda n, o: d.__setitem__(n, o[...].tolist()) if isinstance(o, h5py.Dataset)
+                     and n.startswith("results/") and not n.endswith("time") else None)
+        times = np.concatenate([f[f"results/{s}/cpu_time"][:] for s in f["results"]])
+        header = dict(f["batch"].attrs)
+    return d, times, header
+
+
+def repeated_timing(exe, tmp):
+    args = ["-family", "random_box", "-n", "10", "-count", "6", "-cond", "1e2", "-solvers", "auto,bpp,pgs,lemke"]
+    once, rep = os.path.join(tmp, "once.h5"), os.path.join(tmp, "rep.h5")
+    p1 = run(exe, *args, "-output", once)
+    p2 = run(exe, *args, "-time_repeat", "1e-4", "-time_batches", "2", "-output", rep)
+    check(p1.returncode == 0 and p2.returncode == 0, "batches with one timed run and timed by repetition ran")
+    d1, _, _ = non_time_datasets(once)
+    d2, t2, h2 = non_time_datasets(rep)
+    diff = [k for k in d1 if d1[k] != d2.get(k)]
+    check(not diff and "results/auto/solver" in d1, f"{len(d1)} result datasets identical {diff[:3]}")
+    check(bool(np.all(np.isfinite(t2)) and np.all(t2 > 0)), "times by repetition positive and finite")
+    check(str(h2.get("time_repeat")) == "0.0001" and str(h2.get("time_batches")) == "2",
+          f"timing method in the batch header ({h2.get('time_repeat')}, {h2.get('time_batches')})")
+    for bad in (["-time_repeat", "-1"], ["-time_batches", "0"]):
+        p = run(exe, *args, *bad, "-output", os.path.join(tmp, "bad_timing.h5"))
+        check(p.returncode != 0 and "-time_repeat" in p.stdout and "-time_batches" in p.stdout,
+              f"{' '.join(bad)} refused with a message")
+
+
 def bad_tables(exe, tmp):
     cases = []
     junk = os.path.join(tmp, "junk.h5")
@@ -143,6 +174,7 @@ def main():
         siconos_coverage(exe, sic, tmp)
         fallback(exe, sic, tmp)
         ranks(exe, tmp)
+        repeated_timing(exe, tmp)
         bad_tables(exe, tmp)
     if failures:
         print(f"{len(failures)} check(s) failed")

@@ -38,7 +38,7 @@ TEST(ProblemClass, MatrixTypes) {
   EXPECT_EQ(classOf(makeLcp(mat2(1, 2, 2, 1), q)), "lcp-sym-small");     // eigenvalues 3, -1
   EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, -1), q)), "lcp-sym-small");    // negative diagonal
   EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, -1.5, 1), q)), "lcp-pd-small"); // symmetric part I
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-gen-small");     // symmetric part indefinite
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0.1, 1), q)), "lcp-gen-small");   // symmetric part indefinite
   const ProblemFeatures f = classify(makeLcp(mat2(1, 1.5, -1.5, 1), q), true);
   EXPECT_FALSE(f.symmetric);
   EXPECT_TRUE(f.minors_ok);
@@ -48,6 +48,33 @@ TEST(ProblemClass, MatrixTypes) {
   EXPECT_TRUE(f.diag_positive);
   EXPECT_FALSE(f.diag_dominant);
   EXPECT_DOUBLE_EQ(f.density, 1.0);
+}
+
+// Triangular with a positive diagonal (a P-matrix, e.g. Murty's example): its own class "tri", lower or upper,
+// whatever its symmetric part; not with a zero diagonal entry, not when symmetric (a diagonal matrix).
+TEST(ProblemClass, TriangularPMatrices) {
+  GeneratorParams gp;
+  gp.n = 8;
+  const Problem murty = generate("murty", gp, 0); // I + 2 strict lower triangle: symmetric part indefinite
+  const ProblemFeatures f = classify(murty);
+  EXPECT_EQ(f.name(), "lcp-tri-small");
+  EXPECT_TRUE(f.triangular);
+  EXPECT_FALSE(f.minors_ok);
+  gp.n = 40;
+  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-tri-medium");
+  const Vec q = Vec::Constant(2, -1.0);
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-tri-small");   // upper triangular
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, 0, 1), q)), "lcp-tri-small"); // symmetric part positive definite
+  EXPECT_EQ(classOf(makeLcp(mat2(0, 3, 0, 1), q)), "lcp-gen-small");   // zero diagonal entry
+  EXPECT_EQ(classOf(makeLcp(mat2(2, 0, 0, 1), q)), "lcp-dd-small");    // diagonal: symmetric, dominant
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, 3), q)), "lcp-dd-small");
+  EXPECT_EQ(classOf(makeBox(mat2(1, 0, 3, 1), q, Vec::Constant(2, -1.0), Vec::Constant(2, 1.0))),
+            "box-tri-small");
+  gp.n = 20;
+  gp.cond = 1e2;
+  EXPECT_EQ(classOf(generate("random_spd", gp, 0)), "lcp-spd-small"); // symmetric positive definite: not tri
+  EXPECT_FALSE(classify(generate("random_spd", gp, 0)).triangular);
+  EXPECT_EQ(classOf(generate("pmatrix", gp, 0)), "lcp-pd-small"); // dense nonsymmetric P-matrix: not tri
 }
 
 TEST(ProblemClass, StructureSizeAndFeatures) {
@@ -66,9 +93,10 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   EXPECT_EQ(big.name(), "lcp-spd-large");
   EXPECT_TRUE(big.cholesky_tried && big.cholesky_ok);
   EXPECT_EQ(classify(generate("pmatrix", gp, 0), true).name(), "lcp-pd-large");
-  // Murty's M = I + 2 strict lower triangle: symmetric part I + L + L^T with ones off the diagonal, singular
+  // Murty's M = I + 2 strict lower triangle: symmetric part I + L + L^T with ones off the diagonal, singular,
+  // but triangular with a positive diagonal (TriangularPMatrices)
   gp.n = 8;
-  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-gen-small");
+  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-tri-small");
   // MLCP: one free variable, then one complementarity variable
   const Problem m = makeMlcp(mat2(4, 1, 1, 4), Vec::Constant(2, -1.0), 1);
   EXPECT_EQ(classOf(m), "mlcp-dd-small");
