@@ -137,9 +137,10 @@ struct StepStats {
   std::vector<double> split_errors; // per pass: max|delta lambda_n| (pass 1: |lambda_n|_inf)
   std::vector<double> split_ratios; // force ratio after each pass
   int sleeping = 0;                 // bodies asleep during this step
-  int factorizations = 0;           // sparse factorisations (sparse active-set solves)
-  double penetration = 0.0;         // max(0, -phi) over the step's contacts (m)
-  bool budget_stop = false;         // balanced / fast: the sweeps ended at the budget, not the tolerance
+  int factorizations = 0;   // sparse active-set solves: each a numeric factorisation of its free set or,
+                            // within 16 rows of the last one, a low-rank update (body_space_solve.hpp)
+  double penetration = 0.0; // max(0, -phi) over the step's contacts (m)
+  bool budget_stop = false; // balanced / fast: the sweeps ended at the budget, not the tolerance
   // Islands (StepperOptions::islands): how many were solved (0: islands off or no contact), the largest one's
   // dynamic bodies and contacts. With islands, rows is the sum over the islands, iterations, pivots,
   // fallbacks, refinements and factorizations are summed, residual and splitting_error are the largest,

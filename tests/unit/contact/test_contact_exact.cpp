@@ -1,6 +1,6 @@
 // Unit tests of the exact contact path's speed-ups (issue #19): the body-space solver reused across free sets
 // gives the same answers as a fresh one (its symbolic analysis kept, its last factorisation reused only for
-// the same free set), the deferred sparse Delassus matrix equals the eager one, and the splitting passes of
+// the same free set) or updated by a few rows, the deferred sparse Delassus matrix equals the eager one, and the splitting passes of
 // a resting pyramid (fixed-point residual, Aitken extrapolation, damping after a stall) converge within the
 // pass cap in a bounded number of factorisations; the block Cholesky of the body-space matrix equals a dense
 // one.
@@ -71,6 +71,40 @@ TEST(ContactExactSolve, BodySpaceSolverReusedEqualsFresh) {
   }
   EXPECT_EQ(solver.solves(), 4);
   EXPECT_EQ(solver.factorizations(), 3); // the repeated free set reuses its factorisation
+}
+
+// A free set within a few rows (at least 16) of the factorised one is solved by a low-rank update of
+// that factorisation (rows added and removed), not a new one: the same answer as a fresh solver to round-off;
+// a set further away is factorised anew.
+TEST(ContactExactSolve, BodySpaceSolverUpdateEqualsFresh) {
+  const auto b = pyramid(5);
+  const DelassusSystem d = system(b, StepperOptions{}, false), s = system(b, StepperOptions{}, true);
+  const int n = (int)s.b.size();
+  BodySpaceSolver solver(s.rows, s.mass, s.reg);
+  const std::vector<int> base = freeSet(n, 5, 2);
+  std::vector<int> near = base; // 3 rows removed, 4 added (rows i % 5 == 2 with i < 20)
+  near.erase(near.begin() + 10), near.erase(near.begin() + 20), near.erase(near.begin() + 30);
+  for (int i : {2, 7, 12, 17}) near.push_back(i);
+  std::sort(near.begin(), near.end());
+  const std::vector<std::vector<int>> sets = {base, near, near, freeSet(n, 7, 3)};
+  for (size_t k = 0; k < sets.size(); ++k) {
+    const std::vector<int>& F = sets[k];
+    Vec r(F.size()), x, x_fresh;
+    for (size_t a = 0; a < F.size(); ++a) r[a] = std::sin(0.3 + a + k);
+    ASSERT_TRUE(solver.solve(F, r, &x));
+    ASSERT_TRUE(bodySpaceSolve(s.rows, s.mass, s.reg, F, r, &x_fresh));
+    const double diff = (x - x_fresh).lpNorm<Eigen::Infinity>() / x_fresh.lpNorm<Eigen::Infinity>();
+    const double backward = (d.A(F, F) * x - r).lpNorm<Eigen::Infinity>() /
+                            (d.A(F, F).lpNorm<Eigen::Infinity>() * x.lpNorm<Eigen::Infinity>());
+    std::printf(
+        "pyramid 5, set %zu (%zu rows): relative difference to a fresh solve %.1e, backward error %.1e\n", k,
+        F.size(), diff, backward);
+    EXPECT_LE(diff, 1e-12) << k;
+    EXPECT_LE(backward, 1e-15) << k;
+  }
+  EXPECT_EQ(solver.updates(), 1);        // near: 7 rows from base
+  EXPECT_EQ(solver.factorizations(), 2); // base, then the far set
+  EXPECT_EQ(solver.solves(), 4);
 }
 
 TEST(ContactExactSolve, DeferredSparseMatrixEqualsEager) {
