@@ -96,22 +96,17 @@ bool BodySpaceSolver::factor(const std::vector<int>& F) {
 // A_FF^-1 rhs by the Woodbury identity on the current factorisation.
 lcp::Vec BodySpaceSolver::woodbury(const std::vector<int>& F, const lcp::Vec& rhs) const {
   lcp::Vec g = lcp::Vec::Zero(6 * (int)mass_.size()), out(F.size());
-  for (size_t a = 0; a < F.size(); ++a) {
-    const JRow& J = rows_[F[a]];
-    const double s = rhs[a] / reg_[F[a]];
-    if (J.ba >= 0) g.segment<6>(at_[J.ba]) += s * J.ja;
-    if (J.bb >= 0) g.segment<6>(at_[J.bb]) += s * J.jb;
-  }
+  for (size_t a = 0; a < F.size(); ++a) addRowT(F[a], rhs[a] / reg_[F[a]], &g);
   kSolve(&g);
-  const lcp::Vec& y = g;
-  for (size_t a = 0; a < F.size(); ++a) {
-    const JRow& J = rows_[F[a]];
-    double jy = 0.0;
-    if (J.ba >= 0) jy += J.ja.dot(y.segment<6>(at_[J.ba]));
-    if (J.bb >= 0) jy += J.jb.dot(y.segment<6>(at_[J.bb]));
-    out[a] = (rhs[a] - jy) / reg_[F[a]];
-  }
+  for (size_t a = 0; a < F.size(); ++a) out[a] = (rhs[a] - rowDot(F[a], g)) / reg_[F[a]];
   return out;
+}
+
+// g += s J_i^T (row i's parts at its two bodies).
+void BodySpaceSolver::addRowT(int i, double s, lcp::Vec* g) const {
+  const JRow& J = rows_[i];
+  if (J.ba >= 0) g->segment<6>(at_[J.ba]) += s * J.ja;
+  if (J.bb >= 0) g->segment<6>(at_[J.bb]) += s * J.jb;
 }
 
 // A_FF x (matrix-free: u = M^-1 J_F^T x per body, then J_i u + D_i x_i).
@@ -180,9 +175,7 @@ int BodySpaceSolver::newColumn(int i) {
   const int n = 6 * (int)mass_.size();
   if (wcount_ == W_.cols()) W_.conservativeResize(n, std::max<Eigen::Index>(8, 2 * W_.cols()));
   lcp::Vec g = lcp::Vec::Zero(n);
-  const JRow& J = rows_[i];
-  if (J.ba >= 0) g.segment<6>(at_[J.ba]) = J.ja;
-  if (J.bb >= 0) g.segment<6>(at_[J.bb]) = J.jb;
+  addRowT(i, 1.0, &g);
   chol_.solve(&g);
   W_.col(wcount_) = g;
   return wcount_++;

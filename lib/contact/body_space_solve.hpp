@@ -49,6 +49,7 @@ private:
   int maxUpdate() const;
   int newColumn(int i);
   double rowDot(int i, const lcp::Vec& y) const;
+  void addRowT(int i, double s, lcp::Vec* g) const;
   void kSolve(lcp::Vec* y) const;
   double refinedSolve(const std::vector<int>& F, const lcp::Vec& r, lcp::Vec* x) const;
   double backwardError(const std::vector<int>& F, const lcp::Vec& r, const lcp::Vec& x) const;
