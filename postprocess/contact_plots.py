@@ -91,7 +91,7 @@ def plot_splitting(h5path, outdir, max_steps=40):
         e = split["error"][off[s] + 1:off[s + 1]]
         if len(e):
             ax.semilogy(np.arange(2, len(e) + 2), np.maximum(e, 1e-300), lw=0.7, alpha=0.7)
-    ax.set(xlabel="splitting pass", ylabel="max |delta lambda_n| (N s)",
+    ax.set(xlabel="splitting pass", ylabel="max A_nn |delta lambda_n| (m/s)",
            title=f"{attrs.get('scene', '')}: splitting convergence ({min(nsteps, max_steps)} steps)")
     fig.tight_layout()
     png = Path(outdir) / f"contact_{Path(h5path).stem}_splitting.png"
@@ -232,7 +232,7 @@ def plot_splitting_convergence(h5path, outdir):
         ax.axhline(np.median(d["stag_err"]), color="b", ls=":", lw=1,
                    label=f"stagnation: median pass {np.median(d['stag_pass']):.0f}, level "
                          f"{np.median(d['stag_err']):.2g}")
-    ax.set(xlabel="splitting iteration", ylabel="max |lambda_n^(k) - lambda_n^(k-1)| (N s)",
+    ax.set(xlabel="splitting iteration", ylabel="max A_nn |lambda_n^(k) - lambda_n^(k-1)| (m/s)",
            title=f"{d['attrs'].get('scene', '')}: splitting convergence, {d['steps']} steps")
     ax.legend(fontsize=7)
     fig.tight_layout()

@@ -156,8 +156,10 @@ PetscErrorCode stepperOptions(const Reader& r, MPI_Comm comm, StepperOptions* t)
   PetscCheck(splitStartFromName(start, &t->split_start), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-splitting_start %s: unknown", start.c_str());
   PetscCall(r.integer("-splitting_max_it", "Splitting: pass cap", &t->splitting_max_it));
-  PetscCall(
-      r.real("-splitting_tol", "Splitting: relative tolerance on max|delta lambda_n|", &t->splitting_tol));
+  PetscCall(r.real("-splitting_tol",
+                   "Splitting: tolerance on the normal velocity change max A_nn |delta lambda_n|, relative "
+                   "to 1 m/s + max A_nn lambda_n",
+                   &t->splitting_tol));
   PetscCall(r.integer("-polyhedral_directions", "Polyhedral: friction directions per contact",
                       &t->polyhedral_directions));
   PetscCall(r.real("-polyhedral_gamma_reg", "Polyhedral: compliance of the cone rows (x 1/A_tt)",

@@ -36,9 +36,13 @@ std::vector<double> weightEstimates(const ContactStep& step, const StepperOption
 // one body-space factorisation), the exact load of a structure at rest with every contact pressed and sticking.
 std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per);
 // One pass: the box LCP with bounds mu nu, warm-started from s->full, solved; s->full <- its answer.
-// err: max |change of lambda_n| (first pass: max lambda_n), nmax: max |lambda_n|. false: not solved.
+// err: max A_nn |change of lambda_n| (first pass: max A_nn lambda_n), nmax: max A_nn |lambda_n|, over the
+// contacts' normal rows n: velocities (m/s), so that the splitting's stop rule does not change when every mass
+// is scaled. false: not solved.
 bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,
                   ChainSolve& solver, BoxRows* s, double* err, double* nmax, StepStats* st);
+// A_nn of each contact's normal row (row i * per): the normal velocity a unit impulse makes there.
+std::vector<double> normalDiagonals(const DelassusSystem& sys, int nc, int per);
 // The impulses of s (z = full, lambda per contact).
 void boxImpulses(const BoxRows& s, Impulses* out);
 // One pass with the estimates nu (none, box, scaled_box): splitting_iterations 1, splitting_error its err.

@@ -83,8 +83,7 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
   if (sparse) {
     s.reg.resize(n);
     for (int r = 0; r < n; ++r) { // as A_ii - (J M^-1 J^T)_ii from S (the same rounding)
-      const JRow& J = s.rows[r];
-      const double d = (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
+      const double d = bareDiagonal(s.rows[r]);
       s.reg[r] = d * (1.0 + scale[r]) - d;
     }
     s.scale = std::move(scale);
@@ -96,6 +95,14 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
   s.A = delassusMatrix(s.rows);
   for (int r = 0; r < n; ++r) s.A(r, r) *= 1.0 + scale[r];
   return s;
+}
+
+double bareDiagonal(const JRow& J) {
+  return (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
+}
+
+double delassusDiagonal(const DelassusSystem& sys, int r) {
+  return sys.sparse ? bareDiagonal(sys.rows[r]) + sys.reg[r] : sys.A(r, r);
 }
 
 const SpMat& sparseMatrix(const DelassusSystem& sys) {

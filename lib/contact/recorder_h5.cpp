@@ -66,7 +66,7 @@ PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
     PetscCall(out.writeReplicated("/steps/fallbacks", rec.fallbacks.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/residual", rec.residual.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/splitting_iterations", rec.splitting_iterations.data(), {ns}, ""));
-    PetscCall(out.writeReplicated("/steps/splitting_error", rec.splitting_error.data(), {ns}, "N s"));
+    PetscCall(out.writeReplicated("/steps/splitting_error", rec.splitting_error.data(), {ns}, "m/s"));
     PetscCall(out.writeReplicated("/steps/energy", rec.energy.data(), {ns}, "J"));
     PetscCall(out.writeReplicated("/steps/wall_time", rec.step_wall.data(), {ns}, "s"));
     PetscCall(out.writeReplicated("/steps/factorizations", rec.factorizations.data(), {ns}, ""));
@@ -93,7 +93,7 @@ PetscErrorCode writeSplitting(H5Output& out, const Recorder& rec) {
   const unsigned long long nh = rec.split_errors.size(), ns = rec.time.size();
   PetscFunctionBeginUser;
   if (nh) {
-    PetscCall(out.writeReplicated("/splitting/error", rec.split_errors.data(), {nh}, "N s"));
+    PetscCall(out.writeReplicated("/splitting/error", rec.split_errors.data(), {nh}, "m/s"));
     PetscCall(out.writeReplicated("/splitting/force_ratio", rec.split_ratios.data(), {nh}, ""));
     PetscCall(out.writeReplicated("/splitting/offset", rec.split_offset.data(), {ns + 1}, ""));
     PetscCall(out.writeAttribute("/splitting", "layout",

@@ -6,13 +6,15 @@
 //               bounds read from the current normal impulse when coupled): Erleben, "Velocity-based shock
 //               propagation for multibody dynamics animation", ACM TOG 26 (2007); Catto, "Iterative dynamics
 //               with temporal coherence", GDC 2005 (sequential impulses with warm starting).
-//   activeSet   active-set Newton (block principal pivoting without the Murty backup; Judice & Pires,
-//               Comput. Oper. Res. 21 (1994)) from the states read off z - w: the free rows solved with a
-//               body-space factorisation (body_space_solve.hpp) when the compliance is positive and the
+//   activeSet   active-set Newton (block principal pivoting with a single-row backup; Judice & Pires,
+//               Comput. Oper. Res. 21 (1994)) from the states read off z - 8 w / A_ii (z - w / A_ii once
+//               the exchange stalls): the free rows solved with a body-space factorisation (body_space_solve.hpp) when the compliance is positive and the
 //               masses are given (by BodySpaceSolver when given one: its symbolic analysis and its last
 //               factorisation reused), else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
-// The residual is the natural-map residual of lcp/problem.hpp, so an answer is accepted by the same rule as
-// the dense chain's.
+// The residual is the diagonally scaled natural-map residual max_i A_ii |z_i - mid(l_i, u_i, z_i - w_i / A_ii)|,
+// in velocity units like the tolerance rel_tol (1 + |b|_inf): it equals |w_i| on a free row (the dense chain's
+// natural-map residual there) and does not change when every mass is scaled (lcp/problem.hpp's unscaled one
+// mixes impulses and velocities: 1,000 kg bodies made it 1,000 times stricter on rows at a bound).
 #pragma once
 
 #include "contact/body_space_solve.hpp"
@@ -28,6 +30,7 @@ struct SparseBoxLcp {
   const std::vector<M6>* mass = nullptr; // body mass matrices: free rows solved in body space when given
   BodySpaceSolver* body = nullptr; // with mass: the body-space solver kept across solves (else one each)
   lcp::Vec b, l, u, reg;           // reg: the compliance part of A_ii (A_ii - (J M^-1 J^T)_ii)
+  lcp::Vec diag;                   // A_ii (regularised), the scale of the residual and of the state read
   std::vector<int> link; // coupled bounds: row link[i] >= 0 gives |z_i| <= coef[i] z_link (else l, u)
   std::vector<double> coef;
   std::vector<int> order; // PGS row order (empty: 0..n-1)
@@ -52,7 +55,7 @@ struct SparseSolveStats {
 
 // The acceptance tolerance rel_tol (1 + |b|_inf over the active rows), as lcp::acceptanceTolerance.
 double sparseTolerance(const SparseBoxLcp& p, double rel_tol);
-// Natural-map residual of z (w = A z + b matrix-free) over the active rows; w returned when asked.
+// Scaled natural-map residual of z (w = A z + b matrix-free) over the active rows; w returned when asked.
 double sparseResidual(const SparseBoxLcp& p, const lcp::Vec& z, lcp::Vec* w = nullptr);
 // Row order of the sweeps: contact by contact (its rows together) by increasing height along -gravity, so that
 // one sweep carries the support from the ground up a stack (Erleben 2007's shock propagation order).
