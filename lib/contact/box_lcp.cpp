@@ -144,19 +144,15 @@ bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::s
   const bool sparse_ok = sys.sparse && sparsePass(sys, mu, s, solver.options().lcp_tol, &next, st);
   if (!sparse_ok && !densePass(sys, mu, chain, *s, solver, &next, st)) return false;
   *err = 0.0, *nmax = 0.0;
-  const std::vector<double> an = normalDiagonals(sys, s->nc, s->per);
+  if (s->an.empty()) // the diagonals do not change from pass to pass
+    for (int i = 0; i < s->nc; ++i) s->an.push_back(delassusDiagonal(sys, i * s->per));
+  const std::vector<double>& an = s->an;
   for (int i = 0; i < s->nc; ++i) {
     *err = std::max(*err, an[i] * std::abs(next[i * s->per] - (first ? 0.0 : s->full[i * s->per])));
     *nmax = std::max(*nmax, an[i] * std::abs(next[i * s->per]));
   }
   s->full = next;
   return true;
-}
-
-std::vector<double> normalDiagonals(const DelassusSystem& sys, int nc, int per) {
-  std::vector<double> an(nc);
-  for (int i = 0; i < nc; ++i) an[i] = delassusDiagonal(sys, i * per);
-  return an;
 }
 
 std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per) {

@@ -21,6 +21,7 @@ struct BoxRows {
   std::vector<double> nu;                // normal-impulse estimate per contact (the bounds are mu nu)
   lcp::Vec full;                         // impulse per row: the warm start before a pass, its answer after it
   std::shared_ptr<BodySpaceSolver> body; // sparse path: the body-space solver of the step, kept across passes
+  std::vector<double> an; // A_nn per contact (the step's normal diagonals), set by the first pass
 };
 
 // (n, t1, t2) per contact with friction, n alone without.
@@ -38,11 +39,9 @@ std::vector<double> stickingEstimates(const DelassusSystem& sys, int nc, int per
 // One pass: the box LCP with bounds mu nu, warm-started from s->full, solved; s->full <- its answer.
 // err: max A_nn |change of lambda_n| (first pass: max A_nn lambda_n), nmax: max A_nn |lambda_n|, over the
 // contacts' normal rows n: velocities (m/s), so that the splitting's stop rule does not change when every mass
-// is scaled. false: not solved.
+// is scaled. s->an is set on the first call. false: not solved.
 bool solveBoxPass(const DelassusSystem& sys, double mu, const std::vector<std::string>& chain, bool first,
                   ChainSolve& solver, BoxRows* s, double* err, double* nmax, StepStats* st);
-// A_nn of each contact's normal row (row i * per): the normal velocity a unit impulse makes there.
-std::vector<double> normalDiagonals(const DelassusSystem& sys, int nc, int per);
 // The impulses of s (z = full, lambda per contact).
 void boxImpulses(const BoxRows& s, Impulses* out);
 // One pass with the estimates nu (none, box, scaled_box): splitting_iterations 1, splitting_error its err.

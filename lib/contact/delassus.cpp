@@ -16,6 +16,11 @@ V6 jacobian(const Body& B, const Vec3& p, const Vec3& dir, double sign) {
   return j;
 }
 
+// (J M^-1 J^T)_rr of one row, without the compliance.
+double bareDiagonal(const JRow& J) {
+  return (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
+}
+
 V6 applyInvMass(const Body& B, const Mat3& inv_i, const V6& j) {
   V6 m;
   m.head<3>() = B.inv_mass * j.head<3>();
@@ -95,10 +100,6 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
   s.A = delassusMatrix(s.rows);
   for (int r = 0; r < n; ++r) s.A(r, r) *= 1.0 + scale[r];
   return s;
-}
-
-double bareDiagonal(const JRow& J) {
-  return (J.ba >= 0 ? J.ja.dot(J.ma) : 0.0) + (J.bb >= 0 ? J.jb.dot(J.mb) : 0.0);
 }
 
 double delassusDiagonal(const DelassusSystem& sys, int r) {

@@ -64,8 +64,6 @@ DelassusSystem buildDelassus(const std::vector<Body>& bodies, const std::vector<
                              bool defer_S = false);
 // The sparse A of a sparse sys: sys.S, built here on the first call when deferred.
 const SpMat& sparseMatrix(const DelassusSystem& sys);
-// (J M^-1 J^T)_rr of one row, without the compliance.
-double bareDiagonal(const JRow& J);
 // A_rr of sys (the compliance included), dense or sparse.
 double delassusDiagonal(const DelassusSystem& sys, int r);
 // The dense A of sys (sys.A, or formed from sys.S).

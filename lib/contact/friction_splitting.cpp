@@ -52,9 +52,9 @@ namespace {
 constexpr double kDamping = 0.5;
 
 // max_i A_nn,i |lambda_n,i - nu_i|: how far the pass's estimates were from its answer (as a velocity).
-double fixedPointResidual(const BoxRows& s, const std::vector<double>& nu, const std::vector<double>& an) {
+double fixedPointResidual(const BoxRows& s, const std::vector<double>& nu) {
   double e = 0.0;
-  for (int i = 0; i < s.nc; ++i) e = std::max(e, an[i] * std::abs(s.full[i * s.per] - nu[i]));
+  for (int i = 0; i < s.nc; ++i) e = std::max(e, s.an[i] * std::abs(s.full[i * s.per] - nu[i]));
   return e;
 }
 
@@ -118,12 +118,11 @@ bool SplittingFriction::impulses(const ContactStep& step, const DelassusSystem& 
   s.nu = startEstimates(step, sys);
   const int max_pass = std::max(1, o_.splitting_max_it);
   EstimateUpdate update;
-  const std::vector<double> an = sys.sparse ? normalDiagonals(sys, s.nc, s.per) : std::vector<double>();
   for (int pass = 0; pass < max_pass; ++pass) {
     double err = 0.0, nmax = 0.0, ratio = 0.0, viol = 0.0, fn = 0.0;
     const std::vector<double> nu = s.nu;
     if (!solveBoxPass(sys, o_.mu, chain_, pass == 0, solver, &s, &err, &nmax, st)) return false;
-    if (pass > 0 && sys.sparse) err = fixedPointResidual(s, nu, an);
+    if (pass > 0 && sys.sparse) err = fixedPointResidual(s, nu);
     boxImpulses(s, out);
     st->splitting_iterations = pass + 1;
     st->splitting_error = err;

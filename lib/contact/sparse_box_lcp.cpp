@@ -124,7 +124,7 @@ SparseBoxLcp makeSparseBoxLcp(const DelassusSystem& sys, lcp::Vec l, lcp::Vec u)
   p.b = sys.b, p.l = std::move(l), p.u = std::move(u);
   p.reg = sys.reg;
   p.diag.resize(p.size());
-  for (int i = 0; i < p.size(); ++i) p.diag[i] = bareDiagonal(sys.rows[i]) + p.reg[i];
+  for (int i = 0; i < p.size(); ++i) p.diag[i] = delassusDiagonal(sys, i);
   p.mass = &sys.mass;
   p.link.assign(p.size(), -1);
   p.coef.assign(p.size(), 0.0);

@@ -8,13 +8,13 @@
 //               with temporal coherence", GDC 2005 (sequential impulses with warm starting).
 //   activeSet   active-set Newton (block principal pivoting with a single-row backup; Judice & Pires,
 //               Comput. Oper. Res. 21 (1994)) from the states read off z - 8 w / A_ii (z - w / A_ii once
-//               the exchange stalls): the free rows solved with a body-space factorisation (body_space_solve.hpp) when the compliance is positive and the
-//               masses are given (by BodySpaceSolver when given one: its symbolic analysis and its last
-//               factorisation reused), else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
-// The residual is the diagonally scaled natural-map residual max_i A_ii |z_i - mid(l_i, u_i, z_i - w_i / A_ii)|,
-// in velocity units like the tolerance rel_tol (1 + |b|_inf): it equals |w_i| on a free row (the dense chain's
-// natural-map residual there) and does not change when every mass is scaled (lcp/problem.hpp's unscaled one
-// mixes impulses and velocities: 1,000 kg bodies made it 1,000 times stricter on rows at a bound).
+//               the exchange stalls): the free rows solved with a body-space factorisation
+//               (body_space_solve.hpp) when the compliance is positive and the masses are given (by
+//               BodySpaceSolver when given one: its symbolic analysis and its last factorisation reused), else a sparse LDL^T of A_FF (Eigen SimplicialLDLT, AMD ordering).
+// The residual is the diagonally scaled natural-map residual max_i A_ii |z_i - mid(l_i, u_i, z_i - w_i /
+// A_ii)|, in velocity units like the tolerance rel_tol (1 + |b|_inf): it equals |w_i| on a free row (the dense
+// chain's natural-map residual there) and does not change when every mass is scaled (lcp/problem.hpp's unscaled
+// one mixes impulses and velocities: 1,000 kg bodies made it 1,000 times stricter on rows at a bound).
 #pragma once
 
 #include "contact/body_space_solve.hpp"
