@@ -154,6 +154,19 @@ double threadCpuSeconds() {
   return static_cast<double>(c.tv_sec) + 1e-9 * static_cast<double>(c.tv_nsec);
 }
 
+// The only attempt, r by the first solver of the chain, accepted.
+void recordAccepted(const Result& r, const std::string& solver, std::vector<Attempt>* attempts) {
+  attempts->assign(1, Attempt{});
+  Attempt& a = attempts->front();
+  a.solver = solver;
+  a.accepted = true;
+  a.status = r.status;
+  a.residual = r.residual;
+  a.message = r.message;
+  a.iterations = r.iterations;
+  a.pivots = r.pivots;
+}
+
 // Iteration, pivot and refinement counts summed over the attempts a[0, m).
 void sumCounts(const Attempt* a, int m, Result* r) {
   r->iterations = 0;
@@ -166,19 +179,38 @@ void sumCounts(const Attempt* a, int m, Result* r) {
   }
 }
 
-// The chain of an indexed table (registered solvers; no factory) with the attempts in a fixed array: no
-// allocation besides the solvers' own, no solver created (a whole solve of a 2 x 2 LCP takes ~0.1 us).
-Result runIndexed(const Problem& p, const std::vector<std::string>& names,
-                  const std::vector<const Solver*>& s, const ChainOptions& co,
-                  std::vector<Attempt>* attempts) {
+// One solver of an auto run: its name and registered instance (nullptr: unknown or not indexed).
+struct Step {
+  const std::string* name = nullptr;
+  const Solver* solver = nullptr;
+};
+
+// The solvers an auto run tries, in order, into out (returns how many, at most kAutoMaxTried): the first of
+// the provisional class's chain (the minors test deferred, see solveAuto), then the final class's chain
+// without it. Without a deferred test both classes are the same, and this is the class's chain.
+int route(const Portfolio& t, int provisional, int final_class, Step* out) {
+  const auto& first = t.chainFor(provisional);
+  const auto& rest = t.chainFor(final_class);
+  const auto* s0 = t.solversFor(provisional);
+  const auto* s1 = t.solversFor(final_class);
+  int m = 0;
+  if (!first.empty()) out[m++] = {&first[0], s0 ? (*s0)[0] : nullptr};
+  for (size_t k = 0; k < rest.size() && m < kAutoMaxTried; ++k)
+    if (m == 0 || rest[k] != *out[0].name) out[m++] = {&rest[k], s1 ? (*s1)[k] : nullptr};
+  return m;
+}
+
+// Attempts steps[from, m) after the first one's answer r (from = 1: solve() did not accept it; its refinement
+// and acceptance by finishAttempt first), each by attemptOn, until one is accepted; att holds the attempts.
+Result runRest(const Problem& p, const Step* steps, int m, const ChainOptions& co, Result r,
+               std::vector<Attempt>* attempts) {
   Attempt att[kAutoMaxTried];
-  const int m = static_cast<int>(std::min<size_t>(names.size(), kAutoMaxTried));
   const double tol = acceptanceTolerance(p, co.rel_tol);
-  Result r;
   int k = 0;
   for (; k < m; ++k) {
-    att[k].known = s[k] != nullptr;
-    if (s[k]) r = attemptOn(*s[k], p, k == 0, co, tol, &att[k]);
+    att[k].known = steps[k].solver != nullptr;
+    if (steps[k].solver && k == 0) finishAttempt(p, co, tol, &r, &att[0]);
+    if (steps[k].solver && k > 0) r = attemptOn(*steps[k].solver, p, false, co, tol, &att[k]);
     if (att[k].accepted) break;
   }
   const int tried = std::min(k + 1, m);
@@ -188,48 +220,93 @@ Result runIndexed(const Problem& p, const std::vector<std::string>& names,
     r.status = Status::NotAccepted;
   if (attempts) {
     attempts->assign(att, att + tried);
-    for (int j = 0; j < tried; ++j) (*attempts)[j].solver = names[j];
+    for (int j = 0; j < tried; ++j) (*attempts)[j].solver = *steps[j].name;
   }
   sumCounts(att, tried, &r);
   return r;
 }
 
-} // namespace
-
-// The per-problem cost next to the chain's solves is kept small (a solve of n = 10 takes ~0.3 to 0.5 us): the
-// table indexed by class (no class name built), its solvers resolved once (runIndexed), and info's copies
-// made only when info is asked for.
-Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
-  const double t0 = o.timed ? MPI_Wtime() : 0.0, c0 = o.timed ? threadCpuSeconds() : 0.0;
-  const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();
-  const ProblemFeatures f = classify(p);
-  const std::vector<std::string>& full = t.chainFor(f.class_index);
-  const std::vector<const Solver*>* solvers = o.make ? nullptr : t.solversFor(f.class_index);
+// The route of an indexed table (registered solvers; no factory; first: the provisional class's chain). The
+// first solver runs through solve() directly: when solve() accepts its answer (residual <= the same
+// tolerance, z finite), so would the chain, and nothing else is done (a whole solve of a 2 x 2 LCP takes
+// ~0.1 us, of n = 10 ~0.5 us: the attempt records, options and refinement checks of the general path cost
+// ~0.05 us more). Otherwise the deferred test is done (f completed), and the rest of the route tried.
+Result runIndexed(const Problem& p, const Portfolio& t, const std::vector<const Solver*>& first,
+                  const AutoOptions& o, ProblemFeatures* f, std::vector<Attempt>* attempts) {
+  SolverOptions so;
+  so.rel_tol = o.rel_tol;
+  so.max_iterations = o.max_iterations;
+  so.timed = false;
+  Result r = first[0] ? solve(*first[0], p, so) : Result{};
+  if (r.ok()) {
+    r.refinements = 0; // as the general path counts them: those of the chain, after the method
+    if (attempts) recordAccepted(r, t.chainFor(f->class_index)[0], attempts);
+    return r;
+  }
+  const int provisional = f->class_index;
+  if (f->minors_deferred) *f = classify(p);
+  Step steps[kAutoMaxTried];
+  const int m = route(t, provisional, f->class_index, steps);
   ChainOptions co;
   co.rel_tol = o.rel_tol;
   co.first_max_iterations = o.max_iterations;
-  co.make = o.make;
-  co.timed = false; // timed here, once for the whole sequence
-  std::vector<Attempt> local;
+  co.timed = false;
+  return runRest(p, steps, m, co, std::move(r), attempts);
+}
+
+} // namespace
+
+// The per-problem cost next to the chain's solves is kept small (a solve of n = 10 takes ~0.3 to 0.5 us): the
+// table indexed by class (no class name built), its solvers resolved once (runIndexed), the 2 x 2 minors test
+// deferred, and info's copies made only when info is asked for.
+//
+// The deferred test: the minors test of classify() (O(n^2); at n = 100 to 300 about a fifth of bpp's time on a
+// box LCP) decides only between spd and sym (pd and gen) once the matrix is neither dd nor tri. For n > 32 the
+// problem is classed spd / pd provisionally, and the first solver of that class's chain runs; only when its
+// answer is not accepted is the test done, and the final class's chain tried without that solver (route). A
+// verified answer of the first solver is an answer whatever the test would say; the class recorded in info is
+// the final one. An indefinite matrix pays for one failed attempt where the first solver fails on it (no
+// symmetric-indefinite or gen problem of medium size is among the training problems; their classes use the
+// default chain). At n <= 32 the test costs ~20 ns and is done first.
+Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
+  const double t0 = o.timed ? MPI_Wtime() : 0.0, c0 = o.timed ? threadCpuSeconds() : 0.0;
+  const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();
+  ProblemFeatures f = classify(p, false, true);
   std::vector<Attempt>* att = info ? &info->attempts : nullptr;
+  const std::vector<const Solver*>* first = o.make ? nullptr : t.solversFor(f.class_index);
   Result r;
-  if (solvers) {
-    r = runIndexed(p, full, *solvers, co, att);
-  } else { // a table built by hand (not indexed) or a solver factory: the general chain
-    const std::vector<std::string> chain(full.begin(),
-                                         full.begin() + std::min<size_t>(full.size(), kAutoMaxTried));
+  if (first && !first->empty()) {
+    r = runIndexed(p, t, *first, o, &f, att);
+  } else { // a table built by hand (not indexed) or a solver factory: the general chain, on the same route
+    const int provisional = f.class_index;
+    if (f.minors_deferred) f = classify(p);
+    Step steps[kAutoMaxTried];
+    const int m = route(t, provisional, f.class_index, steps);
+    std::vector<std::string> names;
+    for (int k = 0; k < m; ++k) names.push_back(*steps[k].name);
+    ChainOptions co;
+    co.rel_tol = o.rel_tol;
+    co.first_max_iterations = o.max_iterations;
+    co.make = o.make;
+    co.timed = false; // timed here, once for the whole sequence
+    std::vector<Attempt> local;
     att = att ? att : &local;
-    r = solveWithChain(p, chain, co, att);
+    r = solveWithChain(p, names, co, att);
     sumCounts(att->data(), static_cast<int>(att->size()), &r);
   }
-  if (info) {
-    info->features = f;
-    info->chain.assign(full.begin(), full.begin() + std::min<size_t>(full.size(), kAutoMaxTried));
+  if (o.timed) {
+    r.time = MPI_Wtime() - t0;
+    r.cpu_time = threadCpuSeconds() - c0;
+  }
+  if (info) { // after the clocks: the record's classification is not part of the solve
+    const int provisional = classify(p, false, true).class_index;
+    info->features = f.minors_deferred ? classify(p) : f;
+    Step steps[kAutoMaxTried];
+    const int m = route(t, provisional, info->features.class_index, steps);
+    info->chain.clear();
+    for (int k = 0; k < m; ++k) info->chain.push_back(*steps[k].name);
     info->solver = r.ok() ? info->attempts.back().solver : "";
   }
-  if (!o.timed) return r;
-  r.time = MPI_Wtime() - t0;
-  r.cpu_time = threadCpuSeconds() - c0;
   return r;
 }
 

@@ -64,13 +64,17 @@ struct AutoOptions {
 
 struct AutoInfo {
   ProblemFeatures features;
-  std::vector<std::string> chain; // the chain of the class (at most kAutoMaxTried)
+  std::vector<std::string> chain; // the solvers auto would try, in order (the class's chain; with a deferred
+                                  // minors test, the provisional class's first solver, then the final
+                                  // class's chain without it; at most kAutoMaxTried)
   std::vector<Attempt> attempts;  // in order; the last one accepted when solved
   std::string solver;             // the solver whose answer was accepted, "" if none
 };
 
 // Classifies p, tries its class's chain (solveWithChain) and returns the first verified answer (Solved), or
-// the last attempt's result (never Solved). Result::time / cpu_time cover classification and every attempt.
+// the last attempt's result (never Solved). The 2 x 2 minors test of the classification is done only when the
+// first solver's answer is not accepted (see portfolio.cpp). Result::time / cpu_time cover classification and
+// every attempt (not the classification that fills info).
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info = nullptr);
 
 } // namespace suite::lcp

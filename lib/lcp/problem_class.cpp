@@ -13,9 +13,9 @@ namespace suite::lcp {
 namespace {
 
 // The parts of a class name; problemClassNames() lists every combination in this order.
-const char* const kStructures[] = {"lcp", "box", "mlcp"};
-const char* const kMatrices[] = {"dd", "spd", "sym", "pd", "gen", "tri"};
-const char* const kSizes[] = {"small", "medium", "large"};
+constexpr std::string_view kStructures[] = {"lcp", "box", "mlcp"};
+constexpr std::string_view kMatrices[] = {"dd", "spd", "sym", "pd", "gen", "tri"};
+constexpr std::string_view kSizes[] = {"small", "medium", "large"};
 constexpr int kNumMatrices = sizeof kMatrices / sizeof kMatrices[0];
 constexpr int kNumSizes = sizeof kSizes / sizeof kSizes[0];
 
@@ -63,14 +63,15 @@ void scanColumns(const Mat& M, ProblemFeatures* f) {
 }
 
 // Symmetric M in one pass over the columns (contiguous; a column's sums are its row's): positive
-// diagonal, strict diagonal dominance, and every 2 x 2 principal minor > 0 (necessary for definiteness).
-void scanSymmetric(const Mat& M, ProblemFeatures* f) {
+// diagonal, strict diagonal dominance, and (with_minors) every 2 x 2 principal minor > 0 (necessary for
+// definiteness; else minors_ok is left false).
+void scanSymmetric(const Mat& M, bool with_minors, ProblemFeatures* f) {
   const Eigen::Index n = M.rows();
   Scratch sd(n);
   Eigen::Map<Vec> d = sd.vec();
   d = M.diagonal();
   const bool pos = n > 0 && d.minCoeff() > 0;
-  bool dd = pos, minors = pos;
+  bool dd = pos, minors = pos && with_minors;
   for (Eigen::Index j = 0; j < n && (dd || minors); ++j) { // Eigen's reductions: vectorised
     const auto c = M.col(j).array();
     const Eigen::Index k = n - 1 - j;
@@ -126,7 +127,8 @@ bool definite(const Problem& p, bool cholesky, ProblemFeatures* f) {
 
 } // namespace
 
-ProblemFeatures classify(const Problem& p, bool thorough) {
+ProblemFeatures classify(const Problem& p, bool thorough, bool defer_minors) {
+  defer_minors = defer_minors && !thorough && sizeOf(p.size()) > 0; // medium and large only
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
@@ -138,15 +140,16 @@ ProblemFeatures classify(const Problem& p, bool thorough) {
     f.density = static_cast<double>((p.M.array() != 0.0).count()) / std::max(1.0, double(f.n) * f.n);
   f.symmetric = isSymmetric(p);
   if (f.symmetric) {
-    scanSymmetric(p.M, &f);
+    scanSymmetric(p.M, !defer_minors, &f);
   } else {
     scanColumns(p.M, &f);
-    f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
+    if (!defer_minors) f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
   }
   f.triangular = !f.symmetric && !f.diag_dominant && f.diag_positive && triangular(p.M);
   int matrix = f.diag_dominant ? 0 : 5; // dd, tri
   if (!f.diag_dominant && !f.triangular) {
-    const bool def = definite(p, thorough, &f);
+    f.minors_deferred = defer_minors && f.diag_positive; // else decided: not definite
+    const bool def = f.minors_deferred || definite(p, thorough, &f);
     matrix = f.symmetric ? (def ? 1 : 2) : (def ? 3 : 4);
   }
   setClass(structureOf(p), matrix, sizeOf(f.n), &f);
@@ -156,9 +159,10 @@ ProblemFeatures classify(const Problem& p, bool thorough) {
 const std::vector<std::string>& problemClassNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> v;
-    for (const char* s : kStructures)
-      for (const char* m : kMatrices)
-        for (const char* z : kSizes) v.push_back(std::string(s) + "-" + m + "-" + z);
+    for (std::string_view s : kStructures)
+      for (std::string_view m : kMatrices)
+        for (std::string_view z : kSizes)
+          v.push_back(std::string(s) + "-" + std::string(m) + "-" + std::string(z));
     return v;
   }();
   return names;

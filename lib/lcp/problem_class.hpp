@@ -40,6 +40,8 @@ struct ProblemFeatures {
   bool minors_ok = false;      // every diagonal entry and 2 x 2 principal minor of (M + M^T) / 2 is > 0
   bool cholesky_tried = false; // the factorisation below was attempted
   bool cholesky_ok = false; // Cholesky of M (symmetric) or of its symmetric part succeeded (not tried if dd)
+  bool minors_deferred = false; // classify(p, false, true): the minors test was left out, class spd / pd
+                                // provisional (see classify)
   int finite_lower = 0, finite_upper = 0; // number of finite bounds
   std::string_view structure;             // "lcp", "box", "mlcp" (static strings: no copy per problem)
   std::string_view matrix;                // "dd", "tri", "spd", "sym", "pd", "gen"
@@ -53,7 +55,11 @@ struct ProblemFeatures {
 // The features and class of p (which must be valid, see validate()). thorough: decide definiteness by an
 // attempted Cholesky factorisation when the O(n^2) tests pass, and count the nonzeros (density); off in the
 // portfolio (see above; the chains do not depend on the density of the dense problems measured).
-ProblemFeatures classify(const Problem& p, bool thorough = false);
+// defer_minors (not with thorough; solveAuto): when n > 32 (medium and large) and the matrix is neither dd
+// nor tri and its diagonal is positive, the 2 x 2 minors test (O(n^2), the dearest of the tests) is left out
+// and the matrix classed spd / pd provisionally, minors_deferred set (minors_ok is then not computed);
+// classify(p) gives the final class. (At n <= 32 the test costs ~20 ns, less than a failed first attempt.)
+ProblemFeatures classify(const Problem& p, bool thorough = false, bool defer_minors = false);
 
 // Every class name classify() can return, in a fixed order (the index used in lcpbench's output).
 const std::vector<std::string>& problemClassNames();

@@ -239,24 +239,26 @@ Result attempt(const Solver& s, const Problem& p, const Problem& solved, const V
     so.warm_start = &warm;
   }
   Result r = solve(s, solved, so);
-  a->status = r.status;
-  a->iterations = r.iterations;
-  a->pivots = r.pivots;
-  const bool finite = r.z.size() == p.size() && r.z.allFinite();
-  if (finite) {
-    if (sc) { // back to the original problem (solve() evaluated and refined p itself when unscaled)
-      r.z = sc->cwiseProduct(r.z);
-      evaluate(p, &r);
-    }
-    a->refinements = refineOnStates(p, tol, o.refinements, &r);
+  if (sc && r.z.size() == p.size() && r.z.allFinite()) { // back to the original problem
+    r.z = sc->cwiseProduct(r.z);
+    evaluate(p, &r);
   }
-  a->residual = r.residual;
-  a->message = r.message;
-  a->accepted = finite && r.residual <= tol;
+  finishAttempt(p, o, tol, &r, a);
   return r;
 }
 
 } // namespace
+
+void finishAttempt(const Problem& p, const ChainOptions& o, double tol, Result* r, Attempt* a) {
+  a->status = r->status;
+  a->iterations = r->iterations;
+  a->pivots = r->pivots;
+  const bool finite = r->z.size() == p.size() && r->z.allFinite();
+  if (finite) a->refinements = refineOnStates(p, tol, o.refinements, r);
+  a->residual = r->residual;
+  a->message = r->message;
+  a->accepted = finite && r->residual <= tol;
+}
 
 Result attemptOn(const Solver& s, const Problem& p, bool first, const ChainOptions& o, double tol,
                  Attempt* a) {

@@ -125,6 +125,11 @@ Result solveWithChain(const Problem& p, const std::vector<std::string>& names, c
 // a but a->solver. solveWithChain's step, for callers running their own chain (solveAuto).
 Result attemptOn(const Solver& s, const Problem& p, bool first, const ChainOptions& o, double tol,
                  Attempt* a);
+// The rest of such an attempt once solve() has returned r (the answer on p): the method's status and counts
+// into a, refinement on p (at most o.refinements exact solves, each kept only if it lowers the residual),
+// acceptance when r's residual <= tol; fills a but a->solver. solveAuto calls it only when solve() did not
+// accept the first solver's answer itself (solve() accepts by the same rule, without the refinements).
+void finishAttempt(const Problem& p, const ChainOptions& o, double tol, Result* r, Attempt* a);
 // The failed attempts in one line: "name[ (scaled| (unscaled)]: status (residual r[, message]); " each.
 std::string describeAttempts(const std::vector<Attempt>& attempts);
 
