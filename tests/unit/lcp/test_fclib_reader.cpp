@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -116,10 +119,16 @@ TEST(FclibReader, CscTwoDimensional) {
   EXPECT_LE((r.z - enumerateLcp(p.M, p.q)).lpNorm<Eigen::Infinity>(), 1e-12);
 }
 
+// A scratch file of this process in the system's temporary directory (not the working directory).
+std::string scratch(const std::string& name) {
+  const std::string file = "unit_fclib_" + std::to_string(getpid()) + "_" + name + ".hdf5";
+  return (std::filesystem::temp_directory_path() / file).string();
+}
+
 // Writes an FCLib-like local problem with the given header; returns its path.
 std::string writeLocal(const std::string& name, int spacedim, int m, int nz, int nzmax, bool with_q = true,
                        int row0 = 0) {
-  const std::string path = "unit_fclib_" + name + ".hdf5";
+  const std::string path = scratch(name);
   suite::H5AppendFile f;
   f.create(path);
   auto scalar = [&](const std::string& n, int v) { f.createFixed<int>(n, 1, v); };
@@ -161,12 +170,14 @@ TEST(FclibReader, MalformedAndHostileFilesRefused) {
   expectRefused(writeLocal("noq", 3, 3, 1, 1, false), "missing dataset /fclib_local/vectors/q");
   {
     suite::H5AppendFile f;
-    f.create("unit_fclib_global.hdf5");
+    f.create(scratch("global"));
     f.createFixed<int>("/fclib_global/spacedim", 1, 3);
   }
-  expectRefused("unit_fclib_global.hdf5", "only local problems");
-  EXPECT_TRUE(isFclibFile("unit_fclib_global.hdf5"));
-  expectRefused("unit_fclib_nofile.hdf5", "cannot open file");
+  expectRefused(scratch("global"), "only local problems");
+  EXPECT_TRUE(isFclibFile(scratch("global")));
+  expectRefused(scratch("nofile"), "cannot open file");
+  for (const char* n : {"ok", "dim4", "notmult", "badnz", "huge", "hugennz", "badindex", "noq", "global"})
+    std::filesystem::remove(scratch(n));
 }
 
 } // namespace
