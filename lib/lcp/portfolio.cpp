@@ -200,8 +200,27 @@ int route(const Portfolio& t, int provisional, int final_class, Step* out) {
   return m;
 }
 
-// Attempts steps[from, m) after the first one's answer r (from = 1: solve() did not accept it; its refinement
-// and acceptance by finishAttempt first), each by attemptOn, until one is accepted; att holds the attempts.
+// The names of route(t, provisional, final_class).
+std::vector<std::string> routeNames(const Portfolio& t, int provisional, int final_class) {
+  Step steps[kAutoMaxTried];
+  const int m = route(t, provisional, final_class, steps);
+  std::vector<std::string> names;
+  for (int k = 0; k < m; ++k) names.push_back(*steps[k].name);
+  return names;
+}
+
+// The chain's options of an auto run (timed once by solveAuto for the whole sequence, not per attempt).
+ChainOptions chainOptions(const AutoOptions& o) {
+  ChainOptions co;
+  co.rel_tol = o.rel_tol;
+  co.first_max_iterations = o.max_iterations;
+  co.make = o.make;
+  co.timed = false;
+  return co;
+}
+
+// The route steps[0, m) after the first solver's answer r, which solve() did not accept: its refinement and
+// acceptance (finishAttempt), then each next solver by attemptOn, until one is accepted.
 Result runRest(const Problem& p, const Step* steps, int m, const ChainOptions& co, Result r,
                std::vector<Attempt>* attempts) {
   Attempt att[kAutoMaxTried];
@@ -209,8 +228,11 @@ Result runRest(const Problem& p, const Step* steps, int m, const ChainOptions& c
   int k = 0;
   for (; k < m; ++k) {
     att[k].known = steps[k].solver != nullptr;
-    if (steps[k].solver && k == 0) finishAttempt(p, co, tol, &r, &att[0]);
-    if (steps[k].solver && k > 0) r = attemptOn(*steps[k].solver, p, false, co, tol, &att[k]);
+    if (!att[k].known) continue;
+    if (k == 0)
+      finishAttempt(p, co, tol, &r, &att[0]);
+    else
+      r = attemptOn(*steps[k].solver, p, false, co, tol, &att[k]);
     if (att[k].accepted) break;
   }
   const int tried = std::min(k + 1, m);
@@ -247,11 +269,7 @@ Result runIndexed(const Problem& p, const Portfolio& t, const std::vector<const 
   if (f->minors_deferred) *f = classify(p);
   Step steps[kAutoMaxTried];
   const int m = route(t, provisional, f->class_index, steps);
-  ChainOptions co;
-  co.rel_tol = o.rel_tol;
-  co.first_max_iterations = o.max_iterations;
-  co.timed = false;
-  return runRest(p, steps, m, co, std::move(r), attempts);
+  return runRest(p, steps, m, chainOptions(o), std::move(r), attempts);
 }
 
 } // namespace
@@ -272,26 +290,17 @@ Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   const double t0 = o.timed ? MPI_Wtime() : 0.0, c0 = o.timed ? threadCpuSeconds() : 0.0;
   const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();
   ProblemFeatures f = classify(p, false, true);
+  const int provisional = f.class_index; // f becomes the final class once the deferred test is done
   std::vector<Attempt>* att = info ? &info->attempts : nullptr;
   const std::vector<const Solver*>* first = o.make ? nullptr : t.solversFor(f.class_index);
   Result r;
   if (first && !first->empty()) {
     r = runIndexed(p, t, *first, o, &f, att);
   } else { // a table built by hand (not indexed) or a solver factory: the general chain, on the same route
-    const int provisional = f.class_index;
     if (f.minors_deferred) f = classify(p);
-    Step steps[kAutoMaxTried];
-    const int m = route(t, provisional, f.class_index, steps);
-    std::vector<std::string> names;
-    for (int k = 0; k < m; ++k) names.push_back(*steps[k].name);
-    ChainOptions co;
-    co.rel_tol = o.rel_tol;
-    co.first_max_iterations = o.max_iterations;
-    co.make = o.make;
-    co.timed = false; // timed here, once for the whole sequence
     std::vector<Attempt> local;
     att = att ? att : &local;
-    r = solveWithChain(p, names, co, att);
+    r = solveWithChain(p, routeNames(t, provisional, f.class_index), chainOptions(o), att);
     sumCounts(att->data(), static_cast<int>(att->size()), &r);
   }
   if (o.timed) {
@@ -299,12 +308,8 @@ Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
     r.cpu_time = threadCpuSeconds() - c0;
   }
   if (info) { // after the clocks: the record's classification is not part of the solve
-    const int provisional = classify(p, false, true).class_index;
     info->features = f.minors_deferred ? classify(p) : f;
-    Step steps[kAutoMaxTried];
-    const int m = route(t, provisional, info->features.class_index, steps);
-    info->chain.clear();
-    for (int k = 0; k < m; ++k) info->chain.push_back(*steps[k].name);
+    info->chain = routeNames(t, provisional, info->features.class_index);
     info->solver = r.ok() ? info->attempts.back().solver : "";
   }
   return r;

@@ -77,12 +77,6 @@ bool isSymmetric(const Mat& M) {
   const int n = static_cast<int>(M.rows());
   if (M.cols() != n) return false;
   constexpr int T = 16;
-  if (n <= T) { // one tile: the plain loop (the tile bookkeeping costs as much as a 2 x 2 check)
-    for (int j = 0; j < n; ++j)
-      for (int i = j + 1; i < n; ++i)
-        if (M(i, j) != M(j, i)) return false;
-    return true;
-  }
   for (int jb = 0; jb < n; jb += T)
     for (int ib = jb; ib < n; ib += T) {
       const int je = std::min(n, jb + T), ie = std::min(n, ib + T);
