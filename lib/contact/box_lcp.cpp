@@ -83,7 +83,8 @@ lcp::Problem activeProblem(const lcp::Mat& A, const DelassusSystem& sys, double 
 // Sweeps before the sparse active-set solve of an exact pass, and its factorisation cap.
 constexpr int kExactSweeps = 20, kRetrySweeps = 500, kExactFactorizations = 20, kRetryFactorizations = 40;
 
-// The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, accepted
+// The pass on the sparse Delassus matrix: PGS sweeps from the warm start, then active-set Newton, the proximal
+// active set when that stalls (narrow friction boxes), then more sweeps and active-set Newton again, accepted
 // by the chain's rule (residual <= lcp_tol (1 + |b|_inf)); false: not accepted (the dense chain follows).
 bool sparsePass(const DelassusSystem& sys, double mu, BoxRows* sp, double rel_tol, lcp::Vec* next,
                 StepStats* st) {
@@ -105,6 +106,7 @@ bool sparsePass(const DelassusSystem& sys, double mu, BoxRows* sp, double rel_to
   if (!(sparseResidual(p, z) <= poor)) freeStart(p, &z, &ss);
   if (!(sparseResidual(p, z) <= poor)) ss.sweeps = pgsSweeps(p, kExactSweeps, 0.0, &z);
   bool ok = activeSetSolve(p, kExactFactorizations, rel_tol, &z, &ss, true);
+  if (!ok) ok = proximalSolve(p, ProximalOptions{}, rel_tol, &z, &ss, &st->proximal_steps); // narrow boxes
   if (!ok) { // a second try from a closer start: many more (cheap) sweeps
     ss.sweeps += pgsSweeps(p, kRetrySweeps, 0.0, &z);
     ok = activeSetSolve(p, kRetryFactorizations, rel_tol, &z, &ss, true);

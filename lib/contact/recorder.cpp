@@ -32,6 +32,7 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   pivots.push_back(s.pivots);
   splitting_iterations.push_back(s.splitting_iterations);
   fallbacks.push_back(s.fallbacks);
+  proximal_steps.push_back(s.proximal_steps);
   factorizations.push_back(s.factorizations);
   budget_stop.push_back(s.budget_stop);
   islands.push_back(s.islands);

@@ -22,7 +22,7 @@ struct Recorder {
   std::vector<long long> frame_step;
   // per step
   std::vector<int> contacts, sleeping, rows, solver_index, iterations, splitting_iterations, fallbacks,
-      factorizations, budget_stop, islands, largest_island_bodies, largest_island_contacts;
+      proximal_steps, factorizations, budget_stop, islands, largest_island_bodies, largest_island_contacts;
   std::vector<long long> pivots;
   std::vector<double> time, force_ratio, cone_violation, residual, splitting_error, energy, step_wall,
       penetration;

@@ -64,6 +64,7 @@ PetscErrorCode writeSteps(H5Output& out, const Recorder& rec) {
     PetscCall(out.writeReplicated("/steps/iterations", rec.iterations.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/pivots", rec.pivots.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/fallbacks", rec.fallbacks.data(), {ns}, ""));
+    PetscCall(out.writeReplicated("/steps/proximal_steps", rec.proximal_steps.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/residual", rec.residual.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/splitting_iterations", rec.splitting_iterations.data(), {ns}, ""));
     PetscCall(out.writeReplicated("/steps/splitting_error", rec.splitting_error.data(), {ns}, "m/s"));

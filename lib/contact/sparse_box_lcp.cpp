@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 
 namespace suite::contact {
@@ -36,7 +37,6 @@ enum class RowState : signed char { Lower, Upper, Free };
 // pile_grid (1,125 boxes, 20 steps) by the first read's gain: 1: 1,092; 2: 311; 4: 304; 8: 185; 16: 151;
 // 32: 145; 100: 108; 1,000: 4,000 and splitting passes at their cap. 8 is the former unscaled read (z - w)
 // at 1 kg boxes; gain 8 without the stall switch fails ContactBlockPgs's narrow-box pyramid.
-constexpr double kJumpGain = 8.0;
 
 // States read off z - gain w / A_ii (as lcp::statesFromSolution); inactive rows at their (zero) bound.
 std::vector<RowState> readStates(const SparseBoxLcp& p, const lcp::Vec& z, const lcp::Vec& w, double gain) {
@@ -80,6 +80,8 @@ bool rowSpaceSolve(const SparseBoxLcp& p, const std::vector<int>& F, const std::
     for (SpMat::InnerIterator it(sparseMatrix(*p.sys), F[a]); it; ++it)
       if (pos[it.col()] >= 0) trip.emplace_back((int)a, pos[it.col()], it.value());
   }
+  for (size_t a = 0; a < F.size(); ++a) // compliance added to the system's (proximalSolve)
+    if (p.reg[F[a]] != p.sys->reg[F[a]]) trip.emplace_back((int)a, (int)a, p.reg[F[a]] - p.sys->reg[F[a]]);
   Eigen::SparseMatrix<double> K(F.size(), F.size());
   K.setFromTriplets(trip.begin(), trip.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
@@ -198,11 +200,10 @@ bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st) {
 }
 
 bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
-                    bool solve_once) {
+                    bool solve_once, double gain) {
   st->tolerance = sparseTolerance(p, rel_tol);
   lcp::Vec w, best = *z;
   st->residual = sparseResidual(p, *z, &w);
-  double gain = kJumpGain;
   std::vector<RowState> cur = readStates(p, *z, w, gain);
   ExchangeRule rule;
   for (int it = 0; it < max_it && (!(st->residual <= st->tolerance) || (solve_once && it == 0)); ++it) {
@@ -217,6 +218,62 @@ bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec*
     const long long changed = rule.exchange(next, &cur);
     if (changed == 0) break; // the states of the exact solve are consistent: nothing left to exchange
     st->pivots += changed;
+  }
+  *z = best;
+  return st->residual <= st->tolerance;
+}
+
+namespace {
+bool proximalRow(const SparseBoxLcp& p, int i) {
+  return p.active(i) && p.link[i] < 0 && std::isfinite(p.l[i]) && std::isfinite(p.u[i]);
+}
+
+// The subproblem of proximalSolve for rho: q = p with the compliance rho A_ii added on the box rows (reg,
+// diag, and a body-space solver for that compliance when p has masses); q.b is set per step.
+struct ProximalProblem {
+  SparseBoxLcp q;
+  std::unique_ptr<BodySpaceSolver> body;
+  ProximalProblem(const SparseBoxLcp& p, double rho) : q(p) {
+    for (int i = 0; i < p.size(); ++i) {
+      const double r = proximalRow(p, i) ? rho * rowScale(p, i) : 0.0;
+      q.reg[i] += r, q.diag[i] += r;
+    }
+    if (p.mass) body = std::make_unique<BodySpaceSolver>(*p.rows, *p.mass, q.reg), q.body = body.get();
+  }
+  // b - R z_k, R the added compliance.
+  void center(const SparseBoxLcp& p, const lcp::Vec& z) {
+    for (int i = 0; i < p.size(); ++i) q.b[i] = p.b[i] - (q.reg[i] - p.reg[i]) * z[i];
+  }
+};
+} // namespace
+
+bool proximalSolve(const SparseBoxLcp& p, const ProximalOptions& o, double rel_tol, lcp::Vec* z,
+                   SparseSolveStats* st, int* steps) {
+  st->tolerance = sparseTolerance(p, rel_tol);
+  st->residual = sparseResidual(p, *z);
+  lcp::Vec best = *z, center = *z;
+  double rho = o.rho, sub_rho = 0.0, solved_rho = 0.0, shrink = o.shrink;
+  std::unique_ptr<ProximalProblem> sub;
+  for (int k = 0; k < o.max_steps && !(st->residual <= st->tolerance); ++k) {
+    if (rho != sub_rho) sub = std::make_unique<ProximalProblem>(p, rho), sub_rho = rho;
+    sub->center(p, center);
+    SparseSolveStats ss;
+    // from a proximal centre most states are right: the rows' own Newton read (gain 1), not the jump read
+    const bool solved = activeSetSolve(sub->q, o.max_factorizations, rel_tol, z, &ss, false, 1.0);
+    st->factorizations += ss.factorizations, st->pivots += ss.pivots;
+    ++*steps;
+    const double r = sparseResidual(p, *z);
+    if (r < st->residual) st->residual = r, best = *z;
+    if (solved) {
+      center = *z, solved_rho = rho;
+      rho = std::max(o.rho_min, rho * shrink);
+    } else {
+      *z = center;
+      if (solved_rho > 0)
+        shrink = std::sqrt(shrink), rho = solved_rho * shrink;
+      else
+        rho /= o.shrink;
+    }
   }
   *z = best;
   return st->residual <= st->tolerance;

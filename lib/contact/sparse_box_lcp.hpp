@@ -66,10 +66,36 @@ int pgsSweeps(const SparseBoxLcp& p, int max_sweeps, double tol, lcp::Vec* z);
 // factorisation: exact for a structure at rest with every contact pressed and sticking) replaces z when its
 // residual is lower. Returns whether it did.
 bool freeStart(const SparseBoxLcp& p, lcp::Vec* z, SparseSolveStats* st);
+// The first state read of activeSetSolve, z - gain w / A_ii (sparse_box_lcp.cpp explains the 8).
+constexpr double kJumpGain = 8.0;
 // Active-set Newton from z (fixed bounds only), at most max_it factorisations; z <- the best iterate.
 // true: residual <= rel_tol (1 + |b|_inf) (st: counts, residual). solve_once: at least one exact solve even
-// when z already meets the tolerance (its answer then exact to round-off on the index sets of z).
+// when z already meets the tolerance (its answer then exact to round-off on the index sets of z). gain: of the
+// first state read (1: each row's own Newton step, for a start whose states are nearly right).
 bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec* z, SparseSolveStats* st,
-                    bool solve_once = false);
+                    bool solve_once = false, double gain = kJumpGain);
+
+// Proximal-point active set (Rockafellar, "Monotone operators and the proximal point algorithm", SIAM J.
+// Control Optim. 14 (1976); for LCPs Cottle, Pang & Stone, "The linear complementarity problem" (1992), 5.6),
+// for the narrow boxes where activeSetSolve stalls: the four contact points of a face give 8 tangent rows for 3
+// in-plane degrees of freedom, their block of A held only by the tangential compliance (relative 1e-8), so the
+// free impulses of an exact solve run far outside boxes of width mu lambda_n and the exchange cycles. Each
+// proximal step solves (activeSetSolve, from z_k) the box LCP of A + R, b - R z_k, with R = rho diag(A_ii) on the
+// rows with a finite box (fixed bounds), well posed as with a compliance of rho; its answer z_{k+1} solves the
+// original problem once z_{k+1} = z_k (A z + b = -R (z_{k+1} - z_k) on a free row). The error of a mode of A_FF
+// with eigenvalue s falls by rho / (rho + s) per step; a near-null mode (s ~ the compliance) keeps its error, but
+// moves w by s times it, below the tolerance. Each subproblem starts from z_k with the rows' own Newton read
+// (gain 1). rho starts at `rho` and is multiplied by `shrink` after each solved subproblem (down to rho_min:
+// faster steps once the states have settled); a failed subproblem (its exchange stalls too) restarts from z_k
+// at a rho between the last one solved and the failed one (the shrink factor's square root from then on), or,
+// before any was solved, at rho / shrink. z <- the best point; true when it meets rel_tol (1 + |b|_inf); steps
+// counts the subproblems.
+struct ProximalOptions {
+  double rho = 1e-4, rho_min = 1e-7, shrink = 0.1;
+  int max_steps = 40;          // proximal steps (subproblems)
+  int max_factorizations = 20; // per subproblem
+};
+bool proximalSolve(const SparseBoxLcp& p, const ProximalOptions& o, double rel_tol, lcp::Vec* z,
+                   SparseSolveStats* st, int* steps);
 
 } // namespace suite::contact

@@ -130,6 +130,7 @@ struct StepStats {
   double normal_impulse = 0.0; // sum lambda_n
   std::string solver;          // solver that produced the accepted answer (fallback name if it was needed)
   int fallbacks = 0;           // failed attempts before the accepted one
+  int proximal_steps = 0;      // sparse path: proximal steps after a stalled exchange (sparse_box_lcp.hpp)
   int iterations = 0;          // solver iterations (summed over splitting passes)
   long long pivots = 0;
   int refinements = 0;   // active-set refinements of solver answers (contact side, after the solver)
@@ -145,7 +146,7 @@ struct StepStats {
   bool budget_stop = false; // balanced / fast: the sweeps ended at the budget, not the tolerance
   // Islands (StepperOptions::islands): how many were solved (0: islands off or no contact), the largest one's
   // dynamic bodies and contacts. With islands, rows is the sum over the islands, iterations, pivots,
-  // fallbacks, refinements and factorizations are summed, residual and splitting_error are the largest,
+  // fallbacks, proximal_steps, refinements and factorizations are summed, residual and splitting_error are the largest,
   // split_errors the largest per pass, split_ratios and solver those of the largest island (solver: of the
   // first island that needed a fallback, if any).
   int islands = 0;

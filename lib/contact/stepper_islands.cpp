@@ -45,7 +45,7 @@ void packStats(const StepStats& s, std::vector<double>* out) {
               {(double)s.rows, (double)s.fallbacks, (double)s.iterations, (double)s.pivots,
                (double)s.refinements, s.residual, (double)s.splitting_iterations, s.splitting_error,
                (double)s.factorizations, (double)s.budget_stop, (double)s.failed, (double)s.friction_rung,
-               (double)s.auto_solves, (double)s.target_missed});
+               (double)s.auto_solves, (double)s.target_missed, (double)s.proximal_steps});
   for (const std::vector<double>* v : {&s.split_errors, &s.split_ratios, &s.problem_rungs, &s.problem_rows,
                                        &s.problem_times, &s.problem_violations})
     putVector(*v, out);
@@ -60,7 +60,8 @@ StepStats unpackStats(const std::vector<double>& in, size_t at) {
   s.splitting_iterations = (int)in[at + 6], s.splitting_error = in[at + 7];
   s.factorizations = (int)in[at + 8], s.budget_stop = in[at + 9] != 0, s.failed = in[at + 10] != 0;
   s.friction_rung = (int)in[at + 11], s.auto_solves = (int)in[at + 12], s.target_missed = (int)in[at + 13];
-  at += 14;
+  s.proximal_steps = (int)in[at + 14];
+  at += 15;
   for (std::vector<double>* v : {&s.split_errors, &s.split_ratios, &s.problem_rungs, &s.problem_rows,
                                  &s.problem_times, &s.problem_violations})
     *v = getVector(in, &at);
@@ -74,6 +75,7 @@ void mergeStats(const StepStats& s, int k, StepStats* st) {
   st->rows += s.rows;
   st->fallbacks += s.fallbacks, st->iterations += s.iterations, st->pivots += s.pivots;
   st->refinements += s.refinements, st->factorizations += s.factorizations;
+  st->proximal_steps += s.proximal_steps;
   st->residual = std::max(st->residual, s.residual);
   st->splitting_error = std::max(st->splitting_error, s.splitting_error);
   st->splitting_iterations = std::max(st->splitting_iterations, s.splitting_iterations);
