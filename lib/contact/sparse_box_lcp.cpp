@@ -252,7 +252,8 @@ bool proximalSolve(const SparseBoxLcp& p, const ProximalOptions& o, double rel_t
   st->tolerance = sparseTolerance(p, rel_tol);
   st->residual = sparseResidual(p, *z);
   lcp::Vec best = *z, center = *z;
-  double rho = o.rho, sub_rho = 0.0, solved_rho = 0.0, shrink = o.shrink;
+  double rho = o.rho, sub_rho = 0.0, shrink = o.shrink;
+  bool any_solved = false;
   std::unique_ptr<ProximalProblem> sub;
   for (int k = 0; k < o.max_steps && !(st->residual <= st->tolerance); ++k) {
     if (rho != sub_rho) sub = std::make_unique<ProximalProblem>(p, rho), sub_rho = rho;
@@ -265,14 +266,12 @@ bool proximalSolve(const SparseBoxLcp& p, const ProximalOptions& o, double rel_t
     const double r = sparseResidual(p, *z);
     if (r < st->residual) st->residual = r, best = *z;
     if (solved) {
-      center = *z, solved_rho = rho;
+      center = *z, any_solved = true;
       rho = std::max(o.rho_min, rho * shrink);
     } else {
-      *z = center;
-      if (solved_rho > 0)
-        shrink = std::sqrt(shrink), rho = solved_rho * shrink;
-      else
-        rho /= o.shrink;
+      *z = center; // (a failure at a rho solved before, from another centre, happens: rho grows on)
+      rho /= o.shrink;
+      if (any_solved) shrink = std::sqrt(shrink);
     }
   }
   *z = best;

@@ -87,9 +87,9 @@ bool activeSetSolve(const SparseBoxLcp& p, int max_it, double rel_tol, lcp::Vec*
 // moves w by s times it, below the tolerance. Each subproblem starts from z_k with the rows' own Newton read
 // (gain 1). rho starts at `rho` and is multiplied by `shrink` after each solved subproblem (down to rho_min:
 // faster steps once the states have settled); a failed subproblem (its exchange stalls too) restarts from z_k
-// at a rho between the last one solved and the failed one (the shrink factor's square root from then on), or,
-// before any was solved, at rho / shrink. z <- the best point; true when it meets rel_tol (1 + |b|_inf); steps
-// counts the subproblems.
+// at rho / shrink, and once a subproblem has been solved, each failure also slows the shrinking (its factor
+// becomes its square root). z <- the best point; true when it meets rel_tol (1 + |b|_inf); steps counts the
+// subproblems.
 struct ProximalOptions {
   double rho = 1e-4, rho_min = 1e-7, shrink = 0.1;
   int max_steps = 40;          // proximal steps (subproblems)
