@@ -50,6 +50,10 @@ struct RevisedBasis {
     return Binv.allFinite() && x.allFinite();
   }
 
+  // Every basic variable >= 0 to round-off (Lemke's pivots keep the basis feasible; a basic value below
+  // -1e-9 (1 + |q| + |x|) after a refactorisation means the pivots have lost the path, and it cycles there).
+  bool feasible() const { return x.minCoeff() >= -1e-9 * (1.0 + qn + x.lpNorm<Eigen::Infinity>()); }
+
   bool drifted() const {
     Vec res = -q, c;
     for (int i = 0; i < n; ++i) column(basis[i], &c), res += c * x[i];
@@ -127,6 +131,7 @@ lcp::Status pivotLoop(RevisedBasis& t, int entering, long long cap, lcp::Result*
     ++since;
     if (since >= 64 || (since % 8 == 0 && t.drifted())) {
       if (!t.refactor()) return fail(r, lcp::Status::NumericalError, "singular basis");
+      if (!t.feasible()) return fail(r, lcp::Status::NumericalError, "basis lost feasibility");
       since = 0;
     }
     if (!t.x.allFinite()) return lcp::Status::NumericalError;

@@ -4,8 +4,11 @@
 // (checked every 8 pivots) and every 64 pivots. The polyhedral friction LCP of the log heap is highly degenerate
 // (q = 0 on every cone row, opposite friction directions); the dense tableau of lib/lcp's Lemke, updated
 // without refactorisation, accumulated enough round-off there to end on a false secondary ray or an
-// inaccurate basis in a few percent of the steps. This variant is the contact library's reference fallback
-// ("lemke_rf"), standard LCPs only.
+// inaccurate basis in a few percent of the steps. After each refactorisation the basis must still be feasible
+// (every basic value >= -1e-9 (1 + |q| + |x|)); when it is not, the pivots have lost the path (seen on a pyramid
+// of base 5, 1,000 rows, where it then cycled to the pivot cap for minutes) and the method stops with a
+// numerical error, so that a chain tries its next solver. This variant is the contact library's reference
+// fallback ("lemke_rf"), standard LCPs only.
 #pragma once
 
 #include "core/named_choice.hpp"

@@ -3,6 +3,7 @@
 // unscaled problem; the friction of each contact stays inside the polygon; on the incline the force ratio
 // reproduces min(tan th, mu) within the polygon's approximation error mu (1 - cos(pi / d)).
 #include "contact/friction_formulation.hpp"
+#include "contact/lemke_rf.hpp"
 #include "contact/scenes.hpp"
 #include "contact/stepper.hpp"
 #include "lcp/solver.hpp"
@@ -114,4 +115,33 @@ TEST(ContactPolyhedral, InclineForceRatio) {
       EXPECT_LE(st.force_ratio, mu + 1e-6);
     }
   }
+}
+
+// Lemke with refactorisation (lemke_rf.hpp) ends, one way or the other, within a few n pivots on the first
+// step of a pyramid of base 5 (100 contacts, d = 8: a 1,000-row, highly degenerate polyhedral LCP). There the
+// pivots lose the feasibility of the basis (a basic value of -1.5e-6 after a refactorisation) and used to cycle
+// at that point to the cap of 100,000 pivots (minutes a step); the feasibility check after each
+// refactorisation now stops it so that the chain's next solver is tried. Invariant checked: solved and verified,
+// or a failure that is not the cap, within 5 n pivots.
+TEST(ContactPolyhedral, LemkeRefactoredEndsOnTheDegeneratePyramid) {
+  SceneParams sp;
+  sp.scene = "pyramid";
+  sp.pyramid_base = 5;
+  auto bodies = buildScene(sp);
+  StepperOptions o;
+  o.friction = FrictionModel::Polyhedral;
+  o.mu = 0.5;
+  o.polyhedral_solvers = {"lemke"}; // fails in ~0.5 s here; the step's problem is kept all the same
+  Stepper stepper(o);
+  stepper.keepProblems(true);
+  stepper.step(&bodies);
+  ASSERT_FALSE(stepper.lastProblems().empty());
+  const lcp::Problem& p = stepper.lastProblems().back();
+  const lcp::Result r = lcp::solve(*makeLemkeRefactored(), p);
+  std::printf("pyramid 5, polyhedral d = 8: %d rows, lemke_rf %s after %lld pivots (residual %.2e%s%s)\n",
+              p.size(), lcp::statusName(r.status), r.pivots, r.residual, r.message.empty() ? "" : ", ",
+              r.message.c_str());
+  EXPECT_NE(r.status, lcp::Status::MaxIterations);
+  EXPECT_LE(r.pivots, 5LL * p.size());
+  if (r.ok()) EXPECT_LE(r.residual, 1e-10 * (1.0 + p.q.lpNorm<Eigen::Infinity>()));
 }
