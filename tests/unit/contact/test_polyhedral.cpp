@@ -143,5 +143,7 @@ TEST(ContactPolyhedral, LemkeRefactoredEndsOnTheDegeneratePyramid) {
               r.message.c_str());
   EXPECT_NE(r.status, lcp::Status::MaxIterations);
   EXPECT_LE(r.pivots, 5LL * p.size());
-  if (r.ok()) EXPECT_LE(r.residual, 1e-10 * (1.0 + p.q.lpNorm<Eigen::Infinity>()));
+  if (r.ok()) {
+    EXPECT_LE(r.residual, 1e-10 * (1.0 + p.q.lpNorm<Eigen::Infinity>()));
+  }
 }
