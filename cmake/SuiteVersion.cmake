@@ -1,13 +1,15 @@
-# Version string for provenance: `git describe` at configure time, else the project version.
-find_package(Git QUIET)
-set(SUITE_VERSION "${PROJECT_VERSION}")
-if(GIT_FOUND AND EXISTS ${CMAKE_SOURCE_DIR}/.git)
-  execute_process(COMMAND ${GIT_EXECUTABLE} describe --always --dirty --tags
-                  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR} OUTPUT_VARIABLE _describe
-                  OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE _rc)
-  if(_rc EQUAL 0 AND _describe)
-    set(SUITE_VERSION "${PROJECT_VERSION}-${_describe}")
-  endif()
-endif()
-message(STATUS "Suite version: ${SUITE_VERSION}")
-configure_file(${CMAKE_SOURCE_DIR}/cmake/version.cpp.in ${CMAKE_BINARY_DIR}/generated/version.cpp @ONLY)
+# Version string for provenance (every output file's `version` attribute): `git describe` of the source tree,
+# else the project version. Written at configure time (so that the file exists) and again by the target
+# suite_version at every build (cmake/SuiteVersionWrite.cmake; the file changes only when the string does): a
+# configure-time string alone went stale with incremental builds (outputs of a later commit carried the hash of
+# the tree last configured).
+set(SUITE_VERSION_CPP ${CMAKE_BINARY_DIR}/generated/version.cpp)
+set(_suite_version_args -DSRC_DIR=${CMAKE_SOURCE_DIR} -DOUT=${SUITE_VERSION_CPP}
+                        -DPROJECT_VERSION=${PROJECT_VERSION} -DTEMPLATE=${CMAKE_SOURCE_DIR}/cmake/version.cpp.in)
+execute_process(COMMAND ${CMAKE_COMMAND} ${_suite_version_args} -P ${CMAKE_SOURCE_DIR}/cmake/SuiteVersionWrite.cmake)
+file(STRINGS ${SUITE_VERSION_CPP} _suite_version_line REGEX "return")
+string(REGEX REPLACE ".*return \"([^\"]*)\".*" "\\1" _suite_version "${_suite_version_line}")
+message(STATUS "Suite version: ${_suite_version}")
+add_custom_target(suite_version
+                  COMMAND ${CMAKE_COMMAND} ${_suite_version_args} -P ${CMAKE_SOURCE_DIR}/cmake/SuiteVersionWrite.cmake
+                  BYPRODUCTS ${SUITE_VERSION_CPP} VERBATIM)
