@@ -6,8 +6,8 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <memory>
 #include <cmath>
+#include <memory>
 
 namespace suite::contact {
 

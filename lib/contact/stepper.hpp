@@ -146,9 +146,9 @@ struct StepStats {
   bool budget_stop = false; // balanced / fast: the sweeps ended at the budget, not the tolerance
   // Islands (StepperOptions::islands): how many were solved (0: islands off or no contact), the largest one's
   // dynamic bodies and contacts. With islands, rows is the sum over the islands, iterations, pivots,
-  // fallbacks, proximal_steps, refinements and factorizations are summed, residual and splitting_error are the largest,
-  // split_errors the largest per pass, split_ratios and solver those of the largest island (solver: of the
-  // first island that needed a fallback, if any).
+  // fallbacks, proximal_steps, refinements and factorizations are summed, residual and splitting_error are
+  // the largest, split_errors the largest per pass, split_ratios and solver those of the largest island
+  // (solver: of the first island that needed a fallback, if any).
   int islands = 0;
   int largest_island_bodies = 0;
   int largest_island_contacts = 0;
