@@ -382,4 +382,17 @@ TEST(ContactSparse, ProximalActiveSetSolvesNarrowBoxes) {
   EXPECT_LE(steps, ProximalOptions{}.max_steps);
   ASSERT_TRUE(r.ok());
   EXPECT_LE(dw, 10 * s2.tolerance);
+  // The same without the masses: the free rows solved by the sparse LDL^T of A_FF (rowSpaceSolve), which must
+  // add the subproblems' compliance to the system's matrix itself.
+  SparseBoxLcp pr = p;
+  pr.mass = nullptr;
+  suite::lcp::Vec rowz = z0;
+  SparseSolveStats s3;
+  int row_steps = 0;
+  EXPECT_TRUE(proximalSolve(pr, ProximalOptions{}, o.lcp_tol, &rowz, &s3, &row_steps));
+  sparseResidual(pr, rowz, &w);
+  const double dw_row = (w - (d.M * r.z + d.q)).lpNorm<Eigen::Infinity>();
+  std::printf("row space: proximal %.2e in %d steps; max |w - w_dense| %.2e\n", s3.residual, row_steps,
+              dw_row);
+  EXPECT_LE(dw_row, 10 * s3.tolerance);
 }
