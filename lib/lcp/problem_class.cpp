@@ -14,14 +14,15 @@ namespace {
 
 // The parts of a class name; problemClassNames() lists every combination in this order.
 constexpr std::string_view kStructures[] = {"lcp", "box", "mlcp"};
-constexpr std::string_view kMatrices[] = {"dd", "spd", "sym", "pd", "gen", "tri"};
+constexpr std::string_view kMatrices[] = {"dd", "spd", "sym", "pd", "gen", "tril", "triu"};
 constexpr std::string_view kSizes[] = {"small", "medium", "large"};
 constexpr int kNumMatrices = sizeof kMatrices / sizeof kMatrices[0];
 constexpr int kNumSizes = sizeof kSizes / sizeof kSizes[0];
 
-int structureOf(const Problem& p) {
+// standard: p.isStandard() (every l_i = 0, u_i = inf), counted with the bounds in classify().
+int structureOf(const Problem& p, bool standard) {
   if (p.n_eq > 0) return 2;
-  return p.isStandard() ? 0 : 1;
+  return standard ? 0 : 1;
 }
 
 int sizeOf(int n) {
@@ -65,27 +66,8 @@ void scanColumns(const Mat& M, ProblemFeatures* f) {
 // Symmetric M in one pass over the columns (contiguous; a column's sums are its row's): positive
 // diagonal, strict diagonal dominance, and (with_minors) every 2 x 2 principal minor > 0 (necessary for
 // definiteness; else minors_ok is left false).
-// The same flags as scanSymmetric for n <= 8 by scalar loops (Eigen's vectorised reductions and the scratch
-// vector cost more than the whole scan of a 2 x 2 to 8 x 8 matrix, whose solve takes ~0.1 to 1 us).
-void scanSymmetricTiny(const Mat& M, bool with_minors, ProblemFeatures* f) {
-  const Eigen::Index n = M.rows();
-  bool pos = n > 0;
-  for (Eigen::Index j = 0; j < n; ++j) pos = pos && M(j, j) > 0;
-  bool dd = pos, minors = pos && with_minors;
-  for (Eigen::Index j = 0; j < n && (dd || minors); ++j) {
-    double off = 0;
-    for (Eigen::Index i = 0; i < n; ++i) off += i == j ? 0.0 : std::abs(M(i, j));
-    dd = dd && off < M(j, j);
-    for (Eigen::Index i = j + 1; i < n && minors; ++i) minors = M(i, i) * M(j, j) - M(i, j) * M(i, j) > 0.0;
-  }
-  f->diag_positive = pos;
-  f->diag_dominant = dd;
-  f->minors_ok = minors;
-}
-
 void scanSymmetric(const Mat& M, bool with_minors, ProblemFeatures* f) {
   const Eigen::Index n = M.rows();
-  if (n <= 8) return scanSymmetricTiny(M, with_minors, f);
   Scratch sd(n);
   Eigen::Map<Vec> d = sd.vec();
   d = M.diagonal();
@@ -118,16 +100,68 @@ bool minorsPositive(const Mat& M) {
   return true;
 }
 
-// M lower or upper triangular (every entry on one side of the diagonal exactly 0); stops at the first nonzero
-// entry on each side (a dense matrix: after a few entries).
-bool triangular(const Mat& M) {
+// 1: M lower triangular, 2: upper (every entry on that side of the diagonal exactly 0; a diagonal M is
+// dd or symmetric, never asked), 0: neither. Stops at the first nonzero entry on each side (a dense matrix:
+// after a few entries).
+int triangularSide(const Mat& M) {
   const Eigen::Index n = M.rows();
   bool lower = true, upper = true;
   for (Eigen::Index j = 0; j < n && (lower || upper); ++j) {
     lower = lower && (M.col(j).head(j).array() == 0.0).all();
     upper = upper && (M.col(j).tail(n - 1 - j).array() == 0.0).all();
   }
-  return lower || upper;
+  return lower ? 1 : upper ? 2 : 0;
+}
+
+// classify()'s matrix tests for n <= kTiny by scalar loops, each stopping at its first failure (Murty's
+// example at n = 8: the first pair ends the symmetry, dominance and minors tests; only the triangle is read
+// through). For such sizes Eigen's vectorised reductions, the scratch vectors and whole passes cost more than
+// the tests: that example (cottle_dantzig ~0.24 us) spent ~60 ns in them. Returns the triangle (1 lower,
+// 2 upper, 0 none or not asked: symmetric, dominant or a diagonal entry <= 0); the flags are the general
+// path's.
+constexpr int kTiny = 16;
+
+// Every pair i > j satisfies ok(M(i, j), M(j, i), i, j); stops at the first that does not.
+template <class Test> bool everyPair(const Mat& M, Test ok) {
+  const int n = static_cast<int>(M.rows());
+  for (int j = 0; j < n; ++j)
+    for (int i = j + 1; i < n; ++i)
+      if (!ok(M(i, j), M(j, i), i, j)) return false;
+  return true;
+}
+
+// M's strict upper triangle is zero (read column by column: contiguous, unlike everyPair's M(j, i)).
+bool upperZero(const Mat& M) {
+  const int n = static_cast<int>(M.rows());
+  for (int i = 1; i < n; ++i)
+    for (int j = 0; j < i; ++j)
+      if (M(j, i) != 0.0) return false;
+  return true;
+}
+
+int scanTinyInto(const Problem& p, ProblemFeatures* f) {
+  const Mat& M = p.M;
+  const int n = static_cast<int>(M.rows());
+  bool positive = n > 0;
+  for (int i = 0; i < n && positive; ++i) positive = M(i, i) > 0;
+  f->symmetric =
+      p.symmetric >= 0 ? p.symmetric == 1 : everyPair(M, [](double a, double b, int, int) { return a == b; });
+  bool dominant = positive;
+  for (int i = 0; i < n && dominant; ++i) {
+    double off = 0;
+    for (int k = 0; k < n; ++k) off += k == i ? 0.0 : std::abs(M(i, k));
+    dominant = off < M(i, i);
+  }
+  f->diag_positive = positive;
+  f->diag_dominant = dominant;
+  f->minors_ok =
+      positive && (f->symmetric || !dominant) && everyPair(M, [&M](double a, double b, int i, int j) {
+        const double h = 0.5 * (a + b);
+        return M(i, i) * M(j, j) > h * h;
+      });
+  if (f->symmetric || dominant || !positive) return 0;
+  if (upperZero(M)) return 1;
+  return everyPair(M, [](double a, double, int, int) { return a == 0.0; }) ? 2 : 0;
 }
 
 bool choleskySucceeds(const Mat& S) {
@@ -151,27 +185,35 @@ ProblemFeatures classify(const Problem& p, bool thorough, bool defer_minors) {
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
+  bool standard = true;
   for (int i = 0; i < f.n; ++i) {
     f.finite_lower += std::isfinite(p.l[i]);
     f.finite_upper += std::isfinite(p.u[i]);
+    standard = standard && p.l[i] == 0.0 && p.u[i] == kInf;
   }
   if (thorough)
     f.density = static_cast<double>((p.M.array() != 0.0).count()) / std::max(1.0, double(f.n) * f.n);
-  f.symmetric = isSymmetric(p);
-  if (f.symmetric) {
-    scanSymmetric(p.M, !defer_minors, &f);
+  int side = 0;
+  if (f.n <= kTiny) {
+    side = scanTinyInto(p, &f);
   } else {
-    scanColumns(p.M, &f);
-    if (!defer_minors) f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
+    f.symmetric = isSymmetric(p);
+    if (f.symmetric) {
+      scanSymmetric(p.M, !defer_minors, &f);
+    } else {
+      scanColumns(p.M, &f);
+      if (!defer_minors) f.minors_ok = !f.diag_dominant && f.diag_positive && minorsPositive(p.M);
+    }
+    side = !f.symmetric && !f.diag_dominant && f.diag_positive ? triangularSide(p.M) : 0;
   }
-  f.triangular = !f.symmetric && !f.diag_dominant && f.diag_positive && triangular(p.M);
-  int matrix = f.diag_dominant ? 0 : 5; // dd, tri
+  f.triangular = side > 0;
+  int matrix = f.diag_dominant ? 0 : 4 + side; // dd, tril, triu
   if (!f.diag_dominant && !f.triangular) {
     f.minors_deferred = defer_minors && f.diag_positive; // else decided: not definite
     const bool def = f.minors_deferred || definite(p, thorough, &f);
     matrix = f.symmetric ? (def ? 1 : 2) : (def ? 3 : 4);
   }
-  setClass(structureOf(p), matrix, sizeOf(f.n), &f);
+  setClass(structureOf(p, standard), matrix, sizeOf(f.n), &f);
   return f;
 }
 

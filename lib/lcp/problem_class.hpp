@@ -6,9 +6,13 @@
 // Matrix type, first that applies:
 //   dd      strictly row diagonally dominant with a positive diagonal (a P-matrix; PGS converges: Cottle,
 //           Pang & Stone 2009, 5.3)
-//   tri     nonsymmetric, lower or upper triangular with a positive diagonal: a P-matrix (its principal minors
-//           are products of diagonal entries), e.g. Murty's example (Murty 1988, ch. 6: 2^n - 1 Lemke pivots),
+//   tril    nonsymmetric, lower triangular with a positive diagonal: a P-matrix (its principal minors are
+//           products of diagonal entries), e.g. Murty's example (Murty 1988, ch. 6: 2^n - 1 Lemke pivots),
 //           whose symmetric part is indefinite (it was "gen", with the Siconos files' general matrices)
+//   triu    the same, upper triangular (e.g. the Siconos files lcp_exp_murty*, Murty's matrix transposed).
+//           Apart from tril because the solvers' costs differ by orientation: a pivoting or sweeping order
+//           that follows the triangle settles each index once (Murty's example, tril: cottle_dantzig 0.24 us
+//           at n = 8, pgs 0.34 us; the Siconos files, triu: pgs 0.43 us, cottle_dantzig 0.78 / 3.4 us)
 //   sym     symmetric (exactly) and not positive definite: a diagonal entry or a 2 x 2 principal minor <= 0,
 //           or (with the Cholesky test) the factorisation of M fails
 //   spd     symmetric otherwise: every diagonal entry and 2 x 2 principal minor > 0 (necessary for
@@ -44,7 +48,7 @@ struct ProblemFeatures {
                                 // provisional (see classify)
   int finite_lower = 0, finite_upper = 0; // number of finite bounds
   std::string_view structure;             // "lcp", "box", "mlcp" (static strings: no copy per problem)
-  std::string_view matrix;                // "dd", "tri", "spd", "sym", "pd", "gen"
+  std::string_view matrix;                // "dd", "tril", "triu", "spd", "sym", "pd", "gen"
   std::string_view size;                  // "small", "medium", "large"
   int class_index = -1;                   // index of name() in problemClassNames()
   std::string name() const {
@@ -56,9 +60,10 @@ struct ProblemFeatures {
 // attempted Cholesky factorisation when the O(n^2) tests pass, and count the nonzeros (density); off in the
 // portfolio (see above; the chains do not depend on the density of the dense problems measured).
 // defer_minors (not with thorough; solveAuto): when n > 32 (medium and large) and the matrix is neither dd
-// nor tri and its diagonal is positive, the 2 x 2 minors test (O(n^2), the dearest of the tests) is left out
-// and the matrix classed spd / pd provisionally, minors_deferred set (minors_ok is then not computed);
-// classify(p) gives the final class. (At n <= 32 the test costs ~20 ns, less than a failed first attempt.)
+// nor tril / triu and its diagonal is positive, the 2 x 2 minors test (O(n^2), the dearest of the tests) is
+// left out and the matrix classed spd / pd provisionally, minors_deferred set (minors_ok is then not
+// computed); classify(p) gives the final class. (At n <= 32 the test costs ~20 ns, less than a failed first
+// attempt.)
 ProblemFeatures classify(const Problem& p, bool thorough = false, bool defer_minors = false);
 
 // Every class name classify() can return, in a fixed order (the index used in lcpbench's output).

@@ -50,31 +50,73 @@ TEST(ProblemClass, MatrixTypes) {
   EXPECT_DOUBLE_EQ(f.density, 1.0);
 }
 
-// Triangular with a positive diagonal (a P-matrix, e.g. Murty's example): its own class "tri", lower or upper,
-// whatever its symmetric part; not with a zero diagonal entry, not when symmetric (a diagonal matrix).
+// Triangular with a positive diagonal (a P-matrix, e.g. Murty's example): its own classes "tril" (lower) and
+// "triu" (upper), whatever its symmetric part; not with a zero diagonal entry, not when symmetric (a diagonal
+// matrix).
 TEST(ProblemClass, TriangularPMatrices) {
   GeneratorParams gp;
   gp.n = 8;
   const Problem murty = generate("murty", gp, 0); // I + 2 strict lower triangle: symmetric part indefinite
   const ProblemFeatures f = classify(murty);
-  EXPECT_EQ(f.name(), "lcp-tri-small");
+  EXPECT_EQ(f.name(), "lcp-tril-small");
   EXPECT_TRUE(f.triangular);
   EXPECT_FALSE(f.minors_ok);
   gp.n = 40;
-  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-tri-medium");
+  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-tril-medium");
   const Vec q = Vec::Constant(2, -1.0);
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-tri-small");   // upper triangular
-  EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, 0, 1), q)), "lcp-tri-small"); // symmetric part positive definite
-  EXPECT_EQ(classOf(makeLcp(mat2(0, 3, 0, 1), q)), "lcp-gen-small");   // zero diagonal entry
-  EXPECT_EQ(classOf(makeLcp(mat2(2, 0, 0, 1), q)), "lcp-dd-small");    // diagonal: symmetric, dominant
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 3, 0, 1), q)), "lcp-triu-small");   // upper triangular
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 3, 1), q)), "lcp-tril-small");   // lower triangular
+  EXPECT_EQ(classOf(makeLcp(mat2(1, 1.5, 0, 1), q)), "lcp-triu-small"); // symmetric part positive definite
+  EXPECT_EQ(classOf(makeLcp(mat2(0, 3, 0, 1), q)), "lcp-gen-small");    // zero diagonal entry
+  EXPECT_EQ(classOf(makeLcp(mat2(2, 0, 0, 1), q)), "lcp-dd-small");     // diagonal: symmetric, dominant
   EXPECT_EQ(classOf(makeLcp(mat2(1, 0, 0, 3), q)), "lcp-dd-small");
   EXPECT_EQ(classOf(makeBox(mat2(1, 0, 3, 1), q, Vec::Constant(2, -1.0), Vec::Constant(2, 1.0))),
-            "box-tri-small");
+            "box-tril-small");
   gp.n = 20;
   gp.cond = 1e2;
   EXPECT_EQ(classOf(generate("random_spd", gp, 0)), "lcp-spd-small"); // symmetric positive definite: not tri
   EXPECT_FALSE(classify(generate("random_spd", gp, 0)).triangular);
   EXPECT_EQ(classOf(generate("pmatrix", gp, 0)), "lcp-pd-small"); // dense nonsymmetric P-matrix: not tri
+}
+
+// The scalar tests of n <= 16 (problem_class.cpp, scanTinyInto) against the general path: diag(A, A), of
+// size 2 n > 16, has the same features as A (the same rows' sums, the zero cross blocks add positive minors
+// and keep a triangle), and is in the same size band while 2 n <= 32.
+TEST(ProblemClass, TinyScanAgreesWithTheGeneralPath) {
+  GeneratorParams gp;
+  gp.cond = 1e3;
+  std::vector<Mat> mats;
+  for (int n : {9, 12, 16}) {
+    gp.n = n;
+    for (const char* fam : {"random_spd", "pmatrix", "murty"}) mats.push_back(generate(fam, gp, 0).M);
+    mats.push_back(mats.back().transpose());         // upper triangular
+    mats.push_back(Mat::Identity(n, n) * (n + 1.0)); // dominant
+    mats.push_back(mats.back() + Mat::Ones(n, n));   // symmetric, dominant
+    const Mat& pm = mats[mats.size() - 5];
+    mats.push_back(pm - pm.transpose() + Mat::Identity(n, n)); // skew part + I: pd
+    mats.push_back(generate("random_spd", gp, 1).M);
+    mats.back()(n - 1, n - 1) = -1.0;                            // a negative diagonal entry: sym
+    mats.push_back(Mat::Ones(n, n) * 2.0 - Mat::Identity(n, n)); // minors <= 0
+  }
+  for (size_t k = 0; k < mats.size(); ++k) {
+    const Mat& A = mats[k];
+    const Eigen::Index n = A.rows();
+    Mat B = Mat::Zero(2 * n, 2 * n);
+    B.topLeftCorner(n, n) = A;
+    B.bottomRightCorner(n, n) = A;
+    const ProblemFeatures a = classify(makeLcp(A, Vec::Constant(n, -1.0)));
+    const ProblemFeatures b = classify(makeLcp(B, Vec::Constant(2 * n, -1.0)));
+    SCOPED_TRACE("matrix " + std::to_string(k) + ", n = " + std::to_string(n) + ": " + a.name());
+    EXPECT_EQ(a.symmetric, b.symmetric);
+    EXPECT_EQ(a.diag_positive, b.diag_positive);
+    EXPECT_EQ(a.diag_dominant, b.diag_dominant);
+    EXPECT_EQ(a.minors_ok, b.minors_ok);
+    EXPECT_EQ(a.triangular, b.triangular);
+    if (2 * n <= 32)
+      EXPECT_EQ(a.name(), b.name());
+    else
+      EXPECT_EQ(a.matrix, b.matrix);
+  }
 }
 
 TEST(ProblemClass, StructureSizeAndFeatures) {
@@ -96,7 +138,7 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   // Murty's M = I + 2 strict lower triangle: symmetric part I + L + L^T with ones off the diagonal, singular,
   // but triangular with a positive diagonal (TriangularPMatrices)
   gp.n = 8;
-  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-tri-small");
+  EXPECT_EQ(classOf(generate("murty", gp, 0)), "lcp-tril-small");
   // MLCP: one free variable, then one complementarity variable
   const Problem m = makeMlcp(mat2(4, 1, 1, 4), Vec::Constant(2, -1.0), 1);
   EXPECT_EQ(classOf(m), "mlcp-dd-small");
