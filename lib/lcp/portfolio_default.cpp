@@ -37,7 +37,7 @@ const Portfolio& builtinPortfolio() {
                        {"lemke", "keller", "cottle_dantzig", "murty"},
                        {"bpp", "lemke", "keller", "cottle_dantzig"},
                        {"bpp", "lemke", "keller", "cottle_dantzig"},
-                       {"cottle_dantzig", "lemke", "keller", "murty"},
+                       {"bpp", "lemke", "keller", "cottle_dantzig"},
                        {"pgs", "lemke", "keller", "cottle_dantzig"},
                        {"cottle_dantzig", "lemke", "keller", "murty"},
                        {"pgs", "lemke", "keller", "cottle_dantzig"},
