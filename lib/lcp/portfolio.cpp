@@ -279,13 +279,13 @@ Result runIndexed(const Problem& p, const Portfolio& t, const std::vector<const 
 // deferred, and info's copies made only when info is asked for.
 //
 // The deferred test: the minors test of classify() (O(n^2); at n = 100 to 300 about a fifth of bpp's time on a
-// box LCP) decides only between spd and sym (pd and gen) once the matrix is neither dd nor tri. For n > 32 the
-// problem is classed spd / pd provisionally, and the first solver of that class's chain runs; only when its
-// answer is not accepted is the test done, and the final class's chain tried without that solver (route). A
-// verified answer of the first solver is an answer whatever the test would say; the class recorded in info is
-// the final one. An indefinite matrix pays for one failed attempt where the first solver fails on it (no
-// symmetric-indefinite or gen problem of medium size is among the training problems; their classes use the
-// default chain). At n <= 32 the test costs ~20 ns and is done first.
+// box LCP; at n = 10 ~30 of classify()'s 50 ns) decides only between spd and sym (pd and gen) once the matrix
+// is neither dd nor tril / triu. The problem is classed spd / pd provisionally, and the first solver of that
+// class's chain runs; only when its answer is not accepted is the test done, and the final class's chain tried
+// without that solver (route). A verified answer of the first solver is an answer whatever the test would say;
+// the class recorded in info is the final one. An indefinite matrix pays for one failed attempt where the
+// first solver fails on it (none of the Siconos files did in the portfolio benchmark of 2026-11-27: no
+// fallback; before that run the test was deferred only for n > 32).
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   const double t0 = o.timed ? MPI_Wtime() : 0.0, c0 = o.timed ? threadCpuSeconds() : 0.0;
   const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();

@@ -139,7 +139,7 @@ bool upperZero(const Mat& M) {
   return true;
 }
 
-int scanTinyInto(const Problem& p, ProblemFeatures* f) {
+int scanTinyInto(const Problem& p, bool with_minors, ProblemFeatures* f) {
   const Mat& M = p.M;
   const int n = static_cast<int>(M.rows());
   bool positive = n > 0;
@@ -154,11 +154,11 @@ int scanTinyInto(const Problem& p, ProblemFeatures* f) {
   }
   f->diag_positive = positive;
   f->diag_dominant = dominant;
-  f->minors_ok =
-      positive && (f->symmetric || !dominant) && everyPair(M, [&M](double a, double b, int i, int j) {
-        const double h = 0.5 * (a + b);
-        return M(i, i) * M(j, j) > h * h;
-      });
+  f->minors_ok = with_minors && positive && (f->symmetric || !dominant) &&
+                 everyPair(M, [&M](double a, double b, int i, int j) {
+                   const double h = 0.5 * (a + b);
+                   return M(i, i) * M(j, j) > h * h;
+                 });
   if (f->symmetric || dominant || !positive) return 0;
   if (upperZero(M)) return 1;
   return everyPair(M, [](double a, double, int, int) { return a == 0.0; }) ? 2 : 0;
@@ -181,7 +181,7 @@ bool definite(const Problem& p, bool cholesky, ProblemFeatures* f) {
 } // namespace
 
 ProblemFeatures classify(const Problem& p, bool thorough, bool defer_minors) {
-  defer_minors = defer_minors && !thorough && sizeOf(p.size()) > 0; // medium and large only
+  defer_minors = defer_minors && !thorough;
   ProblemFeatures f;
   f.n = p.size();
   f.kind = p.kind;
@@ -195,7 +195,7 @@ ProblemFeatures classify(const Problem& p, bool thorough, bool defer_minors) {
     f.density = static_cast<double>((p.M.array() != 0.0).count()) / std::max(1.0, double(f.n) * f.n);
   int side = 0;
   if (f.n <= kTiny) {
-    side = scanTinyInto(p, &f);
+    side = scanTinyInto(p, !defer_minors, &f);
   } else {
     f.symmetric = isSymmetric(p);
     if (f.symmetric) {

@@ -59,11 +59,10 @@ struct ProblemFeatures {
 // The features and class of p (which must be valid, see validate()). thorough: decide definiteness by an
 // attempted Cholesky factorisation when the O(n^2) tests pass, and count the nonzeros (density); off in the
 // portfolio (see above; the chains do not depend on the density of the dense problems measured).
-// defer_minors (not with thorough; solveAuto): when n > 32 (medium and large) and the matrix is neither dd
-// nor tril / triu and its diagonal is positive, the 2 x 2 minors test (O(n^2), the dearest of the tests) is
-// left out and the matrix classed spd / pd provisionally, minors_deferred set (minors_ok is then not
-// computed); classify(p) gives the final class. (At n <= 32 the test costs ~20 ns, less than a failed first
-// attempt.)
+// defer_minors (not with thorough; solveAuto): when the matrix is neither dd nor tril / triu and its diagonal
+// is positive, the 2 x 2 minors test (O(n^2), the dearest of the tests) is left out and the matrix classed
+// spd / pd provisionally, minors_deferred set (minors_ok is then not computed); classify(p) gives the final
+// class.
 ProblemFeatures classify(const Problem& p, bool thorough = false, bool defer_minors = false);
 
 // Every class name classify() can return, in a fixed order (the index used in lcpbench's output).

@@ -253,58 +253,58 @@ TEST(Portfolio, IterationCapOnTheFirstSolverFallsBack) {
   EXPECT_EQ(fail.attempts.size(), 1u);
 }
 
-// The deferred minors test (portfolio.cpp): a symmetric matrix of n > 32 with a positive diagonal, neither dd
-// nor tri, is classed spd provisionally; the test runs only when the first solver of that chain fails, and then the final
-// class's chain is tried without that solver. The same route with the table indexed (runIndexed) or not
+// The deferred minors test (portfolio.cpp): a symmetric matrix with a positive diagonal, neither dd nor
+// triangular, is classed spd provisionally; the test runs only when the first solver of that chain fails, and
+// then the final class's chain is tried without that solver. The same route with the table indexed (runIndexed) or not
 // (solveWithChain); the class recorded is the final one.
 TEST(Portfolio, DeferredMinorsTestRoutesAfterAFailedFirstSolver) {
-  GeneratorParams gp;
-  gp.n = 40;
-  Problem p = generate("random_spd", gp, 3);
-  const double m01 = p.M(0, 1);
-  p.M(0, 1) = p.M(1, 0) = 2 * std::sqrt(p.M(0, 0) * p.M(1, 1)); // minor d_0 d_1 - M_01^2 < 0: indefinite
-  p.symmetric = -1;                                             // (not known: tested)
-  const ProblemFeatures quick = classify(p, false, true);
-  EXPECT_TRUE(quick.minors_deferred);
-  EXPECT_EQ(quick.name(), "lcp-spd-medium");
-  EXPECT_FALSE(classify(p).minors_deferred);
-  EXPECT_EQ(classify(p).name(), "lcp-sym-medium");
-  Portfolio t{{"lcp-spd-medium", "lcp-sym-medium", "default"},
-              {{"lemke", "keller"}, {"keller", "lemke", "cottle_dantzig"}, {"murty"}}};
-  for (const bool indexed : {false, true}) {
-    if (indexed) t.indexRows();
-    AutoOptions o;
-    o.portfolio = &t;
-    o.max_iterations = 1; // Lemke stops after one pivot
-    AutoInfo info;
-    const Result r = solveAuto(p, o, &info);
-    ASSERT_TRUE(r.ok()) << describeAttempts(info.attempts);
-    EXPECT_EQ(info.features.name(), "lcp-sym-medium");
-    EXPECT_EQ(info.chain, (std::vector<std::string>{"lemke", "keller", "cottle_dantzig"}));
-    ASSERT_EQ(info.attempts.size(), 2u) << indexed;
-    EXPECT_EQ(info.attempts[0].solver, "lemke");
-    EXPECT_EQ(info.attempts[0].status, Status::MaxIterations);
-    EXPECT_EQ(info.solver, "keller");
-    EXPECT_LE(naturalResidual(p, r.z, p.M * r.z + p.q), acceptanceTolerance(p));
-    // Without the cap Lemke's answer is accepted: no test needed, yet the record has the final class.
-    o.max_iterations = 0;
-    AutoInfo first;
-    ASSERT_TRUE(solveAuto(p, o, &first).ok());
-    EXPECT_EQ(first.attempts.size(), 1u);
-    EXPECT_EQ(first.solver, "lemke");
-    EXPECT_EQ(first.features.name(), "lcp-sym-medium");
+  for (const int n : {40, 10}) { // the general path and the scalar one of n <= 16
+    SCOPED_TRACE("n = " + std::to_string(n));
+    const std::string spd = n > 32 ? "lcp-spd-medium" : "lcp-spd-small";
+    const std::string sym = n > 32 ? "lcp-sym-medium" : "lcp-sym-small";
+    GeneratorParams gp;
+    gp.n = n;
+    Problem p = generate("random_spd", gp, 3);
+    const double m01 = p.M(0, 1);
+    p.M(0, 1) = p.M(1, 0) = 2 * std::sqrt(p.M(0, 0) * p.M(1, 1)); // minor d_0 d_1 - M_01^2 < 0: indefinite
+    p.symmetric = -1;                                             // (not known: tested)
+    const ProblemFeatures quick = classify(p, false, true);
+    EXPECT_TRUE(quick.minors_deferred);
+    EXPECT_EQ(quick.name(), spd);
+    EXPECT_FALSE(classify(p).minors_deferred);
+    EXPECT_EQ(classify(p).name(), sym);
+    Portfolio t{{spd, sym, "default"},
+                {{"lemke", "keller"}, {"keller", "lemke", "cottle_dantzig"}, {"murty"}}};
+    for (const bool indexed : {false, true}) {
+      if (indexed) t.indexRows();
+      AutoOptions o;
+      o.portfolio = &t;
+      o.max_iterations = 1; // Lemke stops after one pivot
+      AutoInfo info;
+      const Result r = solveAuto(p, o, &info);
+      ASSERT_TRUE(r.ok()) << describeAttempts(info.attempts);
+      EXPECT_EQ(info.features.name(), sym);
+      EXPECT_EQ(info.chain, (std::vector<std::string>{"lemke", "keller", "cottle_dantzig"}));
+      ASSERT_EQ(info.attempts.size(), 2u) << indexed;
+      EXPECT_EQ(info.attempts[0].solver, "lemke");
+      EXPECT_EQ(info.attempts[0].status, Status::MaxIterations);
+      EXPECT_EQ(info.solver, "keller");
+      EXPECT_LE(naturalResidual(p, r.z, p.M * r.z + p.q), acceptanceTolerance(p));
+      // Without the cap Lemke's answer is accepted: no test needed, yet the record has the final class.
+      o.max_iterations = 0;
+      AutoInfo first;
+      ASSERT_TRUE(solveAuto(p, o, &first).ok());
+      EXPECT_EQ(first.attempts.size(), 1u);
+      EXPECT_EQ(first.solver, "lemke");
+      EXPECT_EQ(first.features.name(), sym);
+    }
+    // The SPD matrix it came from: the provisional class is the final one.
+    p.M(0, 1) = p.M(1, 0) = m01;
+    EXPECT_TRUE(classify(p, false, true).minors_deferred);
+    EXPECT_EQ(classify(p, false, true).name(), spd);
+    EXPECT_EQ(classify(p).name(), spd);
+    EXPECT_TRUE(classify(p).minors_ok);
   }
-  // n <= 32: the test is done first.
-  gp.n = 32;
-  const Problem small = generate("random_spd", gp, 3);
-  EXPECT_FALSE(classify(small, false, true).minors_deferred);
-  EXPECT_TRUE(classify(small, false, true).minors_ok);
-  // The SPD matrix it came from: the provisional class is the final one.
-  p.M(0, 1) = p.M(1, 0) = m01;
-  EXPECT_TRUE(classify(p, false, true).minors_deferred);
-  EXPECT_EQ(classify(p, false, true).name(), "lcp-spd-medium");
-  EXPECT_EQ(classify(p).name(), "lcp-spd-medium");
-  EXPECT_TRUE(classify(p).minors_ok);
 }
 
 // The built-in table on every Siconos file: auto solves each file that some single solver solves.
