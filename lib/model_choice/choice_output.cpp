@@ -71,7 +71,8 @@ void writeAttributes(H5AppendFile& h5, const ModelChooser& c) {
   h5.setAttribute(g, "target_met", (long long)(c.met() ? 1 : 0));
   h5.setAttribute(g, "pilot_seconds", c.pilotSeconds());
   h5.setAttribute(g, "final_seconds", c.finalSeconds());
-  h5.setAttribute(g, "total_seconds", c.pilotSeconds() + c.finalSeconds());
+  h5.setAttribute(g, "check_seconds", c.checkSeconds());
+  h5.setAttribute(g, "total_seconds", c.pilotSeconds() + c.checkSeconds() + c.finalSeconds());
   h5.setAttribute(g, "escalations", (long long)c.finals().size() - 1);
   h5.setAttribute(g, "most_accurate_label", c.label(c.mostAccurate().family, c.mostAccurate().n));
   h5.setAttribute(g, "most_accurate_predicted_cost", c.mostAccurate().cost);
@@ -95,6 +96,7 @@ PetscErrorCode writeModelChoice(MPI_Comm comm, const std::string& path, const Mo
       writeRuns(h5, "/model_choice/pilots", chooser.pilots());
       writeRuns(h5, "/model_choice/finals", chooser.finals());
       writeRuns(h5, "/model_choice/timings", chooser.timings());
+      writeRuns(h5, "/model_choice/checks", chooser.checks());
       h5.close();
     } catch (const std::exception& e) {
       PetscCall(PetscSNPrintf(message, sizeof message, "%s", e.what()));

@@ -1,27 +1,33 @@
 // The chooser of an accuracy-target run: given candidate families (configurations as option values, see
 // candidate.hpp) and a target, it
-//   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error constant,
-//      observed_order.hpp; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0, refitting each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0
-//      and 32 n0 (at most n_max; a timing run predicted to cost more than the family's pilots is left out): with
-//      the pilots' timings, the cost model (cost_model.hpp). Families go
-//      cheapest first (by their n0 pilot); with an error target, a family whose next pilot is predicted to cost
-//      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
+//   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error
+//      constant, observed_order.hpp; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0, refitting
+//      each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0 and 32 n0
+//      (at most n_max; a timing run predicted to cost more than the family's pilots is left out): with the
+//      pilots' timings, the cost model (cost_model.hpp). Families go cheapest first (by their n0 pilot); with an
+//      error target, a family whose next pilot is predicted to cost more than a candidate already known to meet
+//      the target is left out (it cannot lower the whole cost),
 //   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
 //      and predicted error,
-//   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone, the
-//      most accurate one predicted to finish within the time left), runs it through the caller's runner,
-//   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and the
-//      finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder), or without a the pair
+//   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone,
+//      the most accurate one predicted to finish within the time left), runs it through the caller's runner,
+//   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and
+//      the finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder), or without a the pair
 //      estimate with the order so far (ratios of 2 or more: closer runs of a flow with discontinuities differ
-//      mostly by the sub-cell placement of the jumps). A lower order observed this way caps every family's
-//      order (the problem's regularity bounds them all). When the estimate misses the target the family's fit
-//      is replaced by what the final run showed and the next candidate is run (at most max_escalations times).
+//      mostly by the sub-cell placement of the jumps). When that estimate misses the target and the final run
+//      is above the earlier runs (whose order may be pre-asymptotic there), check runs at n/4 and n/2 (no
+//      output; 5/16 of the final's cost in 1D, 9/64 in 2D; each unless an earlier run lies within a factor
+//      kCheckGap / 2 below it) become a and b, and the estimate is made again from them before escalating (the
+//      order of that fit at most 1 when the family's is below 2: see runFinal). A lower order observed this
+//      way caps every family's order (the problem's regularity bounds them all). When the estimate misses the
+//      target the family's fit is replaced by what the final run showed and the next candidate is run (at most
+//      max_escalations times).
 // A run that fails (RunResult::failed: a non-physical state, a failed step) leaves its family out: its pilots
 // stop, a failed final run is followed by the next candidate (an escalation), and the output records the
-// failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on the
-// problem. A target no candidate can reach is a collective error naming the best reachable error. Every rank takes the
-// same decisions: the runner must return the same density field and the same seconds (e.g. the maximum over
-// the ranks) on every rank.
+// failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on
+// the problem. A target no candidate can reach is a collective error naming the best reachable error. Every
+// rank takes the same decisions: the runner must return the same density field and the same seconds (e.g. the
+// maximum over the ranks) on every rank.
 #pragma once
 
 #include "model_choice/candidate.hpp"
@@ -54,7 +60,11 @@ constexpr int kMaxPilotLevels = 5; // pilots at n0 .. 16 n0 at most
 // unresolved at 32..128 cells); a further pilot level (8 n0, then 16 n0) refits the order from the last three.
 constexpr double kAsymptoticOrder = 0.5;
 
-enum class RunKind { pilot, timing, final };
+// A check run at h = n/2 or n/4 when the final run's family has no run between 2 h / kCheckGap and h (error
+// target only).
+constexpr double kCheckGap = 2.1;
+
+enum class RunKind { pilot, timing, check, final };
 struct RunResult {
   GridField density; // the final density on the whole grid, the same on every rank (not for timing runs)
   double seconds = 0.0;
@@ -62,8 +72,8 @@ struct RunResult {
   bool failed = false; // the run stopped on a non-physical state or a failed step (on every rank)
   std::string failure; // then: why
 };
-// Runs family f at resolution n: a pilot (to t_final, no output), a timing run (kTimingSteps steps, no output)
-// or a final run (to t_final, with the run's output).
+// Runs family f at resolution n: a pilot or a check run (to t_final, no output), a timing run (kTimingSteps
+// steps, no output) or a final run (to t_final, with the run's output).
 using Runner = std::function<PetscErrorCode(const Family& f, long long n, RunKind kind, RunResult* r)>;
 
 struct CandidateRow {
@@ -96,6 +106,7 @@ public:
   const std::vector<RunRecord>& pilots() const { return pilots_; }
   const std::vector<RunRecord>& finals() const { return finals_; }
   const std::vector<RunRecord>& timings() const { return timings_; }
+  const std::vector<RunRecord>& checks() const { return checks_; } // difference: to the final run
   // Per family: why its run failed ("" when none did); a failed family is left out of the choice.
   const std::vector<std::string>& failures() const { return failures_; }
   const CandidateRow& chosen() const { return chosen_; } // the last candidate run
@@ -103,6 +114,7 @@ public:
   bool met() const { return met_; } // the final estimate is within the target (or no error target)
   double pilotSeconds() const;
   double finalSeconds() const;
+  double checkSeconds() const;
   std::string label(int family, long long n) const;
   std::string summary() const; // one line
 
@@ -121,6 +133,7 @@ private:
   PetscErrorCode choose(const std::vector<bool>& done, CandidateRow* out) const;
   PetscErrorCode explainUnreachable() const;
   PetscErrorCode runFinal(const Runner& runner, const CandidateRow& c);
+  PetscErrorCode runChecks(const Runner& runner, size_t f, long long n, bool* ran);
   void capOrders(double p);
   double checkEstimate(size_t f, long long n, const GridField& u, RunRecord* rec, ObservedOrder* refit);
 
@@ -132,7 +145,7 @@ private:
   std::vector<std::map<long long, GridField>> runs_; // per family: the density of every run so far, by n
   std::vector<std::array<double, kMaxPilotLevels>> pilot_seconds_; // per family: its pilots' seconds by level
   std::vector<CandidateRow> table_;
-  std::vector<RunRecord> pilots_, finals_, timings_;
+  std::vector<RunRecord> pilots_, finals_, timings_, checks_;
   std::vector<std::string> failures_;
   CandidateRow chosen_, most_accurate_;
   bool met_ = false;

@@ -19,11 +19,12 @@ from euler_harness import check, error, run  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 ATTRS = ["families", "target_error", "chosen_family", "chosen_label", "chosen_n", "chosen_predicted_error", "chosen_predicted_cost",
-         "estimated_error", "target_met", "pilot_seconds", "final_seconds", "total_seconds",
+         "estimated_error", "target_met", "pilot_seconds", "check_seconds", "final_seconds", "total_seconds",
          "most_accurate_label", "most_accurate_predicted_cost", "most_accurate_predicted_error", "summary"]
 COLUMNS = {"candidates": ["family", "n", "predicted_cost", "predicted_error"],
            "pilots": ["family", "n", "seconds", "difference", "estimate"],
-           "finals": ["family", "n", "seconds", "difference", "estimate"]}
+           "finals": ["family", "n", "seconds", "difference", "estimate"],
+           "checks": ["family", "n", "seconds", "difference"]}
 
 
 def check_group(path, target):
