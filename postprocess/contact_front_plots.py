@@ -61,7 +61,10 @@ def plot_front(path, outdir):
         ax.set_ylabel({"incline_slide": "speed error (m/s)"}.get(scene, "penetration (m)" if scene.startswith(
             "logheap") else "drift (m)"))
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7)
+        else:  # every run of the scene without a finite error (e.g. stopped before its first step)
+            ax.text(0.5, 0.5, "no run with a finite error", ha="center", va="center", transform=ax.transAxes)
     for ax in list(axes.flat)[len(scenes):]:
         ax.axis("off")
     fig.tight_layout()
