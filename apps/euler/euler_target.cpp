@@ -230,9 +230,6 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   };
   mc::ModelChooser chooser(ctx.comm(), fams, chooserSettings(t), cost);
   PetscCall(chooser.run(runner));
-  // -output was the final runs' (check runs after a final one restore it, unread: mark it read)
-  PetscBool has_output = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-output", &has_output));
   if (!output.empty()) PetscCall(mc::writeModelChoice(ctx.comm(), output, chooser));
   PetscCall(reportChoice(ctx.comm(), chooser, t.error, exact_l1));
   PetscFunctionReturn(0);

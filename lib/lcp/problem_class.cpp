@@ -113,13 +113,7 @@ int triangularSide(const Mat& M) {
   return lower ? 1 : upper ? 2 : 0;
 }
 
-// classify()'s matrix tests for n <= kTiny by scalar loops, each stopping at its first failure (Murty's
-// example at n = 8: the first pair ends the symmetry, dominance and minors tests; only the triangle is read
-// through). For such sizes Eigen's vectorised reductions, the scratch vectors and whole passes cost more than
-// the tests: that example (cottle_dantzig ~0.24 us) spent ~60 ns in them. Returns the triangle (1 lower,
-// 2 upper, 0 none or not asked: symmetric, dominant or a diagonal entry <= 0); the flags are the general
-// path's.
-constexpr int kTiny = 16;
+constexpr int kTiny = 16; // classify()'s scalar path up to this size (scanTinyInto)
 
 // Every pair i > j satisfies ok(M(i, j), M(j, i), i, j); stops at the first that does not.
 template <class Test> bool everyPair(const Mat& M, Test ok) {
@@ -139,6 +133,12 @@ bool upperZero(const Mat& M) {
   return true;
 }
 
+// classify()'s matrix tests for n <= kTiny by scalar loops, each stopping at its first failure (Murty's
+// example at n = 8: the first pair ends the symmetry, dominance and minors tests; only the triangle is read
+// through). For such sizes Eigen's vectorised reductions, the scratch vectors and whole passes cost more than
+// the tests: that example (cottle_dantzig ~0.24 us) spent ~60 ns in them. Returns the triangle (1 lower,
+// 2 upper, 0 none or not asked: symmetric, dominant or a diagonal entry <= 0); the flags are the general
+// path's.
 int scanTinyInto(const Problem& p, bool with_minors, ProblemFeatures* f) {
   const Mat& M = p.M;
   const int n = static_cast<int>(M.rows());

@@ -14,12 +14,14 @@ std::string optionsText(const OptionValues& options) {
 
 PetscErrorCode ScopedOptions::remember(const std::string& name) {
   char buf[PETSC_MAX_PATH_LEN] = "";
-  PetscBool had = PETSC_FALSE;
+  PetscBool had = PETSC_FALSE, used = PETSC_FALSE;
   PetscFunctionBeginUser;
   for (const Saved& s : saved_)
     if (s.name == name) PetscFunctionReturn(0); // the first value is the one to restore
+  // whether it was read before the read below marks it (PetscOptionsUsed takes the name without its '-')
+  PetscCall(PetscOptionsUsed(nullptr, name.c_str() + (name[0] == '-'), &used));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, name.c_str(), buf, sizeof buf, &had));
-  saved_.push_back({name, buf, had == PETSC_TRUE});
+  saved_.push_back({name, buf, had == PETSC_TRUE, used == PETSC_TRUE});
   PetscFunctionReturn(0);
 }
 
@@ -51,6 +53,8 @@ PetscErrorCode ScopedOptions::restore() {
       PetscCall(PetscOptionsSetValue(nullptr, s.name.c_str(), s.value.empty() ? nullptr : s.value.c_str()));
     else
       PetscCall(PetscOptionsClearValue(nullptr, s.name.c_str()));
+    PetscBool present = PETSC_FALSE;
+    if (s.had && s.used) PetscCall(PetscOptionsHasName(nullptr, nullptr, s.name.c_str(), &present)); // read
   }
   saved_.clear();
   PetscFunctionReturn(0);

@@ -30,7 +30,9 @@ struct Candidate {
 std::string optionsText(const OptionValues& options);
 
 // Sets option values for the lifetime of the object (value "" with unset = true: removes the option) and
-// restores the previous values (or their absence) on restore() / destruction.
+// restores the previous values (or their absence) on restore() / destruction. An option the program had
+// already read stays marked read after the restore (PETSc marks a value set again as unused: a run in a scope
+// after the one that read -output would otherwise leave it reported as never used).
 class ScopedOptions {
 public:
   ScopedOptions() = default;
@@ -47,6 +49,7 @@ private:
   struct Saved {
     std::string name, value;
     bool had;
+    bool used; // already read before the scope
   };
   std::vector<Saved> saved_;
 };

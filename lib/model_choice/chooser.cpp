@@ -10,23 +10,24 @@
 
 namespace suite::model_choice {
 
-double ModelChooser::pilotSeconds() const { // pilots and timing runs: what the choice cost
+namespace {
+double secondsOf(const std::vector<RunRecord>& runs) {
   double s = 0.0;
-  for (const RunRecord& r : pilots_) s += r.seconds;
-  for (const RunRecord& r : timings_) s += r.seconds;
+  for (const RunRecord& r : runs) s += r.seconds;
   return s;
+}
+} // namespace
+
+double ModelChooser::pilotSeconds() const { // pilots and timing runs: what the choice cost
+  return secondsOf(pilots_) + secondsOf(timings_);
 }
 
 double ModelChooser::finalSeconds() const {
-  double s = 0.0;
-  for (const RunRecord& r : finals_) s += r.seconds;
-  return s;
+  return secondsOf(finals_);
 }
 
 double ModelChooser::checkSeconds() const {
-  double s = 0.0;
-  for (const RunRecord& r : checks_) s += r.seconds;
-  return s;
+  return secondsOf(checks_);
 }
 
 std::string ModelChooser::label(int family, long long n) const {
@@ -320,6 +321,28 @@ PetscErrorCode ModelChooser::runChecks(const Runner& runner, size_t f, long long
   PetscFunctionReturn(0);
 }
 
+// After a missed estimate of family f's final run at n (density u): the check runs (runChecks) and, when the one
+// at n/2 was made, the estimate again from them (*rec, *refit). From one three-run fit at ratio 2 an order above
+// the problem's is not trusted: at most 1 (the L1 bound at discontinuities) when the family's order is below 2
+// (a flow with jumps), else the family's. Lax at E = 3e-3, enopade6 n = 431: fit 8.4e-4, true 3.5e-3; the pair
+// estimate at order 1: 3.1e-3.
+PetscErrorCode ModelChooser::recheck(const Runner& runner, size_t f, long long n, const GridField& u,
+                                     RunRecord* rec, ObservedOrder* refit) {
+  bool checked = false;
+  PetscFunctionBeginUser;
+  PetscCall(runChecks(runner, f, n, &checked));
+  if (!checked) PetscFunctionReturn(0);
+  checks_.back().difference = l1Distance(runs_[f].at(n / 2), u);
+  *refit = ObservedOrder();
+  rec->estimate = checkEstimate(f, n, u, rec, refit);
+  const double p_max = orders_[f].p >= 2.0 ? orders_[f].p : 1.0;
+  if (refit->valid && refit->p > p_max) {
+    rec->estimate = pairEstimate(0.5 * (double)n, (double)n, rec->difference, p_max);
+    *refit = ObservedOrder();
+  }
+  PetscFunctionReturn(0);
+}
+
 // Runs c and checks its estimate (checkEstimate); a miss replaces the family's fit by what the final run showed.
 PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& c) {
   RunResult r;
@@ -333,22 +356,8 @@ PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& 
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)c.n, r.seconds, (double)r.steps, true});
   RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, NAN};
   rec.estimate = checkEstimate(f, c.n, r.density, &rec, &refit);
-  bool checked = false;
   if (set_.target_error > 0 && !(rec.estimate <= set_.target_error)) // a miss: the check runs first
-    PetscCall(runChecks(runner, f, c.n, &checked));
-  if (checked) { // the estimate again, from the check runs (b = n/2)
-    checks_.back().difference = l1Distance(runs_[f].at(c.n / 2), r.density);
-    refit = ObservedOrder();
-    rec.estimate = checkEstimate(f, c.n, r.density, &rec, &refit);
-    // From one three-run fit at ratio 2, an order above the problem's is not trusted: at most 1 (the L1
-    // bound at discontinuities) when the family's order is below 2 (a flow with jumps), else the family's.
-    // Lax at E = 3e-3, enopade6 n = 431: fit 8.4e-4, true 3.5e-3; the pair estimate at order 1: 3.1e-3.
-    const double p_max = orders_[f].p >= 2.0 ? orders_[f].p : 1.0;
-    if (refit.valid && refit.p > p_max) {
-      rec.estimate = pairEstimate(0.5 * (double)c.n, (double)c.n, rec.difference, p_max);
-      refit = ObservedOrder();
-    }
-  }
+    PetscCall(recheck(runner, f, c.n, r.density, &rec, &refit));
   finals_.push_back(rec);
   met_ = set_.target_error <= 0 || rec.estimate <= set_.target_error;
   ObservedOrder& o = orders_[f];

@@ -134,6 +134,8 @@ private:
   PetscErrorCode explainUnreachable() const;
   PetscErrorCode runFinal(const Runner& runner, const CandidateRow& c);
   PetscErrorCode runChecks(const Runner& runner, size_t f, long long n, bool* ran);
+  PetscErrorCode recheck(const Runner& runner, size_t f, long long n, const GridField& u, RunRecord* rec,
+                         ObservedOrder* refit);
   void capOrders(double p);
   double checkEstimate(size_t f, long long n, const GridField& u, RunRecord* rec, ObservedOrder* refit);
 

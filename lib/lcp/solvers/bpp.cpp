@@ -70,7 +70,7 @@ public:
       else
         flipMostViolatedHalf();
       if (fast_) updateFactors();
-      r_.pivots += block ? ninf : 1;
+      r_.pivots += static_cast<long long>(add_.size() + rem_.size()); // the indices flipped
       ++r_.iterations;
     }
     r_.z = z_;

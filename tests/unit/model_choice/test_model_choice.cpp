@@ -229,3 +229,23 @@ TEST(ScopedOptions, SetsAndRestoresTheOptionsDatabase) {
   EXPECT_FALSE(set);
   ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_kept"), 0);
 }
+
+// An option read before a scope that unsets it (the runs of a target choice unset -output) stays marked read
+// after the restore; one never read stays unread (PETSc's unused-option report must see it).
+TEST(ScopedOptions, RestoreKeepsWhetherTheOptionWasRead) {
+  PetscBool flag, used;
+  ASSERT_EQ(PetscOptionsSetValue(nullptr, "-mc_test_read", "a.h5"), 0);
+  ASSERT_EQ(PetscOptionsSetValue(nullptr, "-mc_test_unread", "b.h5"), 0);
+  ASSERT_EQ(PetscOptionsHasName(nullptr, nullptr, "-mc_test_read", &flag), 0); // the program reads it
+  {
+    ScopedOptions so;
+    ASSERT_EQ(so.unset("-mc_test_read"), 0);
+    ASSERT_EQ(so.unset("-mc_test_unread"), 0);
+  }
+  ASSERT_EQ(PetscOptionsUsed(nullptr, "mc_test_read", &used), 0);
+  EXPECT_TRUE(used);
+  ASSERT_EQ(PetscOptionsUsed(nullptr, "mc_test_unread", &used), 0);
+  EXPECT_FALSE(used);
+  ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_read"), 0);
+  ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_unread"), 0);
+}
