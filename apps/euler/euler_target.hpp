@@ -15,7 +15,7 @@ namespace euler_app {
 
 struct TargetOptions {
   double error = 0.0, walltime = 0.0, safety = 2.0;
-  PetscInt pilot_n = 0, max_n = 0, escalations = 2; // 0: the dimension's default
+  PetscInt pilot_n = 0, max_n = 0, escalations = 4; // 0: the dimension's default
   std::string schemes = "enopade6,crweno5,weno5,muscl2", cost_model;
   bool on() const { return error > 0.0 || walltime > 0.0; }
 };

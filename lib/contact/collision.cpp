@@ -42,9 +42,13 @@ void planeContacts(const Body& A, int a, const Body& P, int b, double margin, Cs
       const Vec3 s((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1);
       const Vec3 c = A.x + R * s.cwiseProduct(A.shape.half);
       const double phi = n.dot(c) - d;
-      if (phi < margin) corners[nk++] = {phi, k};
+      if (phi < margin) { // kept sorted by (phi, k) as they come (std::sort on the first nk made GCC 12 warn)
+        const std::pair<double, int> corner{phi, k};
+        int i = nk++;
+        for (; i > 0 && corner < corners[(size_t)i - 1]; --i) corners[(size_t)i] = corners[(size_t)i - 1];
+        corners[(size_t)i] = corner;
+      }
     }
-    std::sort(corners.begin(), corners.begin() + nk);
     for (int i = 0; i < std::min(nk, 4); ++i) {
       const auto [phi, k] = corners[i];
       const Vec3 s((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1);

@@ -18,6 +18,33 @@ double secondsOf(const std::vector<RunRecord>& runs) {
 }
 } // namespace
 
+// The missed run showed the fits wrong at its resolution, so the next run stays within a factor of that
+// evidence, on the family whose fit that run corrected unless another is predicted to meet the target there.
+// On Shu-Osher (pre-asymptotic pilots, estimates 2-7x pessimistic) E = 1e-2 escalated from muscl2 n = 1722
+// (0.8 s) to enopade6 n = 2896 (31 s), the only family predicted to meet target / safety; within the cap it
+// went to muscl2 n = 2880 (3 s), which met E. Lax-Liu 6 at E = 1e-2: the most accurate of any family within the
+// cap after weno5 n = 216 missed was crweno5 n = 128, then enopade6 n = 184, on their pilots' fits (estimates
+// 2.0e-2, 4.1e-2), before weno5 n = 512 met E: 83 s; on weno5's own ladder, n = 304 met it: 13 s.
+CandidateRow escalationCandidate(const std::vector<CandidateRow>& table, const std::vector<bool>& done,
+                                 const std::function<bool(const CandidateRow&)>& feasible, int missed_family,
+                                 double missed_seconds, double missed_estimate) {
+  const double cap = kEscalationGrowth * missed_seconds;
+  CandidateRow cheapest, accurate;
+  for (size_t i = 0; i < table.size(); ++i) {
+    const CandidateRow& r = table[i];
+    if (done[i] || !(r.cost <= cap) || !std::isfinite(r.error)) continue;
+    if (feasible(r) && (cheapest.n == 0 || r.cost < cheapest.cost)) cheapest = r;
+    if (r.family == missed_family && (accurate.n == 0 || r.error < accurate.error)) accurate = r;
+  }
+  if (cheapest.n != 0) return cheapest;
+  return accurate.n != 0 && accurate.error < missed_estimate ? accurate : CandidateRow();
+}
+
+long long ladderN(long long n0, int per_octave, int k) {
+  const int octave = k / per_octave, step = k % per_octave;
+  return std::llround((double)n0 * std::exp2((double)step / per_octave)) << octave;
+}
+
 double ModelChooser::pilotSeconds() const { // pilots and timing runs: what the choice cost
   return secondsOf(pilots_) + secondsOf(timings_);
 }
@@ -192,7 +219,7 @@ void ModelChooser::buildTable() {
   table_.clear();
   for (size_t f = 0; f < families_.size(); ++f)
     for (int k = 0;; ++k) {
-      const long long n = std::llround((double)set_.n0 * std::exp2((double)k / set_.per_octave));
+      const long long n = ladderN(set_.n0, set_.per_octave, k);
       if (n > set_.n_max) break;
       const std::string& name = families_[f].name; // a family left out has no cost law: NaN
       table_.push_back({(int)f, n, cost_.covers(name) ? cost_.predict(name, (double)n) : NAN,
@@ -221,6 +248,20 @@ PetscErrorCode ModelChooser::choose(const std::vector<bool>& done, CandidateRow*
   *out = CandidateRow();
   for (size_t i = 0; i < table_.size(); ++i)
     if (!done[i] && feasible(table_[i]) && (out->n == 0 || better(table_[i], *out))) *out = table_[i];
+  PetscFunctionReturn(0);
+}
+
+// The candidate after a missed final run (finals_.back()): escalationCandidate, else (after a failed run, whose
+// seconds say nothing, or when nothing within the growth cap improves) the cheapest feasible one.
+PetscErrorCode ModelChooser::chooseEscalation(const std::vector<bool>& done, CandidateRow* out) const {
+  const RunRecord& missed = finals_.back();
+  PetscFunctionBeginUser;
+  *out = CandidateRow();
+  if (!missed.failed)
+    *out = escalationCandidate(
+        table_, done, [this](const CandidateRow& r) { return feasible(r); }, missed.family, missed.seconds,
+        missed.estimate);
+  if (out->n == 0) PetscCall(choose(done, out));
   PetscFunctionReturn(0);
 }
 
@@ -356,7 +397,10 @@ PetscErrorCode ModelChooser::runFinal(const Runner& runner, const CandidateRow& 
   if (!cost_.loaded()) cost_.add(families_[f].name, {(double)c.n, r.seconds, (double)r.steps, true});
   RunRecord rec{c.family, c.n, r.seconds, r.steps, NAN, NAN};
   rec.estimate = checkEstimate(f, c.n, r.density, &rec, &refit);
-  if (set_.target_error > 0 && !(rec.estimate <= set_.target_error)) // a miss: the check runs first
+  // Above target / safety (a miss, or within the margin the choice was made with): the check runs first. Lax
+  // at E = 3e-3, enopade6 n = 432 against its pilots at 64 and 128 estimated 1.9e-3 and ended "met" with a true
+  // error of 3.2e-3.
+  if (set_.target_error > 0 && !(rec.estimate <= set_.target_error / set_.safety))
     PetscCall(recheck(runner, f, c.n, r.density, &rec, &refit));
   finals_.push_back(rec);
   met_ = set_.target_error <= 0 || rec.estimate <= set_.target_error;
@@ -384,7 +428,7 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
     buildTable(); // the same rows, with the missed family's errors raised
     for (size_t i = 0; i < table_.size(); ++i)
       done[i] = done[i] || (table_[i].family == c.family && table_[i].n <= c.n);
-    PetscCall(choose(done, &c));
+    PetscCall(chooseEscalation(done, &c));
     if (c.n == 0) break; // nothing left that is predicted to do better: report the miss
   }
   PetscCheck(

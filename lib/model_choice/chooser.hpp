@@ -7,8 +7,8 @@
 //      pilots' timings, the cost model (cost_model.hpp). Families go cheapest first (by their n0 pilot); with an
 //      error target, a family whose next pilot is predicted to cost more than a candidate already known to meet
 //      the target is left out (it cannot lower the whole cost),
-//   2. tabulates every candidate (family x resolution n0 2^(k/per_octave) up to n_max) with its predicted cost
-//      and predicted error,
+//   2. tabulates every candidate (family x resolution ladderN(n0, per_octave, k) up to n_max) with its
+//      predicted cost and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone,
 //      the most accurate one predicted to finish within the time left), runs it through the caller's runner,
 //   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and
@@ -21,7 +21,9 @@
 //      order of that fit at most 1 when the family's is below 2: see runFinal). A lower order observed this
 //      way caps every family's order (the problem's regularity bounds them all). When the estimate misses the
 //      target the family's fit is replaced by what the final run showed and the next candidate is run (at most
-//      max_escalations times).
+//      max_escalations times): one predicted to cost at most kEscalationGrowth times the missed run when one
+//      is predicted to meet the target or, of the missed family, to improve on it (escalationCandidate), else
+//      the cheapest predicted to meet the target.
 // A run that fails (RunResult::failed: a non-physical state, a failed step) leaves its family out: its pilots
 // stop, a failed final run is followed by the next candidate (an escalation), and the output records the
 // failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on
@@ -49,7 +51,7 @@ struct ChooserSettings {
   double target_error = 0.0;    // 0: none (then target_walltime must be set)
   double target_walltime = 0.0; // seconds for the whole run, pilots included; 0: none
   double safety = 2.0;          // a candidate must be predicted to reach target_error / safety
-  int max_escalations = 2;
+  int max_escalations = 4;
   long long n0 = 25, n_max = 3200;
   int per_octave = 4;
 };
@@ -63,6 +65,10 @@ constexpr double kAsymptoticOrder = 0.5;
 // A check run at h = n/2 or n/4 when the final run's family has no run between 2 h / kCheckGap and h (error
 // target only).
 constexpr double kCheckGap = 2.1;
+
+// An escalation runs a candidate predicted to cost at most this times the missed final run, when one is
+// predicted to improve on it (chooseEscalation): a ladder whose runs cost at most 4/3 of its last one.
+constexpr double kEscalationGrowth = 4.0;
 
 enum class RunKind { pilot, timing, check, final };
 struct RunResult {
@@ -91,6 +97,20 @@ struct RunRecord {
   double estimate = NAN; // finals: the estimated error; pilots: the fit's error at n
   bool failed = false;   // the run failed (RunResult::failed): its family is left out
 };
+
+// Resolution k of the candidates' ladder: round(n0 2^(j / per_octave)) 2^o for k = o per_octave + j, so that
+// halving a candidate (its check runs, its earlier runs at ratio 2) lands on exact integers and the two runs
+// are compared by restriction rather than interpolation (ladderN(32, 4, 19) = 864 = 2 x 432, where
+// round(32 2^(37/4)) = 861 and 861 / 2 = 430.5 found no run at 431 and compared 861 with 215 instead).
+long long ladderN(long long n0, int per_octave, int k);
+
+// The candidate after a final run of missed_family that missed the error target (its seconds and estimate):
+// among the rows not yet run (done[i] false) and predicted to cost at most kEscalationGrowth x missed_seconds,
+// the cheapest feasible one; without one, the most accurate of missed_family's when predicted below
+// missed_estimate; else none (n = 0: the caller takes the cheapest feasible row at any cost).
+CandidateRow escalationCandidate(const std::vector<CandidateRow>& table, const std::vector<bool>& done,
+                                 const std::function<bool(const CandidateRow&)>& feasible, int missed_family,
+                                 double missed_seconds, double missed_estimate);
 
 class ModelChooser {
 public:
@@ -131,6 +151,7 @@ private:
   bool feasible(const CandidateRow& r) const;
   bool better(const CandidateRow& a, const CandidateRow& b) const;
   PetscErrorCode choose(const std::vector<bool>& done, CandidateRow* out) const;
+  PetscErrorCode chooseEscalation(const std::vector<bool>& done, CandidateRow* out) const;
   PetscErrorCode explainUnreachable() const;
   PetscErrorCode runFinal(const Runner& runner, const CandidateRow& c);
   PetscErrorCode runChecks(const Runner& runner, size_t f, long long n, bool* ran);

@@ -249,3 +249,45 @@ TEST(ScopedOptions, RestoreKeepsWhetherTheOptionWasRead) {
   ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_read"), 0);
   ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mc_test_unread"), 0);
 }
+
+// The escalation after a missed final run of family 0 (0.1 s, estimate 4e-3; feasible: predicted error <= 1e-3)
+// stays within kEscalationGrowth x its cost: the cheapest feasible row within the cap, of any family; without
+// one, the most accurate of family 0 within the cap when it improves on the missed estimate (family 1's n = 150,
+// more accurate but on its pilots' fit alone, is not taken); else none (the caller then takes any feasible row).
+TEST(Chooser, EscalationStaysWithinAGrowthFactorOfTheMissedRun) {
+  const auto feasible = [](const CandidateRow& r) { return r.error <= 1e-3; };
+  const std::vector<CandidateRow> table = {{0, 100, 0.1, 4e-3}, {0, 200, 0.4, 2e-3},   {0, 400, 1.6, 9e-4},
+                                           {1, 100, 0.5, 3e-3}, {1, 150, 0.3, 1.2e-3}, {1, 200, 2.0, 8e-4},
+                                           {1, 400, 8.0, 1e-4}};
+  std::vector<bool> done(table.size(), false);
+  done[0] = true; // the missed run
+  ASSERT_NEAR(0.1 * kEscalationGrowth, 0.4, 1e-12) << "the rows below assume a growth factor of 4";
+  CandidateRow c = escalationCandidate(table, done, feasible, 0, 0.1, 4e-3);
+  EXPECT_EQ(c.family, 0); // nothing feasible within 0.4 s: family 0's most accurate within it, n = 200
+  EXPECT_EQ(c.n, 200);
+  c = escalationCandidate(table, done, feasible, 0, 0.5,
+                          4e-3); // cap 2 s: two feasible, the cheaper one taken
+  EXPECT_EQ(c.family, 0);
+  EXPECT_EQ(c.n, 400);
+  c = escalationCandidate(table, done, feasible, 1, 0.5, 4e-3); // the same after a miss of family 1
+  EXPECT_EQ(c.family, 0);
+  EXPECT_EQ(c.n, 400);
+  c = escalationCandidate(table, done, feasible, 0, 0.1, 1.5e-3); // nothing of family 0 within 0.4 s improves
+  EXPECT_EQ(c.n, 0);
+  done[1] = true; // family 0 at 200 also done: nothing of family 0 left within the cap
+  c = escalationCandidate(table, done, feasible, 0, 0.1, 4e-3);
+  EXPECT_EQ(c.n, 0);
+}
+
+// The candidates' ladder: every octave doubles exactly (check runs and earlier runs at ratio 2 land on its
+// points), and consecutive points are 2^(1/4) apart up to the rounding of the first octave.
+TEST(Chooser, LadderDoublesExactlyEachOctave) {
+  for (long long n0 : {16LL, 25LL, 32LL})
+    for (int k = 0; k < 40; ++k) {
+      EXPECT_EQ(ladderN(n0, 4, k + 4), 2 * ladderN(n0, 4, k)) << n0 << " " << k;
+      const double r = (double)ladderN(n0, 4, k + 1) / (double)ladderN(n0, 4, k);
+      EXPECT_NEAR(r, std::exp2(0.25), 0.03) << n0 << " " << k;
+    }
+  EXPECT_EQ(ladderN(32, 4, 0), 32);
+  EXPECT_EQ(ladderN(32, 4, 19), 864);
+}
