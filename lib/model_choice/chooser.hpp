@@ -66,8 +66,9 @@ constexpr double kAsymptoticOrder = 0.5;
 // target only).
 constexpr double kCheckGap = 2.1;
 
-// An escalation runs a candidate predicted to cost at most this times the missed final run, when one is
-// predicted to improve on it (chooseEscalation): a ladder whose runs cost at most 4/3 of its last one.
+// An escalation runs a candidate predicted to cost at most this times the missed final run when one there is
+// predicted to meet the target or, of the missed family, to improve on it (escalationCandidate): a ladder whose
+// runs together cost at most 4/3 of its last one.
 constexpr double kEscalationGrowth = 4.0;
 
 enum class RunKind { pilot, timing, check, final };
@@ -101,7 +102,7 @@ struct RunRecord {
 // Resolution k of the candidates' ladder: round(n0 2^(j / per_octave)) 2^o for k = o per_octave + j, so that
 // halving a candidate (its check runs, its earlier runs at ratio 2) lands on exact integers and the two runs
 // are compared by restriction rather than interpolation (ladderN(32, 4, 19) = 864 = 2 x 432, where
-// round(32 2^(37/4)) = 861 and 861 / 2 = 430.5 found no run at 431 and compared 861 with 215 instead).
+// round(32 2^(19/4)) = 861 and 861 / 2 = 430.5 found no run at 431 and compared 861 with 215 instead).
 long long ladderN(long long n0, int per_octave, int k);
 
 // The candidate after a final run of missed_family that missed the error target (its seconds and estimate):
