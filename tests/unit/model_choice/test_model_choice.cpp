@@ -265,8 +265,8 @@ TEST(Chooser, EscalationStaysWithinAGrowthFactorOfTheMissedRun) {
   CandidateRow c = escalationCandidate(table, done, feasible, 0, 0.1, 4e-3);
   EXPECT_EQ(c.family, 0); // nothing feasible within 0.4 s: family 0's most accurate within it, n = 200
   EXPECT_EQ(c.n, 200);
-  c = escalationCandidate(table, done, feasible, 0, 0.5,
-                          4e-3); // cap 2 s: two feasible, the cheaper one taken
+  // cap 2 s: two feasible (family 0 at 400, family 1 at 200), the cheaper one taken
+  c = escalationCandidate(table, done, feasible, 0, 0.5, 4e-3);
   EXPECT_EQ(c.family, 0);
   EXPECT_EQ(c.n, 400);
   c = escalationCandidate(table, done, feasible, 1, 0.5, 4e-3); // the same after a miss of family 1
