@@ -23,7 +23,8 @@
 //      target the family's fit is replaced by what the final run showed and the next candidate is run (at most
 //      max_escalations times): one predicted to cost at most kEscalationGrowth times the missed run when one
 //      is predicted to meet the target or, of the missed family, to improve on it (escalationCandidate), else
-//      the cheapest predicted to meet the target.
+//      the cheapest predicted to meet the target at any cost, the families without a final run judged by their
+//      pilots' fits raised by the worst miss of a final run so far (fallbackCandidate).
 // A run that fails (RunResult::failed: a non-physical state, a failed step) leaves its family out: its pilots
 // stop, a failed final run is followed by the next candidate (an escalation), and the output records the
 // failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on
@@ -113,6 +114,16 @@ CandidateRow escalationCandidate(const std::vector<CandidateRow>& table, const s
                                  const std::function<bool(const CandidateRow&)>& feasible, int missed_family,
                                  double missed_seconds, double missed_estimate);
 
+// The candidate at any cost after a miss that escalationCandidate found nothing for: the cheapest row not yet
+// run (ties: the more accurate) that is feasible once the predicted error of every family without a final run
+// of its own (has_final[family] false) is multiplied by miss (>= 1: the largest ratio of a final run's
+// estimate to its prediction so far). Those families' fits come from the same pilots as the fit that missed;
+// at the cost this fallback may reach, the miss is the only evidence on them at resolutions above their
+// pilots. n = 0: none.
+CandidateRow fallbackCandidate(const std::vector<CandidateRow>& table, const std::vector<bool>& done,
+                               const std::function<bool(const CandidateRow&)>& feasible,
+                               const std::vector<bool>& has_final, double miss);
+
 class ModelChooser {
 public:
   ModelChooser(MPI_Comm comm, std::vector<Family> families, const ChooserSettings& s, const CostModel& loaded)
@@ -173,6 +184,7 @@ private:
   std::vector<std::string> failures_;
   CandidateRow chosen_, most_accurate_;
   bool met_ = false;
+  double worst_miss_ = 1.0; // the largest ratio of a final run's estimate to its predicted error (>= 1)
 };
 
 } // namespace suite::model_choice

@@ -279,6 +279,34 @@ TEST(Chooser, EscalationStaysWithinAGrowthFactorOfTheMissedRun) {
   EXPECT_EQ(c.n, 0);
 }
 
+// After a miss nothing within the growth cap helps: the fallback at any cost judges the families without a final
+// run by their fits raised by the worst miss (Lax-Liu 6 at 6e-3 ran enopade6 n = 512 for 5 minutes on a fit
+// from the same pilots as weno5's, which had missed 3-4x).
+TEST(Chooser, FallbackRaisesTheFitsOfFamiliesWithoutAFinalRunByTheWorstMiss) {
+  const auto feasible = [](const CandidateRow& r) { return r.error <= 1e-3; };
+  const std::vector<CandidateRow> table = {
+      {0, 400, 1.6, 3e-3}, {1, 400, 60.0, 8e-4}, {1, 800, 240.0, 2e-4}, {2, 400, 90.0, 9e-4}};
+  std::vector<bool> done = {true, false, false, false}, has_final = {true, false, false};
+  CandidateRow c = fallbackCandidate(table, done, feasible, has_final, 1.0);
+  EXPECT_EQ(c.family, 1); // no miss: the cheapest feasible, as choose()
+  EXPECT_EQ(c.n, 400);
+  c = fallbackCandidate(table, done, feasible, has_final, 3.0); // 8e-4 x 3 and 9e-4 x 3 miss; 2e-4 x 3 meets
+  EXPECT_EQ(c.family, 1);
+  EXPECT_EQ(c.n, 800);
+  c = fallbackCandidate(table, done, feasible, has_final,
+                        6.0); // nothing predicted to meet 1e-3: report the miss
+  EXPECT_EQ(c.n, 0);
+  has_final = {true, true, false}; // family 1's fit already corrected by a final run of its own: not raised
+  c = fallbackCandidate(table, done, feasible, has_final, 6.0);
+  EXPECT_EQ(c.family, 1);
+  EXPECT_EQ(c.n, 400);
+  // A final run better than predicted (ratio below 1) lowers no fit: the cheap row at 1.5e-3 stays infeasible.
+  const std::vector<CandidateRow> cheap = {{0, 400, 1.6, 3e-3}, {2, 200, 30.0, 1.5e-3}, {1, 400, 60.0, 8e-4}};
+  c = fallbackCandidate(cheap, {true, false, false}, feasible, {true, false, false}, 0.5);
+  EXPECT_EQ(c.family, 1);
+  EXPECT_EQ(c.n, 400);
+}
+
 // The candidates' ladder: every octave doubles exactly (check runs and earlier runs at ratio 2 land on its
 // points), and consecutive points are 2^(1/4) apart up to the rounding of the first octave.
 TEST(Chooser, LadderDoublesExactlyEachOctave) {
