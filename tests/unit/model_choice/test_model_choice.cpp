@@ -293,8 +293,8 @@ TEST(Chooser, FallbackRaisesTheFitsOfFamiliesWithoutAFinalRunByTheWorstMiss) {
   c = fallbackCandidate(table, done, feasible, has_final, 3.0); // 8e-4 x 3 and 9e-4 x 3 miss; 2e-4 x 3 meets
   EXPECT_EQ(c.family, 1);
   EXPECT_EQ(c.n, 800);
-  c = fallbackCandidate(table, done, feasible, has_final,
-                        6.0); // nothing predicted to meet 1e-3: report the miss
+  // Nothing predicted to meet 1e-3 once raised 6x: none, and the caller reports the miss.
+  c = fallbackCandidate(table, done, feasible, has_final, 6.0);
   EXPECT_EQ(c.n, 0);
   has_final = {true, true, false}; // family 1's fit already corrected by a final run of its own: not raised
   c = fallbackCandidate(table, done, feasible, has_final, 6.0);
