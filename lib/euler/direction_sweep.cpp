@@ -99,30 +99,45 @@ template <int NV> void DirectionSweep<NV>::prepareLine(const V* q, int xm, doubl
   }
 }
 
+// The Roe eigensystem of the face between cells 2 and 3 of qs[0..5], from their per-state Roe averages rs[2],
+// rs[3] when given (computed once per cell: LineGas::roe(qa, qb) is roe(roeState(qa), roeState(qb)), bitwise).
+template <int NV>
+static typename LineGas<NV>::Eigen roeEigen(const typename LineGas<NV>::V* qs,
+                                            const typename LineGas<NV>::RoeState* rs, double g) {
+  using G = LineGas<NV>;
+  return rs ? G::roe(rs[2], rs[3], g) : G::roe(qs[2], qs[3], g);
+}
+
+// The stencils of the split fluxes at face k, characteristic-wise when e is given: wp[c][0..5] of f+, wm[c] of
+// f-; unsplit (rf-char): f itself in both.
+template <int NV>
+static void projectStencils(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
+                            const typename LineGas<NV>::Eigen* e, bool unsplit, double wp[NV][6],
+                            double wm[NV][6]) {
+  using G = LineGas<NV>;
+  for (int m = 0; m < 6; ++m) {
+    typename G::V fp, fm;
+    for (int c = 0; c < NV; ++c) fp[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] + a * qs[m][c]);
+    if (e) fp = G::mul(e->L, fp);
+    if (unsplit) { // f+ = f- = f: one projection
+      for (int c = 0; c < NV; ++c) wp[c][m] = wm[c][m] = fp[c];
+      continue;
+    }
+    for (int c = 0; c < NV; ++c) fm[c] = 0.5 * (fs[m][c] - a * qs[m][c]);
+    if (e) fm = G::mul(e->L, fm);
+    for (int c = 0; c < NV; ++c) wp[c][m] = fp[c], wm[c][m] = fm[c];
+  }
+}
+
 // Characteristic (or component-wise) rows of the split fluxes at face k: rows[0][c] for f+ (left-biased),
 // rows[1][c] for f- (right-biased). unsplit (rf-char): the left- and right-biased rows of f itself.
 template <int NV>
 static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                      RowFunction fn, bool characteristic, double g, typename LineGas<NV>::Eigen* e,
-                      Row rows[2][NV], bool unsplit = false) {
-  using G = LineGas<NV>;
-  if (characteristic) *e = G::roe(qs[2], qs[3], g);
+                      const typename LineGas<NV>::RoeState* rs, RowFunction fn, bool characteristic, double g,
+                      typename LineGas<NV>::Eigen* e, Row rows[2][NV], bool unsplit = false) {
+  if (characteristic) *e = roeEigen<NV>(qs, rs, g);
   double wp[NV][6], wm[NV][6];
-  for (int m = 0; m < 6; ++m) {
-    typename G::V fp, fm;
-    for (int c = 0; c < NV; ++c) {
-      fp[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] + a * qs[m][c]);
-      fm[c] = unsplit ? fs[m][c] : 0.5 * (fs[m][c] - a * qs[m][c]);
-    }
-    if (characteristic) {
-      fp = G::mul(e->L, fp);
-      fm = G::mul(e->L, fm);
-    }
-    for (int c = 0; c < NV; ++c) {
-      wp[c][m] = fp[c];
-      wm[c][m] = fm[c];
-    }
-  }
+  projectStencils<NV>(qs, fs, a, characteristic ? e : nullptr, unsplit, wp, wm);
   for (int c = 0; c < NV; ++c) {
     rows[0][c] = fn(wp[c]);
     rows[1][c] = mirrorRow(fn, wm[c]);
@@ -130,14 +145,29 @@ static void splitRows(const typename LineGas<NV>::V* qs, const typename LineGas<
 }
 
 // The rf-char field signs and Lax-Friedrichs speeds of the face between cells 2 and 3 of qs[0..5] (rf_char.hpp).
+// lam: the six cells' RfChar::cellSpeeds (computed once per cell of the line, cellSpeeds below).
 template <int NV>
-static void rfSigns(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::Eigen& e, double alpha,
-                    bool local, double g, int sgn[NV], double ac[NV]) {
-  std::array<double, NV> lam[6];
+static void rfSigns(const std::array<double, NV>* lam, const typename LineGas<NV>::Eigen& e, double alpha,
+                    bool local, int sgn[NV], double ac[NV]) {
   double roe[NV];
-  for (int m = 0; m < 6; ++m) RfChar<NV>::cellSpeeds(qs[m], g, lam[m].data());
   RfChar<NV>::roeSpeeds(e, roe);
   RfChar<NV>::face(lam, roe, alpha, local, sgn, ac);
+}
+
+// RfChar::cellSpeeds of the ncell cells q into lam.
+template <int NV>
+static void cellSpeeds(const typename LineGas<NV>::V* q, int ncell, double g,
+                       std::vector<std::array<double, NV>>* lam) {
+  lam->resize(ncell);
+  for (int m = 0; m < ncell; ++m) RfChar<NV>::cellSpeeds(q[m], g, (*lam)[m].data());
+}
+
+// LineGas::roeState of the ncell cells q into rs.
+template <int NV>
+static void roeStates(const typename LineGas<NV>::V* q, int ncell, double g,
+                      std::vector<typename LineGas<NV>::RoeState>* rs) {
+  rs->resize(ncell);
+  for (int m = 0; m < ncell; ++m) (*rs)[m] = LineGas<NV>::roeState(q[m], g);
 }
 
 // l_c (f +- a U) / 2 of the six cells of qs, fs: the split characteristic flux of field c.
@@ -166,18 +196,22 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     return;
   }
   prepareLine(q, xm, alpha);
+  const int ncell = xm + 2 * kGhost;
+  if (opt_.characteristic) roeStates<NV>(q, ncell, g, &rs_);
+  if (rfChar()) cellSpeeds<NV>(q, ncell, g, &lam_);
   for (int k = 0; k <= xm; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
     typename G::Eigen e;
     Row rows[2][NV];
-    splitRows<NV>(q + k, f_.data() + k, alpha_[k], fn, opt_.characteristic, g, &e, rows, rfChar());
+    splitRows<NV>(q + k, f_.data() + k, alpha_[k], opt_.characteristic ? rs_.data() + k : nullptr, fn,
+                  opt_.characteristic, g, &e, rows, rfChar());
     V hc;
     for (int c = 0; c < NV; ++c) hc[c] = rows[0][c].r / rows[0][c].b + rows[1][c].r / rows[1][c].b;
     if (rfChar()) { // rf-char: the upwind row of l_c f, or the split rows where the sign changes
       int sgn[NV];
       double ac[NV];
-      rfSigns<NV>(q + k, e, alpha, opt_.local_lf, g, sgn, ac);
+      rfSigns<NV>(lam_.data() + k, e, alpha, opt_.local_lf, sgn, ac);
       for (int c = 0; c < NV; ++c) {
         hc[c] = sgn[c] > 0 ? rows[0][c].r / rows[0][c].b : rows[1][c].r / rows[1][c].b;
         if (sgn[c] != 0) continue;
@@ -310,21 +344,52 @@ static void blockRowEntries(const typename LineGas<NV>::Eigen& e, const Row* row
   }
 }
 
-// Split (ENO-Pade shock, CRWENO) row or explicit closure at face k: rows of f+ and f-, characteristic-wise
-// when `characteristic`. On a scalar line only explicit rows may reach here.
+// Block row k of both systems from the characteristic rows of f+ and f-: R diag(a) L etc. (blockRowEntries's
+// arithmetic, with the products R_rc L_c,cc formed once for the two systems) and R r.
 template <int NV>
-static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
-                            RowFunction fn, bool characteristic, double g, int k, CompactLineRows out,
-                            bool unsplit) {
+static void characteristicBlockRows(const typename LineGas<NV>::Eigen& e, const Row rows[2][NV], int k,
+                                    CompactLineRows out) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
-  typename G::Eigen e;
-  Row rows[2][NV];
-  splitRows<NV>(qs, fs, a, fn, characteristic, g, &e, rows, unsplit);
+  double rl[NV][NV][NV]; // rl[r][cc][c] = R_rc L_c,cc
+  for (int r = 0; r < NV; ++r)
+    for (int cc = 0; cc < NV; ++cc)
+      for (int c = 0; c < NV; ++c) rl[r][cc][c] = e.R[NV * r + c] * e.L[NV * c + cc];
+  for (int s = 0; s < 2; ++s) {
+    typename G::V rs;
+    for (int c = 0; c < NV; ++c) rs[c] = rows[s][c].r;
+    const typename G::V dr = G::mul(e.R, rs);
+    double *A = out.A[s] + NN * k, *B = out.B[s] + NN * k, *C = out.C[s] + NN * k;
+    for (int r = 0; r < NV; ++r) {
+      out.d[s][NV * k + r] = dr[r];
+      for (int cc = 0; cc < NV; ++cc) {
+        double sa = 0, sb = 0, sc = 0;
+        for (int c = 0; c < NV; ++c) {
+          sa += rl[r][cc][c] * rows[s][c].a;
+          sb += rl[r][cc][c] * rows[s][c].b;
+          sc += rl[r][cc][c] * rows[s][c].c;
+        }
+        A[NV * r + cc] = sa, B[NV * r + cc] = sb, C[NV * r + cc] = sc;
+      }
+    }
+  }
+}
+
+// Split (ENO-Pade shock, CRWENO) row or explicit closure at face k from the rows of f+ and f- (splitRows),
+// characteristic-wise (eigensystem e) when `characteristic`. On a scalar line only explicit rows may reach here.
+template <int NV>
+static void writeSplitRow(const typename LineGas<NV>::Eigen& e, const Row rows[2][NV], bool characteristic,
+                          int k, CompactLineRows out) {
+  using G = LineGas<NV>;
+  constexpr int NN = NV * NV;
   bool explicit_row = true;
   for (int s = 0; s < 2; ++s)
     for (int c = 0; c < NV; ++c)
       explicit_row = explicit_row && rows[s][c].a == 0.0 && rows[s][c].c == 0.0 && rows[s][c].b == 1.0;
+  if (out.blocks && characteristic && !explicit_row) {
+    characteristicBlockRows<NV>(e, rows, k, out);
+    return;
+  }
   for (int s = 0; s < 2; ++s) {
     typename G::V rs;
     for (int c = 0; c < NV; ++c) rs[c] = rows[s][c].r;
@@ -349,12 +414,28 @@ static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename Li
   if (!out.blocks) out.abc[3 * k] = 0.0, out.abc[3 * k + 1] = 1.0, out.abc[3 * k + 2] = 0.0;
 }
 
+// Split (ENO-Pade shock, CRWENO) row or explicit closure at face k: rows of f+ and f-, characteristic-wise
+// when `characteristic`.
+template <int NV>
+static void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::V* fs, double a,
+                            const typename LineGas<NV>::RoeState* rs, RowFunction fn, bool characteristic,
+                            double g, int k, CompactLineRows out, bool unsplit) {
+  typename LineGas<NV>::Eigen e;
+  Row rows[2][NV];
+  splitRows<NV>(qs, fs, a, rs, fn, characteristic, g, &e, rows, unsplit);
+  writeSplitRow<NV>(e, rows, characteristic, k, out);
+}
+
 template <int NV>
 void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, int xm, int nown,
                                          bool periodic, double alpha, const char* shocks,
                                          CompactLineRows out) {
   prepareLine(q, xm, alpha);
   const bool unsplit = out.blocks && rfChar(); // rf-char: the two systems of f (rfCombine picks per field)
+  const bool roe = out.blocks && opt_.characteristic;
+  if (roe) roeStates<NV>(q, xm + 2 * kGhost, opt_.gamma, &rs_);
+  const RowsFunction batched = roe ? batchedRows(scheme_->shock_row) : nullptr;
+  batch_.clear();
   for (int k = 0; k < nown; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const V* qs = q + k;
@@ -369,8 +450,48 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
       padeScalarRow<NV>(fs, fn, k, out.abc, out.rhs);
     else if (!shock && !boundary)
       padeBlockRow<NV>(qs, fs, a, fn, k, out, unsplit);
+    else if (batched && !boundary) // an interior shock row: with the others below
+      batch_.push_back(k);
     else
-      splitCompactRow<NV>(qs, fs, a, fn, opt_.characteristic, opt_.gamma, k, out, unsplit);
+      splitCompactRow<NV>(qs, fs, a, roe ? rs_.data() + k : nullptr, fn, opt_.characteristic, opt_.gamma, k,
+                          out, unsplit);
+  }
+  if (!batch_.empty()) batchedSplitRows(q, batched, unsplit, out);
+}
+
+// The interior shock rows of the faces batch_ of a block line (lineCompactRows, characteristic rows): per face
+// its Roe eigensystem and projected stencils (as splitRows), the rows of all of them in one call of the
+// scheme's batched row function (compact_rows_batch.hpp: bitwise its RowFunction's), then the block rows
+// (writeSplitRow). Stencil lane (2 j + s) NV + c: face batch_[j], f+ (s = 0) or mirrored f- (s = 1), field c.
+template <int NV>
+void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool unsplit,
+                                          CompactLineRows out) {
+  const int nb = (int)batch_.size(), lanes = 2 * NV * nb;
+  eig_.resize(nb);
+  stencil_.resize((size_t)6 * lanes);
+  brow_.resize((size_t)4 * lanes);
+  for (int j = 0; j < nb; ++j) {
+    const int k = batch_[j];
+    eig_[j] = roeEigen<NV>(q + k, rs_.data() + k, opt_.gamma);
+    double wp[NV][6], wm[NV][6];
+    projectStencils<NV>(q + k, f_.data() + k, alpha_[k], &eig_[j], unsplit, wp, wm);
+    for (int c = 0; c < NV; ++c)
+      for (int m = 0; m < 6; ++m) {
+        stencil_[(size_t)m * lanes + 2 * NV * j + c] = wp[c][m];
+        stencil_[(size_t)m * lanes + (2 * j + 1) * NV + c] = wm[c][5 - m]; // mirrorRow's stencil
+      }
+  }
+  rows_fn(lanes, stencil_.data(), brow_.data());
+  for (int j = 0; j < nb; ++j) {
+    Row rows[2][NV];
+    for (int s = 0; s < 2; ++s)
+      for (int c = 0; c < NV; ++c) {
+        const size_t i = (size_t)(2 * j + s) * NV + c;
+        const double a = brow_[i], c3 = brow_[2 * (size_t)lanes + i];
+        rows[s][c] = {s == 0 ? a : c3, brow_[(size_t)lanes + i], s == 0 ? c3 : a,
+                      brow_[3 * (size_t)lanes + i]};
+      }
+    writeSplitRow<NV>(eig_[j], rows, true, batch_[j], out);
   }
 }
 
@@ -565,14 +686,15 @@ void DirectionSweep<NV>::blockLinesFaceFluxes(MPI_Comm comm, const V* q, long lo
 // (l_c x0 + l_c x1) / 2 plus, when `dissipate`, the Lax-Friedrichs term alpha_c (w(l_c U) - w~(l_c U)) / 2, w
 // and w~ the explicit WENO5-Z left and right values (the compact systems carry f only).
 template <int NV>
-static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, const double* x0,
-                                          const double* x1, bool dissipate, double alpha, bool local,
-                                          double g) {
+static typename LineGas<NV>::V
+rfFaceFlux(const typename LineGas<NV>::V* qs, const typename LineGas<NV>::RoeState* rs,
+           const std::array<double, NV>* lam, const double* x0, const double* x1, bool dissipate,
+           double alpha, bool local, double g) {
   using G = LineGas<NV>;
-  const typename G::Eigen e = G::roe(qs[2], qs[3], g);
+  const typename G::Eigen e = roeEigen<NV>(qs, rs, g);
   int sgn[NV];
   double ac[NV];
-  rfSigns<NV>(qs, e, alpha, local, g, sgn, ac);
+  rfSigns<NV>(lam, e, alpha, local, sgn, ac);
   typename G::V X0, X1, hc;
   for (int c = 0; c < NV; ++c) X0[c] = x0[c], X1[c] = x1[c];
   const typename G::V y0 = G::mul(e.L, X0), y1 = G::mul(e.L, X1);
@@ -598,6 +720,9 @@ static typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs, con
 template <int NV>
 void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm, bool periodic, double alpha,
                                    const double* x0, const double* x1, V* h) {
+  const int ncell = xm + 2 * kGhost;
+  roeStates<NV>(q, ncell, opt_.gamma, &rs_);
+  cellSpeeds<NV>(q, ncell, opt_.gamma, &lam_);
   for (int k = 0; k <= xm; ++k) {
     // Every interior face of the hybrid's block lines is split (markBlockLines: ENO-Pade rows, and at uniform
     // stencils Pade rows, which are those rows to round-off; averaging at the latter instead would switch the
@@ -608,7 +733,8 @@ void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm
       for (int c = 0; c < NV; ++c) h[k][c] = 0.5 * (x0[NV * k + c] + x1[NV * k + c]);
       continue;
     }
-    h[k] = rfFaceFlux<NV>(q + k, x0 + NV * k, x1 + NV * k, true, alpha, opt_.local_lf, opt_.gamma);
+    h[k] = rfFaceFlux<NV>(q + k, rs_.data() + k, lam_.data() + k, x0 + NV * k, x1 + NV * k, true, alpha,
+                          opt_.local_lf, opt_.gamma);
   }
 }
 

@@ -46,6 +46,7 @@
 // R diag(b) L, R diag(c) L); Lele, J. Comput. Phys. 103 (1992) 16 (Pade rows).
 #pragma once
 
+#include "euler/compact_rows_batch.hpp"
 #include "euler/gas_nd.hpp"
 #include "euler/line_options.hpp"
 #include "euler/line_transpose.hpp"
@@ -56,6 +57,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <vector>
 
 namespace suite::euler {
@@ -114,6 +116,7 @@ private:
   bool markShockRows(const V* q, int ncell, long long n, long long xs, int nrow, bool periodic, char* shock);
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                        const char* shocks, CompactLineRows out);
+  void batchedSplitRows(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out);
   // Steps of linesFaceFluxes for compact schemes.
   void markBlockLines(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm, int nown,
                       bool periodic);
@@ -139,6 +142,12 @@ private:
   linalg::DistributedTridiag gather_; // LineOptions::gather_lines
   std::vector<V> f_;
   std::vector<double> speed_, rho_, p_, alpha_;
+  std::vector<typename LineGas<NV>::RoeState>
+      rs_;                                       // per cell of the line being processed (characteristic rows)
+  std::vector<std::array<double, NV>> lam_;      // its cells' rf-char speeds (RfChar::cellSpeeds)
+  std::vector<int> batch_;                       // its faces whose rows go through batchedSplitRows
+  std::vector<typename LineGas<NV>::Eigen> eig_; // their Roe eigensystems
+  std::vector<double> stencil_, brow_;           // their stencils and rows (structure of arrays)
   std::vector<int> flag_, blocks_;
   std::vector<char> shock_; // per line and owned row: ENO-Pade shock row
   std::vector<double> sabc_, srhs_, sx_, bA_, bB_, bC_, bd_, bx_;

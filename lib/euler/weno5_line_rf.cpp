@@ -11,21 +11,12 @@
 // h_c. References: as weno5_line.hpp and rf_char.hpp.
 #include "euler/weno5_line_rf.hpp"
 
+#include "euler/kernel_clones.hpp" // the loops over the cells, faces and jobs of a line
 #include "euler/rf_char.hpp"
 #include "euler/weno5.hpp"
 
 #include <algorithm>
 #include <cmath>
-
-// The loops over the cells, faces and jobs of a line, out of line (so that their pointer arguments are
-// restrict) and, with GCC on x86-64, also compiled for AVX2, chosen at run time where the CPU has it (ifunc):
-// the same IEEE operations in the same order (AVX2 without FMA contraction), so the same results bitwise, on
-// twice as many faces per instruction as the baseline SSE2.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(SUITE_NO_AVX2_CLONES)
-#define SUITE_KERNEL __attribute__((noinline, target_clones("avx2", "default")))
-#else
-#define SUITE_KERNEL __attribute__((noinline))
-#endif
 
 namespace suite::euler {
 
