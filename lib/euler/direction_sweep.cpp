@@ -351,10 +351,10 @@ static void characteristicBlockRows(const typename LineGas<NV>::Eigen& e, const 
                                     CompactLineRows out) {
   using G = LineGas<NV>;
   constexpr int NN = NV * NV;
-  double rl[NV][NV][NV]; // rl[r][cc][c] = R_rc L_c,cc
+  double rl[NV][NV][NV]; // rl[r][c][cc] = R_rc L_c,cc
   for (int r = 0; r < NV; ++r)
-    for (int cc = 0; cc < NV; ++cc)
-      for (int c = 0; c < NV; ++c) rl[r][cc][c] = e.R[NV * r + c] * e.L[NV * c + cc];
+    for (int c = 0; c < NV; ++c)
+      for (int cc = 0; cc < NV; ++cc) rl[r][c][cc] = e.R[NV * r + c] * e.L[NV * c + cc];
   for (int s = 0; s < 2; ++s) {
     typename G::V rs;
     for (int c = 0; c < NV; ++c) rs[c] = rows[s][c].r;
@@ -362,15 +362,15 @@ static void characteristicBlockRows(const typename LineGas<NV>::Eigen& e, const 
     double *A = out.A[s] + NN * k, *B = out.B[s] + NN * k, *C = out.C[s] + NN * k;
     for (int r = 0; r < NV; ++r) {
       out.d[s][NV * k + r] = dr[r];
-      for (int cc = 0; cc < NV; ++cc) {
-        double sa = 0, sb = 0, sc = 0;
-        for (int c = 0; c < NV; ++c) {
-          sa += rl[r][cc][c] * rows[s][c].a;
-          sb += rl[r][cc][c] * rows[s][c].b;
-          sc += rl[r][cc][c] * rows[s][c].c;
+      double sa[NV] = {}, sb[NV] = {}, sc[NV] = {}; // each sum over c in order, as blockRowEntries
+      for (int c = 0; c < NV; ++c)
+        for (int cc = 0; cc < NV; ++cc) {
+          sa[cc] += rl[r][c][cc] * rows[s][c].a;
+          sb[cc] += rl[r][c][cc] * rows[s][c].b;
+          sc[cc] += rl[r][c][cc] * rows[s][c].c;
         }
-        A[NV * r + cc] = sa, B[NV * r + cc] = sb, C[NV * r + cc] = sc;
-      }
+      for (int cc = 0; cc < NV; ++cc)
+        A[NV * r + cc] = sa[cc], B[NV * r + cc] = sb[cc], C[NV * r + cc] = sc[cc];
     }
   }
 }
