@@ -111,10 +111,14 @@ PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
   pilot_seconds_[f][(size_t)k] = r.seconds;
   runs_[f][n] = std::move(r.density);
   if (k < 2) PetscFunctionReturn(0);
+  // the family's last three pilot records, oldest first: its pilot at n0 precedes the other families' (the
+  // records of a family are not adjacent)
+  std::vector<size_t> mine;
+  for (size_t q = pilots_.size(); q-- > 0 && mine.size() < 3;)
+    if (pilots_[q].family == (int)f) mine.insert(mine.begin(), q);
   const double a = (double)(n / 4);
-  const size_t last = pilots_.size() - 1;
-  orders_[f] = fitObservedOrder(a, 2 * a, 4 * a, pilots_[last - 1].difference, pilots_[last].difference);
-  for (size_t q = last - 2; q <= last; ++q) pilots_[q].estimate = orders_[f].errorAt((double)pilots_[q].n);
+  orders_[f] = fitObservedOrder(a, 2 * a, 4 * a, pilots_[mine[1]].difference, pilots_[mine[2]].difference);
+  for (size_t q : mine) pilots_[q].estimate = orders_[f].errorAt((double)pilots_[q].n);
   PetscFunctionReturn(0);
 }
 

@@ -187,6 +187,29 @@ TEST(Chooser, CheckRunsAtAQuarterAndHalfTheFinalResolution) {
   EXPECT_NEAR(c.checkSeconds(), 1e-6 * (h2 * h2 + h4 * h4), 1e-12);
 }
 
+// Every pilot record carries its own family's fit at its resolution, though a family's records are not adjacent
+// (all pilots at n0 first): until 2026-11-29 the second family's fit was written over the first family's
+// finest pilot, and the second family's pilot at n0 had none.
+TEST(Chooser, PilotRecordsCarryTheirOwnFamilysEstimate) {
+  const auto scale = [](const Family& f) { return f.name == "a" ? 1.0 : 3.0; };
+  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    PetscCall(syntheticRun(n, 1.0, r));
+    const GridField exact = line(n, smooth);
+    for (size_t i = 0; i < r->density.values.size(); ++i)
+      r->density.values[i] = exact.values[i] + scale(f) * (r->density.values[i] - exact.values[i]);
+    return 0;
+  };
+  ChooserSettings s;
+  s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"a", {}}, {"b", {}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  ASSERT_EQ(c.pilots().size(), 6u);
+  for (const RunRecord& r : c.pilots()) {
+    const double truth = scale(c.families()[(size_t)r.family]) * 0.5 * 4.0 / M_PI / (double)r.n;
+    EXPECT_NEAR(r.estimate / truth, 1.0, 0.02) << c.label(r.family, r.n);
+  }
+}
+
 TEST(Chooser, EscalatesPastAFinalRunThatFails) {
   // "cheap" is 4x cheaper per run than "dear" with the same errors, so it is chosen first; its final run (above
   // the pilots' resolutions) fails, and the escalation runs "dear" instead.
