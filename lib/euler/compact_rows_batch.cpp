@@ -5,7 +5,7 @@
 #include "euler/compact_row_kernels.hpp"
 #include "euler/crweno5.hpp"
 #include "euler/crweno_cu6.hpp"
-#include "euler/kernel_clones.hpp"
+#include "core/kernel_clones.hpp"
 
 #include <cstring>
 

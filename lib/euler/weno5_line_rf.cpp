@@ -11,7 +11,7 @@
 // h_c. References: as weno5_line.hpp and rf_char.hpp.
 #include "euler/weno5_line_rf.hpp"
 
-#include "euler/kernel_clones.hpp" // the loops over the cells, faces and jobs of a line
+#include "core/kernel_clones.hpp" // the loops over the cells, faces and jobs of a line
 #include "euler/rf_char.hpp"
 #include "euler/weno5.hpp"
 

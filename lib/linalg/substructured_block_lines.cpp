@@ -15,6 +15,7 @@
 #include "linalg/substructured_block_lines.hpp"
 
 #include "linalg/block_kernels.hpp"
+#include "linalg/block_thomas_lanes.hpp"
 #include "linalg/lapack.hpp"
 
 #include <algorithm>
@@ -301,6 +302,58 @@ bool SubstructuredBlockLines::reducedSolve(int P, int nrhs, bool periodic, const
   return true;
 }
 
+// Pass 2 of lines l0 .. l0 + batch - 1 (batch 1, or kThomasLanes lines solved at once when every one of their
+// reduced solves succeeded; bitwise the one-line solves): per line the reduced solve, its neighbour values
+// x_left, x_right, the line solve with them moved to the right-hand side, the residual; x: line l0's solution.
+template <int BS, int NR, class Rows>
+void SubstructuredBlockLines::secondPass(const Shape& s, int l0, int batch, const Rows& rows, double* x,
+                                         std::size_t xstride) {
+  constexpr int bb = BS * BS;
+  const int ny = BS * s.nrhs, E = 2 * ny + 4 * bb + 1, N = 2 * s.P * BS;
+  const bool hasL = s.rank > 0 || s.periodic, hasR = s.rank + 1 < s.P || s.periodic;
+  const int left = s.rank > 0 ? s.rank - 1 : s.P - 1, right = s.rank + 1 < s.P ? s.rank + 1 : 0;
+  const std::size_t rank_stride = (size_t)s.nlines * E;
+  neighbours_.resize((size_t)2 * kThomasLanes * ny);
+  z_.resize((size_t)N * s.nrhs);
+  bool ok[kThomasLanes], all = true;
+  for (int k = 0; k < batch; ++k) {
+    const double* e0 = all_ends_.data() + (size_t)(l0 + k) * E;
+    double *xl = neighbours_.data() + (size_t)2 * k * ny, *xr = xl + ny;
+    ok[k] = true;
+    for (int r = 0; r < s.P; ++r) ok[k] = ok[k] && e0[r * rank_stride + E - 1] == 1.0;
+    ok[k] = ok[k] && reducedSolve<BS>(s.P, s.nrhs, s.periodic, e0, rank_stride, E, z_.data());
+    all = all && ok[k];
+    if (ok[k])
+      for (int a = 0; a < BS; ++a)
+        for (int c = 0; c < s.nrhs; ++c) {
+          xl[a * s.nrhs + c] = hasL ? z_[(size_t)c * N + (2 * left + 1) * BS + a] : 0.0;
+          xr[a * s.nrhs + c] = hasR ? z_[(size_t)c * N + 2 * right * BS + a] : 0.0;
+        }
+  }
+  bool lanes = false;
+  if (batch == kThomasLanes && all) {
+    LaneLine q[kThomasLanes];
+    for (int k = 0; k < kThomasLanes; ++k) {
+      const LineRows L = rows(l0 + k);
+      const double* xl = neighbours_.data() + (size_t)2 * k * ny;
+      q[k] = {L.A, L.B, L.C, L.d, L.ms, x + k * xstride, hasL ? xl : nullptr, hasR ? xl + ny : nullptr};
+    }
+    lanes_.resize((size_t)blockThomasLanesWork(BS, s.n) / 4);
+    lanes = blockThomasLanes(BS, s.n, q, reinterpret_cast<double*>(lanes_.data()));
+  }
+  for (int k = 0; k < batch; ++k) {
+    const LineRows L = rows(l0 + k);
+    double *xline = x + k * xstride, *xl = neighbours_.data() + (size_t)2 * k * ny, *xr = xl + ny;
+    if (ok[k] && !lanes) ok[k] = lineSolve<BS, NR>(s.n, s.nrhs, L, hasL, hasR, xl, xr, G_.data(), xline);
+    if (!ok[k]) {
+      res_[2 * (size_t)(l0 + k)] = kFailed;
+      continue;
+    }
+    lineResidual<BS, NR>(s.n, s.nrhs, L, hasL, hasR, xl, xr, xline, &res_[2 * (size_t)(l0 + k)]);
+    if (s.count == s.n + 1) std::copy(xr, xr + ny, xline + (size_t)s.n * ny);
+  }
+}
+
 template <int BS, int NR>
 void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const double* A, const double* B,
                                         const double* C, int ms, const double* d, int nrhs, bool periodic,
@@ -316,19 +369,35 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
     return LineRows{A + l * lstride, B + l * lstride, C + l * lstride, d + l * dstride, ms};
   };
   G_.resize((size_t)n * bb);
-  work_.resize((size_t)5 * ny);
-  double *xl = work_.data() + 3 * ny, *xr = xl + ny;
+  work_.resize((size_t)3 * ny); // lineEnds
   res_.assign((size_t)2 * nlines, 0.0);
 
   if (P == 1 && !periodic) { // plain block Thomas
-    for (int l = 0; l < nlines; ++l) {
+    const auto one = [&](int l) {
       const LineRows L = rows(l);
       double* xline = x + l * xstride;
       if (lineSolve<BS, NR>(n, nrhs, L, false, false, nullptr, nullptr, G_.data(), xline))
         lineResidual<BS, NR>(n, nrhs, L, false, false, nullptr, nullptr, xline, &res_[2 * (size_t)l]);
       else
         res_[2 * (size_t)l] = kFailed;
-    }
+    };
+    int l = 0;
+    if constexpr (NR == 1 && BS >= 3) // four lines at a time, bitwise the one-line solves
+      for (lanes_.resize((size_t)blockThomasLanesWork(BS, n) / 4); l + kThomasLanes <= nlines;
+           l += kThomasLanes) {
+        LaneLine q[kThomasLanes];
+        for (int k = 0; k < kThomasLanes; ++k) {
+          const LineRows L = rows(l + k);
+          q[k] = {L.A, L.B, L.C, L.d, ms, x + (l + k) * xstride};
+        }
+        if (!blockThomasLanes(BS, n, q, reinterpret_cast<double*>(lanes_.data())))
+          for (int k = 0; k < kThomasLanes; ++k) one(l + k); // a rejected pivot: line by line
+        else
+          for (int k = 0; k < kThomasLanes; ++k)
+            lineResidual<BS, NR>(n, nrhs, rows(l + k), false, false, nullptr, nullptr, q[k].x,
+                                 &res_[2 * (size_t)(l + k)]);
+      }
+    for (; l < nlines; ++l) one(l);
   } else {
     const int E = 2 * ny + 4 * bb + 1; // YF, YL, PF, PL, QF, QL, success flag
     if ((long long)nlines * E > INT_MAX)
@@ -344,31 +413,11 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
       std::copy(ends_.begin(), ends_.end(), all_ends_.begin());
     else
       MPI_Allgather(ends_.data(), nlines * E, MPI_DOUBLE, all_ends_.data(), nlines * E, MPI_DOUBLE, comm);
-    const int N = 2 * P * BS;
-    const int left = rank > 0 ? rank - 1 : P - 1, right = rank + 1 < P ? rank + 1 : 0;
-    z_.resize((size_t)N * nrhs);
-    const std::size_t rank_stride = (size_t)nlines * E;
-    for (int l = 0; l < nlines; ++l) {
-      const double* e0 = all_ends_.data() + (size_t)l * E;
-      bool ok = true;
-      for (int r = 0; r < P; ++r) ok = ok && e0[r * rank_stride + E - 1] == 1.0;
-      ok = ok && reducedSolve<BS>(P, nrhs, periodic, e0, rank_stride, E, z_.data());
-      const LineRows L = rows(l);
-      double* xline = x + l * xstride;
-      if (ok) {
-        for (int a = 0; a < BS; ++a)
-          for (int k = 0; k < nrhs; ++k) {
-            xl[a * nrhs + k] = hasL ? z_[(size_t)k * N + (2 * left + 1) * BS + a] : 0.0;
-            xr[a * nrhs + k] = hasR ? z_[(size_t)k * N + 2 * right * BS + a] : 0.0;
-          }
-        ok = lineSolve<BS, NR>(n, nrhs, L, hasL, hasR, xl, xr, G_.data(), xline);
-      }
-      if (ok) {
-        lineResidual<BS, NR>(n, nrhs, L, hasL, hasR, xl, xr, xline, &res_[2 * (size_t)l]);
-        if (count == n + 1) std::copy(xr, xr + ny, xline + (size_t)n * ny);
-      } else {
-        res_[2 * (size_t)l] = kFailed;
-      }
+    for (int l = 0; l < nlines;) {
+      const int batch = NR == 1 && BS >= 3 && l + kThomasLanes <= nlines ? kThomasLanes : 1;
+      secondPass<BS, NR>({P, rank, n, nrhs, nlines, count, periodic}, l, batch, rows, x + l * xstride,
+                         xstride);
+      l += batch;
     }
     if (P > 1) MPI_Allreduce(MPI_IN_PLACE, res_.data(), 2 * nlines, MPI_DOUBLE, MPI_MAX, comm);
   }

@@ -69,6 +69,13 @@ private:
   template <int BS>
   bool reducedSolve(int P, int nrhs, bool periodic, const double* ends, std::size_t rank_stride, int E,
                     double* z);
+  // The shape of one substructured solve (pass 2 reads it).
+  struct Shape {
+    int P, rank, n, nrhs, nlines, count;
+    bool periodic;
+  };
+  template <int BS, int NR, class Rows>
+  void secondPass(const Shape& s, int l0, int batch, const Rows& rows, double* x, std::size_t xstride);
 
   // Exact solve of the lines in fail_ (see 4. above); throws std::runtime_error (on every rank) if one of
   // them is singular.
@@ -87,6 +94,11 @@ private:
   std::vector<double> ends_, all_ends_, res_, G_, work_, red_, z_, zu_, s_, send_, recv_, band_, rhs_;
   std::vector<int> ipiv_, counts_, displs_, nlocs_;
   std::vector<int> fail_; // lines to re-solve by the fallback (identical on every rank), increasing
+  struct alignas(32) LaneQuad {
+    double v[4];
+  };
+  std::vector<LaneQuad> lanes_;    // work of the four-line block Thomas (block_thomas_lanes.hpp)
+  std::vector<double> neighbours_; // pass 2: the values beyond the ends (xl, xr) of up to four lines
 };
 
 } // namespace suite::linalg

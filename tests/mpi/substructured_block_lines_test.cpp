@@ -292,6 +292,49 @@ TEST(SubstructuredBlockLines, BandAndWoodburyReducedSolve) {
     }
 }
 
+// Open lines are solved four at a time, one per SIMD lane (block_thomas_lanes.hpp): on one rank the whole line,
+// on several the second pass of each rank's rows with the neighbour values moved to the right-hand side. Each
+// line's solution must be bitwise the one it gets solved alone. The diagonal blocks hold their largest entries
+// off the diagonal (row exchanges in most pivot steps, differing from lane to lane), and one batch holds a line
+// whose first diagonal block on every rank is zero (the lanes give up, the four lines go one by one, that one
+// to the fallback).
+TEST(SubstructuredBlockLines, FourLinesAtOnceAreBitwiseEachLineAlone) {
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  std::mt19937_64 gen(7 + rank); // this rank's rows of the lines
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (int bs = 3; bs <= 5; ++bs) {
+    const int n = 7, nlines = 9, bb = bs * bs, far = 5;
+    std::vector<double> A((size_t)nlines * n * bb), B(A.size()), C(A.size()), d((size_t)nlines * n * bs);
+    for (int l = 0; l < nlines; ++l)
+      for (int i = 0; i < n; ++i) {
+        const size_t row = ((size_t)l * n + i) * bb;
+        const int shift = 1 + (int)((l + i) % (bs - 1)); // column of row a holding its large entry: a + shift
+        for (int a = 0; a < bs; ++a)
+          for (int b = 0; b < bs; ++b) {
+            A[row + a * bs + b] = 0.3 * U(gen), C[row + a * bs + b] = 0.3 * U(gen);
+            B[row + a * bs + b] =
+                (b == (a + shift) % bs ? 4.0 : 0.5) * U(gen) + (b == (a + shift) % bs ? 4.0 : 0.0);
+          }
+        if (l == far && i == 0)
+          for (int e = 0; e < bb; ++e) B[row + e] = 0.0;
+      }
+    for (double& v : d) v = U(gen);
+    suite::linalg::SubstructuredBlockLines all, one;
+    std::vector<double> x_all(d.size()), x_one(d.size());
+    all.solve(PETSC_COMM_WORLD, bs, nlines, n, A.data(), B.data(), C.data(), d.data(), false, 0, n,
+              x_all.data());
+    for (int l = 0; l < nlines; ++l) {
+      const size_t r = (size_t)l * n * bb, v = (size_t)l * n * bs;
+      one.solve(PETSC_COMM_WORLD, bs, 1, n, A.data() + r, B.data() + r, C.data() + r, d.data() + v, false, 0,
+                n, x_one.data() + v);
+    }
+    for (size_t k = 0; k < d.size(); ++k)
+      ASSERT_EQ(x_all[k], x_one[k]) << "bs " << bs << ", line " << k / ((size_t)n * bs) << ", entry " << k;
+    EXPECT_EQ(all.stats().fallbacks, 1) << "bs " << bs << ": the line with a zero diagonal block";
+  }
+}
+
 TEST(SubstructuredBlockLines, RejectsBadArguments) {
   int P = 1, rank = 0;
   MPI_Comm_size(PETSC_COMM_WORLD, &P);

@@ -1,0 +1,213 @@
+// Block Thomas on four lines at once, one per lane (see block_thomas_lanes.hpp). Every step mirrors the
+// one-line code it must match bit for bit: lineSolve<BS, 1> (substructured_block_lines.cpp) for the sweep,
+// SmallLU<BS>::factor / solveFast (block_kernels.hpp) for the diagonal blocks, subtractProduct for the
+// products; the loops keep their order of operations per element.
+#include "linalg/block_thomas_lanes.hpp"
+
+#include "core/kernel_clones.hpp"
+
+#include <cstdint>
+
+namespace suite::linalg {
+namespace {
+
+using V = double __attribute__((vector_size(32)));  // one double of each of the four lines
+using M = int64_t __attribute__((vector_size(32))); // lane masks (all bits set: true) and pivot indices
+using VU = double __attribute__((vector_size(32), aligned(8))); // four consecutive doubles of one line
+
+#define THOMAS_INLINE inline __attribute__((always_inline))
+
+THOMAS_INLINE V absOf(V x) { // the sign bit cleared, as fabs
+  const M mask = {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};
+  return (V)((M)x & mask);
+}
+
+// The 4 x 4 transpose of r (row l: four consecutive doubles of line l) into out (out[k]: double k of every
+// line), and back (the transpose is its own inverse): two shuffle stages.
+THOMAS_INLINE void transpose4(const V* r, V* out) {
+  const V t0 = __builtin_shuffle(r[0], r[1], M{0, 4, 2, 6}),
+          t1 = __builtin_shuffle(r[0], r[1], M{1, 5, 3, 7});
+  const V t2 = __builtin_shuffle(r[2], r[3], M{0, 4, 2, 6}),
+          t3 = __builtin_shuffle(r[2], r[3], M{1, 5, 3, 7});
+  out[0] = __builtin_shuffle(t0, t2, M{0, 1, 4, 5});
+  out[1] = __builtin_shuffle(t1, t3, M{0, 1, 4, 5});
+  out[2] = __builtin_shuffle(t0, t2, M{2, 3, 6, 7});
+  out[3] = __builtin_shuffle(t1, t3, M{2, 3, 6, 7});
+}
+
+// out[j] = (p[0][j], .., p[3][j]) for j < len.
+THOMAS_INLINE void loadLanes(const double* const* p, long long len, V* out) {
+  long long j = 0;
+  for (; j + 4 <= len; j += 4) {
+    V r[kThomasLanes];
+    for (int l = 0; l < kThomasLanes; ++l) r[l] = *reinterpret_cast<const VU*>(p[l] + j);
+    transpose4(r, out + j);
+  }
+  for (; j < len; ++j) out[j] = V{p[0][j], p[1][j], p[2][j], p[3][j]};
+}
+
+// p[l][j] = in[j][l] for j < len.
+THOMAS_INLINE void storeLanes(const V* in, long long len, double* const* p) {
+  long long j = 0;
+  for (; j + 4 <= len; j += 4) {
+    V r[kThomasLanes];
+    transpose4(in + j, r);
+    for (int l = 0; l < kThomasLanes; ++l) *reinterpret_cast<VU*>(p[l] + j) = r[l];
+  }
+  for (; j < len; ++j)
+    for (int l = 0; l < kThomasLanes; ++l) p[l][j] = in[j][l];
+}
+
+// Block row i of `member` (A, B or C) of the four lines: out[e] holds entry e of every line.
+template <int bb>
+THOMAS_INLINE void loadBlock(const LaneLine* L, const double* LaneLine::*member, int i, V* out) {
+  const double* p[kThomasLanes];
+  for (int l = 0; l < kThomasLanes; ++l) p[l] = (L[l].*member) + (long long)i * L[l].ms;
+  loadLanes(p, bb, out);
+}
+
+// SmallLU<BS>::factor on the four blocks in lu (overwritten by their LU factors, rows exchanged as there),
+// the pivot rows in piv, the reciprocals of the pivots in inv; false when a lane's pivot is rejected.
+template <int BS> THOMAS_INLINE bool factorLanes(V* lu, M* piv, V* inv) {
+  V scale = {0, 0, 0, 0};
+  for (int e = 0; e < BS * BS; ++e) {
+    const V a = absOf(lu[e]);
+    scale = scale < a ? a : scale; // std::max(scale, |M_e|): a NaN entry leaves scale as it is
+  }
+  M rejected = {0, 0, 0, 0};
+  for (int k = 0; k < BS; ++k) {
+    M p = {k, k, k, k};
+    V best = absOf(lu[k * BS + k]);
+    for (int i = k + 1; i < BS; ++i) { // the first largest magnitude, as the strict > of the one-line search
+      const V a = absOf(lu[i * BS + k]);
+      const M larger = a > best;
+      p = larger ? M{i, i, i, i} : p;
+      best = larger ? a : best;
+    }
+    piv[k] = p;
+    rejected |= ~(best > 1e-14 * scale); // also a NaN pivot
+    for (int i = k + 1; i < BS; ++i) {   // exchange rows k and p where p = i
+      const M swap = p == M{i, i, i, i};
+      for (int j = 0; j < BS; ++j) {
+        const V rk = lu[k * BS + j], ri = lu[i * BS + j];
+        lu[k * BS + j] = swap ? ri : rk;
+        lu[i * BS + j] = swap ? rk : ri;
+      }
+    }
+    for (int i = k + 1; i < BS; ++i) {
+      const V l = lu[i * BS + k] /= lu[k * BS + k];
+      for (int j = k + 1; j < BS; ++j) lu[i * BS + j] -= l * lu[k * BS + j];
+    }
+  }
+  for (int k = 0; k < BS; ++k) inv[k] = 1.0 / lu[k * BS + k];
+  for (int l = 0; l < kThomasLanes; ++l)
+    if (rejected[l]) return false;
+  return true;
+}
+
+// SmallLU<BS>::solveFast<NC> on the four blocks: X is BS rows of NC lane-columns.
+template <int BS, int NC> THOMAS_INLINE void solveLanes(const V* lu, const M* piv, const V* inv, V* X) {
+  for (int k = 0; k < BS; ++k)
+    for (int i = k + 1; i < BS; ++i) {
+      const M swap = piv[k] == M{i, i, i, i};
+      for (int c = 0; c < NC; ++c) {
+        const V xk = X[k * NC + c], xi = X[i * NC + c];
+        X[k * NC + c] = swap ? xi : xk;
+        X[i * NC + c] = swap ? xk : xi;
+      }
+    }
+  for (int i = 1; i < BS; ++i)
+    for (int k = 0; k < i; ++k)
+      for (int c = 0; c < NC; ++c) X[i * NC + c] -= lu[i * BS + k] * X[k * NC + c];
+  for (int i = BS - 1; i >= 0; --i) {
+    for (int k = i + 1; k < BS; ++k)
+      for (int c = 0; c < NC; ++c) X[i * NC + c] -= lu[i * BS + k] * X[k * NC + c];
+    for (int c = 0; c < NC; ++c) X[i * NC + c] *= inv[i];
+  }
+}
+
+// Y (BS x NC) -= Mx (BS x BS) X (BS x NC), as subtractProduct<BS, NC>.
+template <int BS, int NC> THOMAS_INLINE void subtractLanes(const V* Mx, const V* X, V* Y) {
+  for (int a = 0; a < BS; ++a)
+    for (int b = 0; b < BS; ++b) {
+      const V v = Mx[a * BS + b];
+      for (int c = 0; c < NC; ++c) Y[a * NC + c] -= v * X[b * NC + c];
+    }
+}
+
+// The forward sweep of row i (lineSolve<BS, 1>): Bh = B_i - A_i G_{i-1}, y_i = Bh^-1 (d_i - A_i y_{i-1}),
+// G_i = Bh^-1 C_i (not on the last row).
+template <int BS> THOMAS_INLINE bool forwardRow(int n, int i, const LaneLine* L, V* G, V* Y) {
+  constexpr int bb = BS * BS;
+  V Bh[bb], *y = Y + i * BS; // y: d_i on entry
+  loadBlock<bb>(L, &LaneLine::B, i, Bh);
+  if (i > 0) {
+    V A[bb];
+    loadBlock<bb>(L, &LaneLine::A, i, A);
+    subtractLanes<BS, BS>(A, G + (i - 1) * bb, Bh);
+    subtractLanes<BS, 1>(A, Y + (i - 1) * BS, y);
+  }
+  M piv[BS];
+  V inv[BS];
+  if (!factorLanes<BS>(Bh, piv, inv)) return false;
+  solveLanes<BS, 1>(Bh, piv, inv, y);
+  if (i + 1 < n) {
+    V* Gi = G + i * bb;
+    loadBlock<bb>(L, &LaneLine::C, i, Gi);
+    solveLanes<BS, BS>(Bh, piv, inv, Gi);
+  }
+  return true;
+}
+
+// y -= (block row i of `member`) x for the four lines' neighbour values x (`side`: xl or xr), as lineSolve
+// moves them to the right-hand side before the sweep reaches the row.
+template <int BS>
+THOMAS_INLINE void neighbourTerm(const LaneLine* L, const double* LaneLine::*member,
+                                 const double* LaneLine::*side, int i, V* y) {
+  V Mx[BS * BS], x[BS];
+  loadBlock<BS * BS>(L, member, i, Mx);
+  for (int a = 0; a < BS; ++a) x[a] = V{(L[0].*side)[a], (L[1].*side)[a], (L[2].*side)[a], (L[3].*side)[a]};
+  subtractLanes<BS, 1>(Mx, x, y);
+}
+
+template <int BS> THOMAS_INLINE bool thomasLanes(int n, const LaneLine* L, double* work) {
+  constexpr int bb = BS * BS;
+  V *G = reinterpret_cast<V*>(work), *Y = G + (long long)n * bb;
+  const double* d[kThomasLanes] = {L[0].d, L[1].d, L[2].d, L[3].d};
+  loadLanes(d, (long long)n * BS, Y);
+  if (L[0].xl) neighbourTerm<BS>(L, &LaneLine::A, &LaneLine::xl, 0, Y);
+  if (L[0].xr) neighbourTerm<BS>(L, &LaneLine::C, &LaneLine::xr, n - 1, Y + (n - 1) * BS);
+  for (int i = 0; i < n; ++i)
+    if (!forwardRow<BS>(n, i, L, G, Y)) return false;
+  for (int i = n - 2; i >= 0; --i) subtractLanes<BS, 1>(G + i * bb, Y + (i + 1) * BS, Y + i * BS);
+  double* const x[kThomasLanes] = {L[0].x, L[1].x, L[2].x, L[3].x};
+  storeLanes(Y, (long long)n * BS, x);
+  return true;
+}
+
+SUITE_KERNEL bool thomasLanes3(int n, const LaneLine* L, double* w) {
+  return thomasLanes<3>(n, L, w);
+}
+SUITE_KERNEL bool thomasLanes4(int n, const LaneLine* L, double* w) {
+  return thomasLanes<4>(n, L, w);
+}
+SUITE_KERNEL bool thomasLanes5(int n, const LaneLine* L, double* w) {
+  return thomasLanes<5>(n, L, w);
+}
+
+} // namespace
+
+bool blockThomasLanes(int bs, int n, const LaneLine* lines, double* work) {
+  switch (bs) {
+  case 3:
+    return thomasLanes3(n, lines, work);
+  case 4:
+    return thomasLanes4(n, lines, work);
+  case 5:
+    return thomasLanes5(n, lines, work);
+  default:
+    return false;
+  }
+}
+
+} // namespace suite::linalg
