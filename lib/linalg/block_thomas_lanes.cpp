@@ -63,7 +63,12 @@ template <int bb>
 THOMAS_INLINE void loadBlock(const LaneLine* L, const double* LaneLine::*member, int i, V* out) {
   const double* p[kThomasLanes];
   for (int l = 0; l < kThomasLanes; ++l) p[l] = (L[l].*member) + (long long)i * L[l].ms;
-  loadLanes(p, bb, out);
+  for (int e = 0; e + 4 <= bb; e += 4) {
+    V r[kThomasLanes];
+    for (int l = 0; l < kThomasLanes; ++l) r[l] = *reinterpret_cast<const VU*>(p[l] + e);
+    transpose4(r, out + e);
+  }
+  for (int e = bb / 4 * 4; e < bb; ++e) out[e] = V{p[0][e], p[1][e], p[2][e], p[3][e]};
 }
 
 // SmallLU<BS>::factor on the four blocks in lu (overwritten by their LU factors, rows exchanged as there),
@@ -135,6 +140,15 @@ template <int BS, int NC> THOMAS_INLINE void subtractLanes(const V* Mx, const V*
     }
 }
 
+// Y (BS x NC) += Mx (BS x BS) X (BS x NC), as addProduct<BS, NC>.
+template <int BS, int NC> THOMAS_INLINE void addLanes(const V* Mx, const V* X, V* Y) {
+  for (int a = 0; a < BS; ++a)
+    for (int b = 0; b < BS; ++b) {
+      const V v = Mx[a * BS + b];
+      for (int c = 0; c < NC; ++c) Y[a * NC + c] += v * X[b * NC + c];
+    }
+}
+
 // The forward sweep of row i (lineSolve<BS, 1>): Bh = B_i - A_i G_{i-1}, y_i = Bh^-1 (d_i - A_i y_{i-1}),
 // G_i = Bh^-1 C_i (not on the last row).
 template <int BS> THOMAS_INLINE bool forwardRow(int n, int i, const LaneLine* L, V* G, V* Y) {
@@ -185,6 +199,144 @@ template <int BS> THOMAS_INLINE bool thomasLanes(int n, const LaneLine* L, doubl
   return true;
 }
 
+// X (BS x NC) = alive ? Xnew : X, lane by lane: a spike that died in a lane (all zero) keeps its value there,
+// as the one-line sweep skips its updates.
+template <int N> THOMAS_INLINE void keepWhereDead(M alive, const V* fresh, V* x) {
+  for (int e = 0; e < N; ++e) x[e] = alive ? fresh[e] : x[e];
+}
+
+// A lane mask: which lanes of the BS x BS block x hold a nonzero entry (anyNonzero of the one-line sweep).
+template <int N> THOMAS_INLINE M nonzeroLanes(const V* x) {
+  M any = {0, 0, 0, 0};
+  for (int e = 0; e < N; ++e) any |= x[e] != 0.0;
+  return any;
+}
+
+THOMAS_INLINE bool anyLane(M m) {
+  return m[0] || m[1] || m[2] || m[3];
+}
+
+// flushSpikes: entries below 1e-200 in magnitude set to zero.
+template <int N> THOMAS_INLINE void flushLanes(V* x) {
+  for (int e = 0; e < N; ++e) x[e] = absOf(x[e]) < 1e-200 ? V{0, 0, 0, 0} : x[e];
+}
+
+// The spikes of pass 1 (lineEnds of substructured_block_lines.cpp) at row i: rp (the left spike P, reduced),
+// W (the unrolled back substitution), their lane masks of being alive, and the accumulated first rows.
+template <int BS> struct EndsLanes {
+  V G[BS * BS] = {}, rp[BS * BS] = {}, W[BS * BS] = {}, rq[BS * BS] = {}, accP[BS * BS] = {};
+  V accY[BS] = {}, ryp[BS] = {};
+  M pAlive, wAlive = {-1, -1, -1, -1};
+};
+
+// Row i of pass 1 on four lines (lineEnds, row by row in the same order; the updates of a spike that died in a
+// lane are computed and discarded there). ry: d_i on entry.
+template <int BS>
+THOMAS_INLINE bool endsRow(int n, int i, const LaneLine* L, bool hasR, V* ry, EndsLanes<BS>* s) {
+  constexpr int bb = BS * BS;
+  V Bh[bb], tmp[bb];
+  loadBlock<bb>(L, &LaneLine::B, i, Bh);
+  if (i == 0) {
+    if (anyLane(s->pAlive)) { // hasL: -A_0
+      loadBlock<bb>(L, &LaneLine::A, 0, tmp);
+      for (int e = 0; e < bb; ++e) s->rp[e] = -tmp[e];
+    }
+  } else {
+    V A[bb];
+    loadBlock<bb>(L, &LaneLine::A, i, A);
+    subtractLanes<BS, BS>(A, s->G, Bh);
+    subtractLanes<BS, 1>(A, s->ryp, ry);
+    if (anyLane(s->pAlive)) {
+      for (int e = 0; e < bb; ++e) tmp[e] = V{0, 0, 0, 0};
+      subtractLanes<BS, BS>(A, s->rp, tmp);
+      keepWhereDead<bb>(s->pAlive, tmp, s->rp);
+    }
+  }
+  M piv[BS];
+  V inv[BS];
+  if (!factorLanes<BS>(Bh, piv, inv)) return false;
+  solveLanes<BS, 1>(Bh, piv, inv, ry);
+  if (anyLane(s->pAlive)) {
+    for (int e = 0; e < bb; ++e) tmp[e] = s->rp[e];
+    solveLanes<BS, BS>(Bh, piv, inv, tmp);
+    flushLanes<bb>(tmp);
+    keepWhereDead<bb>(s->pAlive, tmp, s->rp);
+    s->pAlive &= nonzeroLanes<bb>(s->rp);
+  }
+  if (i + 1 < n) {
+    loadBlock<bb>(L, &LaneLine::C, i, s->G);
+    solveLanes<BS, BS>(Bh, piv, inv, s->G);
+  } else if (hasR) {
+    loadBlock<bb>(L, &LaneLine::C, i, s->rq);
+    for (int e = 0; e < bb; ++e) s->rq[e] = -s->rq[e];
+    solveLanes<BS, BS>(Bh, piv, inv, s->rq);
+  }
+  return true;
+}
+
+// The first rows x_0 = sum_i W_i R_i accumulated after row i, and W_{i+1} = -W_i G_i (lineEnds).
+template <int BS> THOMAS_INLINE void endsAccumulate(int n, int i, const V* ry, EndsLanes<BS>* s) {
+  constexpr int bb = BS * BS;
+  V tmp[bb];
+  if (i == 0) {
+    for (int a = 0; a < BS; ++a) s->accY[a] = ry[a];
+    for (int e = 0; e < bb; ++e) s->accP[e] = s->rp[e];
+  } else if (anyLane(s->wAlive)) {
+    V y[BS];
+    for (int a = 0; a < BS; ++a) y[a] = s->accY[a];
+    addLanes<BS, 1>(s->W, ry, y);
+    keepWhereDead<BS>(s->wAlive, y, s->accY);
+    const M both = s->wAlive & s->pAlive;
+    if (anyLane(both)) {
+      for (int e = 0; e < bb; ++e) tmp[e] = s->accP[e];
+      addLanes<BS, BS>(s->W, s->rp, tmp);
+      keepWhereDead<bb>(both, tmp, s->accP);
+    }
+  }
+  if (i + 1 < n && anyLane(s->wAlive)) {
+    if (i == 0) {
+      for (int e = 0; e < bb; ++e) s->W[e] = -s->G[e];
+    } else {
+      for (int e = 0; e < bb; ++e) tmp[e] = V{0, 0, 0, 0};
+      subtractLanes<BS, BS>(s->W, s->G, tmp);
+      keepWhereDead<bb>(s->wAlive, tmp, s->W);
+    }
+    flushLanes<bb>(s->W);
+    s->wAlive &= nonzeroLanes<bb>(s->W);
+  }
+}
+
+// Pass 1 on four lines: the end rows [YF, YL, PF, PL, QF, QL] of each into out[l] (lineEnds' layout).
+template <int BS>
+THOMAS_INLINE bool endsLanes(int n, const LaneLine* L, bool hasL, bool hasR, double* work,
+                             double* const* out) {
+  constexpr int bb = BS * BS;
+  V* D = reinterpret_cast<V*>(work);
+  const double* d[kThomasLanes] = {L[0].d, L[1].d, L[2].d, L[3].d};
+  loadLanes(d, (long long)n * BS, D);
+  EndsLanes<BS> s;
+  s.pAlive = hasL ? M{-1, -1, -1, -1} : M{0, 0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    V* ry = D + i * BS;
+    if (!endsRow<BS>(n, i, L, hasR, ry, &s)) return false;
+    endsAccumulate<BS>(n, i, ry, &s);
+    for (int a = 0; a < BS; ++a) s.ryp[a] = ry[a];
+  }
+  V QF[bb] = {};
+  if (hasR && anyLane(s.wAlive)) {
+    V tmp[bb] = {};
+    addLanes<BS, BS>(s.W, s.rq, tmp);
+    keepWhereDead<bb>(s.wAlive, tmp, QF);
+  }
+  for (int l = 0; l < kThomasLanes; ++l) {
+    double *YF = out[l], *YL = YF + BS, *PF = YL + BS, *PL = PF + bb, *QFl = PL + bb, *QL = QFl + bb;
+    for (int a = 0; a < BS; ++a) YF[a] = s.accY[a][l], YL[a] = s.ryp[a][l];
+    for (int e = 0; e < bb; ++e)
+      PF[e] = s.accP[e][l], PL[e] = s.rp[e][l], QFl[e] = QF[e][l], QL[e] = hasR ? s.rq[e][l] : 0.0;
+  }
+  return true;
+}
+
 SUITE_KERNEL bool thomasLanes3(int n, const LaneLine* L, double* w) {
   return thomasLanes<3>(n, L, w);
 }
@@ -193,6 +345,15 @@ SUITE_KERNEL bool thomasLanes4(int n, const LaneLine* L, double* w) {
 }
 SUITE_KERNEL bool thomasLanes5(int n, const LaneLine* L, double* w) {
   return thomasLanes<5>(n, L, w);
+}
+SUITE_KERNEL bool endsLanes3(int n, const LaneLine* L, bool hl, bool hr, double* w, double* const* out) {
+  return endsLanes<3>(n, L, hl, hr, w, out);
+}
+SUITE_KERNEL bool endsLanes4(int n, const LaneLine* L, bool hl, bool hr, double* w, double* const* out) {
+  return endsLanes<4>(n, L, hl, hr, w, out);
+}
+SUITE_KERNEL bool endsLanes5(int n, const LaneLine* L, bool hl, bool hr, double* w, double* const* out) {
+  return endsLanes<5>(n, L, hl, hr, w, out);
 }
 
 } // namespace
@@ -205,6 +366,20 @@ bool blockThomasLanes(int bs, int n, const LaneLine* lines, double* work) {
     return thomasLanes4(n, lines, work);
   case 5:
     return thomasLanes5(n, lines, work);
+  default:
+    return false;
+  }
+}
+
+bool blockEndsLanes(int bs, int n, const LaneLine* lines, bool hasL, bool hasR, double* work,
+                    double* const* ends) {
+  switch (bs) {
+  case 3:
+    return endsLanes3(n, lines, hasL, hasR, work, ends);
+  case 4:
+    return endsLanes4(n, lines, hasL, hasR, work, ends);
+  case 5:
+    return endsLanes5(n, lines, hasL, hasR, work, ends);
   default:
     return false;
   }

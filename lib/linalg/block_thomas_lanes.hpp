@@ -33,4 +33,11 @@ inline long long blockThomasLanesWork(int bs, int n) {
 // 1e-14 times the block's largest entry, or not finite), or for another bs: then the caller solves them one by one.
 bool blockThomasLanes(int bs, int n, const LaneLine* lines, double* work);
 
+// Pass 1 of the substructured solve (lineEnds of substructured_block_lines.cpp: the forward sweep with the
+// spikes P = -T^-1 A_0 E_0 (when hasL) and Q = -T^-1 C_{n-1} E_{n-1} (when hasR), keeping the end rows) on the
+// four lines (xl, xr, x not read), bitwise lineEnds: ends[l] receives line l's [YF, YL (bs each), PF, PL, QF,
+// QL (bs x bs each)]. work: blockThomasLanesWork(bs, n) doubles, 32-byte aligned. False as blockThomasLanes.
+bool blockEndsLanes(int bs, int n, const LaneLine* lines, bool hasL, bool hasR, double* work,
+                    double* const* ends);
+
 } // namespace suite::linalg

@@ -404,10 +404,29 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
       throw std::invalid_argument("SubstructuredBlockLines: too many lines for one MPI_Allgather (" +
                                   std::to_string(nlines) + ")");
     ends_.assign((size_t)nlines * E, 0.0);
-    for (int l = 0; l < nlines; ++l) {
+    const auto ends = [&](int l) {
       double* e = ends_.data() + (size_t)l * E;
       e[E - 1] = lineEnds<BS, NR>(n, nrhs, rows(l), hasL, hasR, work_.data(), e) ? 1.0 : 0.0;
-    }
+    };
+    int l = 0;
+    if constexpr (NR == 1 && BS >= 3) // four lines at a time, bitwise lineEnds
+      for (lanes_.resize((size_t)blockThomasLanesWork(BS, n) / 4); l + kThomasLanes <= nlines;
+           l += kThomasLanes) {
+        LaneLine q[kThomasLanes];
+        double* e[kThomasLanes];
+        for (int k = 0; k < kThomasLanes; ++k) {
+          const LineRows L = rows(l + k);
+          q[k] = {L.A, L.B, L.C, L.d, ms, nullptr};
+          e[k] = ends_.data() + (size_t)(l + k) * E;
+        }
+        const bool ok = blockEndsLanes(BS, n, q, hasL, hasR, reinterpret_cast<double*>(lanes_.data()), e);
+        for (int k = 0; k < kThomasLanes; ++k)
+          if (ok)
+            e[k][E - 1] = 1.0;
+          else
+            ends(l + k); // a rejected pivot: line by line
+      }
+    for (; l < nlines; ++l) ends(l);
     all_ends_.resize((size_t)P * nlines * E);
     if (P == 1)
       std::copy(ends_.begin(), ends_.end(), all_ends_.begin());
