@@ -354,6 +354,70 @@ void SubstructuredBlockLines::secondPass(const Shape& s, int l0, int batch, cons
   }
 }
 
+// One rank, open lines: block Thomas (lineSolve) and the residual of every line, four lines at a time where
+// NR = 1 (blockThomasLanes, bitwise the one-line solves; a rejected pivot sends its four lines one by one).
+template <int BS, int NR, class Rows>
+void SubstructuredBlockLines::plainSweeps(const Shape& s, const Rows& rows, double* x, std::size_t xstride) {
+  const auto one = [&](int l) {
+    const LineRows L = rows(l);
+    double* xline = x + l * xstride;
+    if (lineSolve<BS, NR>(s.n, s.nrhs, L, false, false, nullptr, nullptr, G_.data(), xline))
+      lineResidual<BS, NR>(s.n, s.nrhs, L, false, false, nullptr, nullptr, xline, &res_[2 * (size_t)l]);
+    else
+      res_[2 * (size_t)l] = kFailed;
+  };
+  int l = 0;
+  if constexpr (NR == 1 && BS >= 3)
+    for (lanes_.resize((size_t)blockThomasLanesWork(BS, s.n) / 4); l + kThomasLanes <= s.nlines;
+         l += kThomasLanes) {
+      LaneLine q[kThomasLanes];
+      for (int k = 0; k < kThomasLanes; ++k) {
+        const LineRows L = rows(l + k);
+        q[k] = {L.A, L.B, L.C, L.d, L.ms, x + (l + k) * xstride};
+      }
+      const bool ok = blockThomasLanes(BS, s.n, q, reinterpret_cast<double*>(lanes_.data()));
+      for (int k = 0; k < kThomasLanes; ++k)
+        if (ok)
+          lineResidual<BS, NR>(s.n, s.nrhs, rows(l + k), false, false, nullptr, nullptr, q[k].x,
+                               &res_[2 * (size_t)(l + k)]);
+        else
+          one(l + k);
+    }
+  for (; l < s.nlines; ++l) one(l);
+}
+
+// Pass 1: the end rows of every line into ends_ (lineEnds), four lines at a time where NR = 1
+// (blockEndsLanes, bitwise lineEnds; a rejected pivot sends its four lines one by one).
+template <int BS, int NR, class Rows>
+void SubstructuredBlockLines::firstPass(const Shape& s, const Rows& rows) {
+  const int ny = BS * s.nrhs, E = 2 * ny + 4 * BS * BS + 1;
+  const bool hasL = s.rank > 0 || s.periodic, hasR = s.rank + 1 < s.P || s.periodic;
+  ends_.assign((size_t)s.nlines * E, 0.0);
+  const auto ends = [&](int l) {
+    double* e = ends_.data() + (size_t)l * E;
+    e[E - 1] = lineEnds<BS, NR>(s.n, s.nrhs, rows(l), hasL, hasR, work_.data(), e) ? 1.0 : 0.0;
+  };
+  int l = 0;
+  if constexpr (NR == 1 && BS >= 3)
+    for (lanes_.resize((size_t)blockThomasLanesWork(BS, s.n) / 4); l + kThomasLanes <= s.nlines;
+         l += kThomasLanes) {
+      LaneLine q[kThomasLanes];
+      double* e[kThomasLanes];
+      for (int k = 0; k < kThomasLanes; ++k) {
+        const LineRows L = rows(l + k);
+        q[k] = {L.A, L.B, L.C, L.d, L.ms, nullptr};
+        e[k] = ends_.data() + (size_t)(l + k) * E;
+      }
+      const bool ok = blockEndsLanes(BS, s.n, q, hasL, hasR, reinterpret_cast<double*>(lanes_.data()), e);
+      for (int k = 0; k < kThomasLanes; ++k)
+        if (ok)
+          e[k][E - 1] = 1.0;
+        else
+          ends(l + k);
+    }
+  for (; l < s.nlines; ++l) ends(l);
+}
+
 template <int BS, int NR>
 void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const double* A, const double* B,
                                         const double* C, int ms, const double* d, int nrhs, bool periodic,
@@ -362,7 +426,6 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
   int rank = 0, P = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &P);
-  const bool hasL = rank > 0 || periodic, hasR = rank + 1 < P || periodic;
   const int ny = BS * nrhs;
   const std::size_t lstride = (size_t)n * ms, dstride = (size_t)n * ny, xstride = (size_t)count * ny;
   auto rows = [&](int l) {
@@ -372,61 +435,15 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
   work_.resize((size_t)3 * ny); // lineEnds
   res_.assign((size_t)2 * nlines, 0.0);
 
+  const Shape shape{P, rank, n, nrhs, nlines, count, periodic};
   if (P == 1 && !periodic) { // plain block Thomas
-    const auto one = [&](int l) {
-      const LineRows L = rows(l);
-      double* xline = x + l * xstride;
-      if (lineSolve<BS, NR>(n, nrhs, L, false, false, nullptr, nullptr, G_.data(), xline))
-        lineResidual<BS, NR>(n, nrhs, L, false, false, nullptr, nullptr, xline, &res_[2 * (size_t)l]);
-      else
-        res_[2 * (size_t)l] = kFailed;
-    };
-    int l = 0;
-    if constexpr (NR == 1 && BS >= 3) // four lines at a time, bitwise the one-line solves
-      for (lanes_.resize((size_t)blockThomasLanesWork(BS, n) / 4); l + kThomasLanes <= nlines;
-           l += kThomasLanes) {
-        LaneLine q[kThomasLanes];
-        for (int k = 0; k < kThomasLanes; ++k) {
-          const LineRows L = rows(l + k);
-          q[k] = {L.A, L.B, L.C, L.d, ms, x + (l + k) * xstride};
-        }
-        if (!blockThomasLanes(BS, n, q, reinterpret_cast<double*>(lanes_.data())))
-          for (int k = 0; k < kThomasLanes; ++k) one(l + k); // a rejected pivot: line by line
-        else
-          for (int k = 0; k < kThomasLanes; ++k)
-            lineResidual<BS, NR>(n, nrhs, rows(l + k), false, false, nullptr, nullptr, q[k].x,
-                                 &res_[2 * (size_t)(l + k)]);
-      }
-    for (; l < nlines; ++l) one(l);
+    plainSweeps<BS, NR>(shape, rows, x, xstride);
   } else {
     const int E = 2 * ny + 4 * bb + 1; // YF, YL, PF, PL, QF, QL, success flag
     if ((long long)nlines * E > INT_MAX)
       throw std::invalid_argument("SubstructuredBlockLines: too many lines for one MPI_Allgather (" +
                                   std::to_string(nlines) + ")");
-    ends_.assign((size_t)nlines * E, 0.0);
-    const auto ends = [&](int l) {
-      double* e = ends_.data() + (size_t)l * E;
-      e[E - 1] = lineEnds<BS, NR>(n, nrhs, rows(l), hasL, hasR, work_.data(), e) ? 1.0 : 0.0;
-    };
-    int l = 0;
-    if constexpr (NR == 1 && BS >= 3) // four lines at a time, bitwise lineEnds
-      for (lanes_.resize((size_t)blockThomasLanesWork(BS, n) / 4); l + kThomasLanes <= nlines;
-           l += kThomasLanes) {
-        LaneLine q[kThomasLanes];
-        double* e[kThomasLanes];
-        for (int k = 0; k < kThomasLanes; ++k) {
-          const LineRows L = rows(l + k);
-          q[k] = {L.A, L.B, L.C, L.d, ms, nullptr};
-          e[k] = ends_.data() + (size_t)(l + k) * E;
-        }
-        const bool ok = blockEndsLanes(BS, n, q, hasL, hasR, reinterpret_cast<double*>(lanes_.data()), e);
-        for (int k = 0; k < kThomasLanes; ++k)
-          if (ok)
-            e[k][E - 1] = 1.0;
-          else
-            ends(l + k); // a rejected pivot: line by line
-      }
-    for (; l < nlines; ++l) ends(l);
+    firstPass<BS, NR>(shape, rows);
     all_ends_.resize((size_t)P * nlines * E);
     if (P == 1)
       std::copy(ends_.begin(), ends_.end(), all_ends_.begin());
@@ -434,8 +451,7 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
       MPI_Allgather(ends_.data(), nlines * E, MPI_DOUBLE, all_ends_.data(), nlines * E, MPI_DOUBLE, comm);
     for (int l = 0; l < nlines;) {
       const int batch = NR == 1 && BS >= 3 && l + kThomasLanes <= nlines ? kThomasLanes : 1;
-      secondPass<BS, NR>({P, rank, n, nrhs, nlines, count, periodic}, l, batch, rows, x + l * xstride,
-                         xstride);
+      secondPass<BS, NR>(shape, l, batch, rows, x + l * xstride, xstride);
       l += batch;
     }
     if (P > 1) MPI_Allreduce(MPI_IN_PLACE, res_.data(), 2 * nlines, MPI_DOUBLE, MPI_MAX, comm);

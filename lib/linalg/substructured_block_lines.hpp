@@ -75,6 +75,9 @@ private:
     bool periodic;
   };
   template <int BS, int NR, class Rows>
+  void plainSweeps(const Shape& s, const Rows& rows, double* x, std::size_t xstride);
+  template <int BS, int NR, class Rows> void firstPass(const Shape& s, const Rows& rows);
+  template <int BS, int NR, class Rows>
   void secondPass(const Shape& s, int l0, int batch, const Rows& rows, double* x, std::size_t xstride);
 
   // Exact solve of the lines in fail_ (see 4. above); throws std::runtime_error (on every rank) if one of
