@@ -161,10 +161,10 @@ bool DirectionSweep<NV>::markShockRows(const V* q, int ncell, long long n, long 
     rho_[m] = q[m][0];
     p_[m] = G::pressure(q[m], opt_.gamma);
   }
+  enoPadeShockRows(rho_.data(), p_.data(), nrow, opt_.shock_threshold, theta_, &sensor_work_, shock);
   bool any = false;
   for (int k = 0; k < nrow; ++k) {
-    shock[k] = !boundaryFace(periodic, xs + k, n) &&
-               enoPadeShockRow(rho_.data() + k, p_.data() + k, opt_.shock_threshold, theta_);
+    shock[k] = shock[k] && !boundaryFace(periodic, xs + k, n);
     any = any || shock[k];
   }
   return any;

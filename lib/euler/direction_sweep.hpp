@@ -142,6 +142,7 @@ private:
   linalg::DistributedTridiag gather_; // LineOptions::gather_lines
   std::vector<V> f_;
   std::vector<double> speed_, rho_, p_, alpha_;
+  std::vector<char> sensor_work_; // enoPadeShockRows: per-cell and per-window tests of a line
   std::vector<typename LineGas<NV>::RoeState>
       rs_;                                       // per cell of the line being processed (characteristic rows)
   std::vector<std::array<double, NV>> lam_;      // its cells' rf-char speeds (RfChar::cellSpeeds)

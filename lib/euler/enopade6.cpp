@@ -2,6 +2,7 @@
 #include "euler/enopade6.hpp"
 
 #include <cmath>
+#include <vector>
 
 namespace suite::euler {
 
@@ -47,6 +48,35 @@ bool resolutionFires(const double* q, double theta) {
 bool enoPadeShockRow(const double* rho, const double* p, double threshold, double theta) {
   return (amplitudeFires(rho, threshold) && resolutionFires(rho, theta)) ||
          (amplitudeFires(p, threshold) && resolutionFires(p, theta));
+}
+
+namespace {
+// The two tests of enoPadeShockRow for every row 0 .. nrow-1 of q at once, each cell's amplitude test and each
+// window's resolution test made once (a row reads four of each; the same operations, so the same outcome):
+// fires[k] |= (amplitude fires at a cell k+1 .. k+4) && (resolution fires in a window k .. k+2).
+void rowsFire(const double* q, int nrow, double threshold, double theta, char* amp, char* res, char* fires) {
+  for (int c = 1; c <= nrow + 3; ++c) {
+    const double phi = std::abs(q[c + 1] - 2.0 * q[c] + q[c - 1]) /
+                       (std::abs(q[c + 1]) + 2.0 * std::abs(q[c]) + std::abs(q[c - 1]) + 1e-300);
+    amp[c] = !(phi <= threshold);
+  }
+  for (int w = 0; w <= nrow + 1; ++w) {
+    const double d0 = q[w + 1] - q[w], d1 = q[w + 2] - q[w + 1], d2 = q[w + 3] - q[w + 2];
+    res[w] = theta <= 0.0 ||
+             !(std::abs(d2 - 2.0 * d1 + d0) <= theta * (std::abs(d0) + std::abs(d1) + std::abs(d2)));
+  }
+  for (int k = 0; k < nrow; ++k)
+    fires[k] |= (amp[k + 1] | amp[k + 2] | amp[k + 3] | amp[k + 4]) && (res[k] | res[k + 1] | res[k + 2]);
+}
+} // namespace
+
+void enoPadeShockRows(const double* rho, const double* p, int nrow, double threshold, double theta,
+                      std::vector<char>* work, char* shock) {
+  work->resize(2 * (size_t)(nrow + 4));
+  char *amp = work->data(), *res = amp + nrow + 4;
+  for (int k = 0; k < nrow; ++k) shock[k] = 0;
+  rowsFire(rho, nrow, threshold, theta, amp, res, shock);
+  rowsFire(p, nrow, threshold, theta, amp, res, shock);
 }
 
 } // namespace suite::euler

@@ -58,6 +58,8 @@
 
 #include "euler/row.hpp"
 
+#include <vector>
+
 namespace suite::euler {
 
 // Pade row at x_{j+1/2} from v[0..5] = f_{j-2} .. f_{j+3} (v[0], v[5] unused).
@@ -69,5 +71,9 @@ double shockResolutionRatio(double ppw);
 // Shock sensor for the row at x_{j+1/2}: rho[0..5], p[0..5] at cells j-2 .. j+3; threshold: the amplitude
 // test's, theta: the resolution test's. NaN data make a shock row.
 bool enoPadeShockRow(const double* rho, const double* p, double threshold, double theta);
+// enoPadeShockRow for the rows 0 .. nrow-1 of a line (row k reads rho[k .. k+5], p[k .. k+5]) into shock[k]
+// (1: shock row), each cell's and window's test made once; work: scratch. The same rows as row by row.
+void enoPadeShockRows(const double* rho, const double* p, int nrow, double threshold, double theta,
+                      std::vector<char>* work, char* shock);
 
 } // namespace suite::euler

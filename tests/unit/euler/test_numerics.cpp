@@ -158,6 +158,32 @@ TEST(EulerReconstruction, ShockSensorQuietOnSmoothLoudOnJump) {
   EXPECT_TRUE(enoPadeShockRow(rho, p, 0.02, theta));
 }
 
+// The sensor of a whole line (each cell's and window's test made once) flags exactly the rows that the
+// row-by-row sensor flags: a line with a smooth wave, a jump in rho, one in p, under-resolved bumps,
+// grid-scale noise and a NaN, for both tests together and the amplitude test alone (theta = 0).
+TEST(EulerReconstruction, LineSensorFlagsTheRowsOfTheRowSensor) {
+  const int ncell = 64, nrow = ncell - 5;
+  std::vector<double> rho(ncell), p(ncell);
+  for (int c = 0; c < ncell; ++c) {
+    const double x = (c + 0.5) / ncell;
+    rho[c] = 1.0 + 0.2 * std::sin(2 * M_PI * x) + (c > 20 ? -0.5 : 0.0) +
+             0.3 * std::exp(-0.5 * std::pow((c - 40) / 1.5, 2)) + (c > 50 && c % 2 ? 1e-4 : 0.0);
+    p[c] = c < 30 ? 1.0 : 0.1 + 0.01 * std::cos(7 * x);
+  }
+  rho[57] = std::nan("");
+  std::vector<char> work, line(nrow);
+  int flagged = 0;
+  for (double theta : {shockResolutionRatio(8.0), 0.0}) {
+    enoPadeShockRows(rho.data(), p.data(), nrow, 0.02, theta, &work, line.data());
+    for (int k = 0; k < nrow; ++k) {
+      EXPECT_EQ(line[k] != 0, enoPadeShockRow(rho.data() + k, p.data() + k, 0.02, theta)) << "row " << k;
+      flagged += line[k] != 0;
+    }
+  }
+  EXPECT_GT(flagged, 10);
+  EXPECT_LT(flagged, 2 * nrow);
+}
+
 TEST(EulerExactRiemann, ToroTable4_2) {
   const ExactRiemann sod({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
   EXPECT_NEAR(sod.pStar(), 0.30313, 1e-5);
