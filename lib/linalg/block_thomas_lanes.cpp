@@ -1,7 +1,9 @@
-// Block Thomas on four lines at once, one per lane (see block_thomas_lanes.hpp). Every step mirrors the
-// one-line code it must match bit for bit: lineSolve<BS, 1> (substructured_block_lines.cpp) for the sweep,
-// SmallLU<BS>::factor / solveFast (block_kernels.hpp) for the diagonal blocks, subtractProduct for the
-// products; the loops keep their order of operations per element.
+// Block Thomas sweeps on four lines at once, one per lane (see block_thomas_lanes.hpp): thomasLanes (the
+// one-rank sweep, pass 2) and endsLanes (pass 1). Every step mirrors the one-line code it must match bit for
+// bit: lineSolve<BS, 1> and lineEnds<BS, 1> (substructured_block_lines.cpp) for the sweeps, SmallLU<BS>::factor
+// / solveFast (block_kernels.hpp) for the diagonal blocks, subtractProduct / addProduct for the products,
+// flushSpikes; the loops keep their order of operations per element. (Sharing the one-line code, generic in
+// the number type, would turn its pivot branches into selects there too.)
 #include "linalg/block_thomas_lanes.hpp"
 
 #include "core/kernel_clones.hpp"
