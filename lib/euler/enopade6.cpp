@@ -72,6 +72,7 @@ void rowsFire(const double* q, int nrow, double threshold, double theta, char* a
 
 void enoPadeShockRows(const double* rho, const double* p, int nrow, double threshold, double theta,
                       std::vector<char>* work, char* shock) {
+  if (nrow <= 0) return; // (no cell is read: the row-by-row sensor read none either)
   work->resize(2 * (size_t)(nrow + 4));
   char *amp = work->data(), *res = amp + nrow + 4;
   for (int k = 0; k < nrow; ++k) shock[k] = 0;
