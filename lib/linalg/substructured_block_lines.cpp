@@ -302,6 +302,11 @@ bool SubstructuredBlockLines::reducedSolve(int P, int nrhs, bool periodic, const
   return true;
 }
 
+double* SubstructuredBlockLines::laneWork(int bs, int n) {
+  lanes_.resize((size_t)blockThomasLanesWork(bs, n) / kThomasLanes);
+  return reinterpret_cast<double*>(lanes_.data());
+}
+
 // Pass 2 of lines l0 .. l0 + batch - 1 (batch 1, or kThomasLanes lines solved at once when every one of their
 // reduced solves succeeded; bitwise the one-line solves): per line the reduced solve, its neighbour values
 // x_left, x_right, the line solve with them moved to the right-hand side, the residual; x: line l0's solution.
@@ -310,7 +315,7 @@ void SubstructuredBlockLines::secondPass(const Shape& s, int l0, int batch, cons
                                          std::size_t xstride) {
   constexpr int bb = BS * BS;
   const int ny = BS * s.nrhs, E = 2 * ny + 4 * bb + 1, N = 2 * s.P * BS;
-  const bool hasL = s.rank > 0 || s.periodic, hasR = s.rank + 1 < s.P || s.periodic;
+  const bool hasL = s.hasL(), hasR = s.hasR();
   const int left = s.rank > 0 ? s.rank - 1 : s.P - 1, right = s.rank + 1 < s.P ? s.rank + 1 : 0;
   const std::size_t rank_stride = (size_t)s.nlines * E;
   neighbours_.resize((size_t)2 * kThomasLanes * ny);
@@ -338,8 +343,8 @@ void SubstructuredBlockLines::secondPass(const Shape& s, int l0, int batch, cons
       const double* xl = neighbours_.data() + (size_t)2 * k * ny;
       q[k] = {L.A, L.B, L.C, L.d, L.ms, x + k * xstride, hasL ? xl : nullptr, hasR ? xl + ny : nullptr};
     }
-    lanes_.resize((size_t)blockThomasLanesWork(BS, s.n) / 4);
-    lanes = blockThomasLanes(BS, s.n, q, reinterpret_cast<double*>(lanes_.data()));
+    lanes = blockThomasLanes(BS, s.n, q, laneWork(BS, s.n));
+    stats_.lane_batches += lanes;
   }
   for (int k = 0; k < batch; ++k) {
     const LineRows L = rows(l0 + k);
@@ -367,15 +372,15 @@ void SubstructuredBlockLines::plainSweeps(const Shape& s, const Rows& rows, doub
       res_[2 * (size_t)l] = kFailed;
   };
   int l = 0;
-  if constexpr (NR == 1 && BS >= 3)
-    for (lanes_.resize((size_t)blockThomasLanesWork(BS, s.n) / 4); l + kThomasLanes <= s.nlines;
-         l += kThomasLanes) {
+  if constexpr (laned<BS, NR>())
+    for (; l + kThomasLanes <= s.nlines; l += kThomasLanes) {
       LaneLine q[kThomasLanes];
       for (int k = 0; k < kThomasLanes; ++k) {
         const LineRows L = rows(l + k);
         q[k] = {L.A, L.B, L.C, L.d, L.ms, x + (l + k) * xstride};
       }
-      const bool ok = blockThomasLanes(BS, s.n, q, reinterpret_cast<double*>(lanes_.data()));
+      const bool ok = blockThomasLanes(BS, s.n, q, laneWork(BS, s.n));
+      stats_.lane_batches += ok;
       for (int k = 0; k < kThomasLanes; ++k)
         if (ok)
           lineResidual<BS, NR>(s.n, s.nrhs, rows(l + k), false, false, nullptr, nullptr, q[k].x,
@@ -391,16 +396,15 @@ void SubstructuredBlockLines::plainSweeps(const Shape& s, const Rows& rows, doub
 template <int BS, int NR, class Rows>
 void SubstructuredBlockLines::firstPass(const Shape& s, const Rows& rows) {
   const int ny = BS * s.nrhs, E = 2 * ny + 4 * BS * BS + 1;
-  const bool hasL = s.rank > 0 || s.periodic, hasR = s.rank + 1 < s.P || s.periodic;
+  const bool hasL = s.hasL(), hasR = s.hasR();
   ends_.assign((size_t)s.nlines * E, 0.0);
   const auto ends = [&](int l) {
     double* e = ends_.data() + (size_t)l * E;
     e[E - 1] = lineEnds<BS, NR>(s.n, s.nrhs, rows(l), hasL, hasR, work_.data(), e) ? 1.0 : 0.0;
   };
   int l = 0;
-  if constexpr (NR == 1 && BS >= 3)
-    for (lanes_.resize((size_t)blockThomasLanesWork(BS, s.n) / 4); l + kThomasLanes <= s.nlines;
-         l += kThomasLanes) {
+  if constexpr (laned<BS, NR>())
+    for (; l + kThomasLanes <= s.nlines; l += kThomasLanes) {
       LaneLine q[kThomasLanes];
       double* e[kThomasLanes];
       for (int k = 0; k < kThomasLanes; ++k) {
@@ -408,7 +412,8 @@ void SubstructuredBlockLines::firstPass(const Shape& s, const Rows& rows) {
         q[k] = {L.A, L.B, L.C, L.d, L.ms, nullptr};
         e[k] = ends_.data() + (size_t)(l + k) * E;
       }
-      const bool ok = blockEndsLanes(BS, s.n, q, hasL, hasR, reinterpret_cast<double*>(lanes_.data()), e);
+      const bool ok = blockEndsLanes(BS, s.n, q, hasL, hasR, laneWork(BS, s.n), e);
+      stats_.lane_batches += ok;
       for (int k = 0; k < kThomasLanes; ++k)
         if (ok)
           e[k][E - 1] = 1.0;
@@ -450,7 +455,7 @@ void SubstructuredBlockLines::solveImpl(MPI_Comm comm, int nlines, int n, const 
     else
       MPI_Allgather(ends_.data(), nlines * E, MPI_DOUBLE, all_ends_.data(), nlines * E, MPI_DOUBLE, comm);
     for (int l = 0; l < nlines;) {
-      const int batch = NR == 1 && BS >= 3 && l + kThomasLanes <= nlines ? kThomasLanes : 1;
+      const int batch = laned<BS, NR>() && l + kThomasLanes <= nlines ? kThomasLanes : 1;
       secondPass<BS, NR>(shape, l, batch, rows, x + l * xstride, xstride);
       l += batch;
     }

@@ -32,6 +32,7 @@ class SubstructuredBlockLines {
 public:
   struct Stats {
     long long solves = 0, lines = 0, fallbacks = 0;
+    long long lane_batches = 0; // sweeps (one-rank, pass 1, pass 2) made on four lines at once
   };
   // comm: the ranks that share the lines, ranked in line order (rank r holds the rows after rank r-1's).
   // Every rank passes the same nlines lines; this rank holds nloc >= 2 consecutive block rows of each,
@@ -73,7 +74,13 @@ private:
   struct Shape {
     int P, rank, n, nrhs, nlines, count;
     bool periodic;
+    bool hasL() const { return rank > 0 || periodic; } // a neighbour row before this rank's rows
+    bool hasR() const { return rank + 1 < P || periodic; }
   };
+  // Whether the sweeps of block size BS with NR right-hand sides go four lines at a time
+  // (block_thomas_lanes.hpp: one right-hand side, bs 3 to 5).
+  template <int BS, int NR> static constexpr bool laned() { return NR == 1 && BS >= 3; }
+  double* laneWork(int bs, int n); // the lanes' work for lines of n rows, 32-byte aligned
   template <int BS, int NR, class Rows>
   void plainSweeps(const Shape& s, const Rows& rows, double* x, std::size_t xstride);
   template <int BS, int NR, class Rows> void firstPass(const Shape& s, const Rows& rows);

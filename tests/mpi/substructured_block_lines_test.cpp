@@ -332,6 +332,12 @@ TEST(SubstructuredBlockLines, FourLinesAtOnceAreBitwiseEachLineAlone) {
     for (size_t k = 0; k < d.size(); ++k)
       ASSERT_EQ(x_all[k], x_one[k]) << "bs " << bs << ", line " << k / ((size_t)n * bs) << ", entry " << k;
     EXPECT_EQ(all.stats().fallbacks, 1) << "bs " << bs << ": the line with a zero diagonal block";
+    // Lines 0-3 went four at a time (on one rank the sweep; on several pass 1 and pass 2), lines 4-7 did not
+    // (line 5's pivot), line 8 is alone; solved alone, no line went four at a time.
+    int P = 1;
+    MPI_Comm_size(PETSC_COMM_WORLD, &P);
+    EXPECT_EQ(all.stats().lane_batches, P == 1 ? 1 : 2) << "bs " << bs;
+    EXPECT_EQ(one.stats().lane_batches, 0) << "bs " << bs;
   }
 }
 
