@@ -97,6 +97,10 @@ TEST(ProblemClass, TinyScanAgreesWithTheGeneralPath) {
     mats.push_back(generate("random_spd", gp, 1).M);
     mats.back()(n - 1, n - 1) = -1.0;                            // a negative diagonal entry: sym
     mats.push_back(Mat::Ones(n, n) * 2.0 - Mat::Identity(n, n)); // minors <= 0
+    mats.push_back(generate("murty", gp, 0).M);
+    mats.back().triangularView<Eigen::StrictlyUpper>().setConstant(-0.0); // -0.0 is zero: still tril
+    mats.push_back(mats.back());
+    mats.back()(0, n - 1) = 1e-300; // one tiny entry in the last column: not triangular
   }
   for (size_t k = 0; k < mats.size(); ++k) {
     const Mat& A = mats[k];
@@ -150,6 +154,18 @@ TEST(ProblemClass, StructureSizeAndFeatures) {
   EXPECT_EQ(classOf(box), "box-dd-small");
   EXPECT_DOUBLE_EQ(classify(box, true).density, 0.25);
   EXPECT_EQ(classify(box).finite_upper, 4);
+  EXPECT_EQ(classify(box).finite_lower, 4);
+  // Standard bounds are l = 0 (either sign of zero) and u = +inf; each other bound is counted
+  Problem s = makeLcp(D, Vec::Constant(4, -1.0));
+  s.l[2] = -0.0;
+  EXPECT_EQ(classOf(s), "lcp-dd-small");
+  EXPECT_EQ(classify(s).finite_lower, 4);
+  s.l[3] = -kInf;
+  s.u[1] = 2.0;
+  const ProblemFeatures fs = classify(s);
+  EXPECT_EQ(fs.structure, "box");
+  EXPECT_EQ(fs.finite_lower, 3);
+  EXPECT_EQ(fs.finite_upper, 1);
 }
 
 // M = I + a (ones - I), a = -0.01: diagonal 1, every 2 x 2 minor 1 - a^2 > 0, not dominant (row sum of
