@@ -39,7 +39,7 @@ const Portfolio& builtinPortfolio() {
                        {"bpp", "lemke", "keller", "cottle_dantzig"},
                        {"bpp", "lemke", "keller", "cottle_dantzig"},
                        {"pgs", "lemke", "keller", "cottle_dantzig"},
-                       {"murty", "lemke", "keller", "cottle_dantzig"},
+                       {"cottle_dantzig", "lemke", "keller", "murty"},
                        {"pgs", "lemke", "keller", "cottle_dantzig"},
                        {"murty", "lemke", "cottle_dantzig", "bpp"},
                        {"pgs", "lemke", "keller", "cottle_dantzig"},
