@@ -175,8 +175,8 @@ int scanTinyInto(const Problem& p, bool with_minors, ProblemFeatures* f) {
   return everyPair(M, [](double a, double, int, int) { return a == 0.0; }) ? 2 : 0;
 }
 
-// Every l_i = 0 and u_i = +inf (Problem::isStandard()), read as bits without a branch per entry (vectorised: on Murty's example at
-// n = 12 the entry-by-entry test and count took ~12 of classify()'s 61 ns).
+// Every l_i = 0 and u_i = +inf (Problem::isStandard()), read as bits without a branch per entry (vectorised:
+// on Murty's example at n = 12 the entry-by-entry test and count took ~12 of classify()'s 61 ns).
 bool standardBounds(const Problem& p) {
   constexpr std::uint64_t kInfBits = 0x7ff0000000000000ULL;
   std::uint64_t diff = 0;

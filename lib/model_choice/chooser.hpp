@@ -1,30 +1,32 @@
 // The chooser of an accuracy-target run: given candidate families (configurations as option values, see
 // candidate.hpp) and a target, it
 //   1. runs three pilots per family at n0, 2 n0, 4 n0 (their differences: the observed order and error
-//      constant, observed_order.hpp; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0, refitting
-//      each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at 8 n0 and 32 n0
-//      (at most n_max; a timing run predicted to cost more than the family's pilots is left out): with the
-//      pilots' timings, the cost model (cost_model.hpp). Families go cheapest first (by their n0 pilot); with an
-//      error target, a family whose next pilot is predicted to cost more than a candidate already known to meet
-//      the target is left out (it cannot lower the whole cost),
+//      constant, observed_order.hpp; an order between 1 and kJumpOrderBound, a flow with jumps, is refitted at
+//      order 1, atMostFirstOrderWithJumps; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0,
+//      refitting each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at
+//      8 n0 and 32 n0 (at most n_max; a timing run predicted to cost more than the family's pilots is left
+//      out): with the pilots' timings, the cost model (cost_model.hpp). Families go cheapest first (by their
+//      n0 pilot); with an error target, a family whose pilots still needed for its fit are predicted to cost
+//      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
 //   2. tabulates every candidate (family x resolution ladderN(n0, per_octave, k) up to n_max) with its
 //      predicted cost and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone,
 //      the most accurate one predicted to finish within the time left), runs it through the caller's runner,
 //   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and
-//      the finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder), or without a the pair
-//      estimate with the order so far (ratios of 2 or more: closer runs of a flow with discontinuities differ
-//      mostly by the sub-cell placement of the jumps). When that estimate misses the target and the final run
-//      is above the earlier runs (whose order may be pre-asymptotic there), check runs at n/4 and n/2 (no
-//      output; 5/16 of the final's cost in 1D, 9/64 in 2D; each unless an earlier run lies within a factor
-//      kCheckGap / 2 below it) become a and b, and the estimate is made again from them before escalating (the
-//      order of that fit at most 1 when the family's is below 2: see runFinal). A lower order observed this
-//      way caps every family's order (the problem's regularity bounds them all). When the estimate misses the
-//      target the family's fit is replaced by what the final run showed and the next candidate is run (at most
-//      max_escalations times): one predicted to cost at most kEscalationGrowth times the missed run when one
-//      is predicted to meet the target or, of the missed family, to improve on it (escalationCandidate), else
-//      the cheapest predicted to meet the target at any cost, the families without a final run judged by their
-//      pilots' fits raised by the worst miss of a final run so far (fallbackCandidate).
+//      the finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder, at most 1 as above),
+//      or without a the pair estimate with the order so far (ratios of 2 or more: closer runs of a flow with
+//      discontinuities differ mostly by the sub-cell placement of the jumps). When that estimate misses the
+//      target and the final run is above the earlier runs (whose order may be pre-asymptotic there), check
+//      runs at n/4 and n/2 (no output; 5/16 of the final's cost in 1D, 9/64 in 2D; each unless an earlier run
+//      lies within a factor kCheckGap / 2 below it) become a and b, and the estimate is made again from them
+//      before escalating (the order of that fit at most 1 when the family's is below 2: see runFinal). A
+//      lower order observed this way caps every family's order (the problem's regularity bounds them all).
+//      When the estimate misses the target the family's fit is replaced by what the final run showed and the
+//      next candidate is run (at most max_escalations times): one predicted to cost at most kEscalationGrowth
+//      times the missed run when one is predicted to meet the target or, of the missed family, to improve on
+//      it (escalationCandidate), else the cheapest predicted to meet the target at any cost, the families
+//      without a final run judged by their pilots' fits raised by the worst miss of a final run so far
+//      (fallbackCandidate).
 // A run that fails (RunResult::failed: a non-physical state, a failed step) leaves its family out: its pilots
 // stop, a failed final run is followed by the next candidate (an escalation), and the output records the
 // failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on

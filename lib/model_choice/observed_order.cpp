@@ -46,6 +46,11 @@ ObservedOrder fitObservedOrder(double a, double b, double c, double d_ab, double
   return f;
 }
 
+ObservedOrder atMostFirstOrderWithJumps(ObservedOrder f, double b, double c, double d_bc) {
+  if (f.valid && f.p > 1.0 && f.p < kJumpOrderBound) f.p = 1.0, f.a = d_bc / (1.0 / b - 1.0 / c);
+  return f;
+}
+
 double pairEstimate(double n_other, double n, double d, double p) {
   if (n == n_other) return INFINITY;
   return d * std::pow(n, -p) / std::abs(std::pow(n, -p) - std::pow(n_other, -p));

@@ -49,6 +49,33 @@ TEST(ObservedOrder, NotConvergingIsInvalid) {
   EXPECT_FALSE(fitObservedOrder(32, 64, 128, NAN, 1e-3).valid);
 }
 
+// An order between 1 and kJumpOrderBound (a flow with jumps, pre-asymptotic) is refitted at order 1 through the
+// finer difference: at runs b, c = 2b the error of c is then that difference. Orders of 1 or below and of smooth
+// flow (>= kJumpOrderBound) are kept.
+TEST(ObservedOrder, FlowWithJumpsIsRefittedAtFirstOrder) {
+  const auto fitFor = [](double p) {
+    auto e = [p](double m) { return 2.0 * std::pow(m, -p); };
+    return fitObservedOrder(32, 64, 128, e(32) - e(64), e(64) - e(128));
+  };
+  const ObservedOrder f = fitFor(1.5);
+  const double d_bc = 2.0 * (std::pow(64.0, -1.5) - std::pow(128.0, -1.5));
+  const ObservedOrder g = atMostFirstOrderWithJumps(f, 64, 128, d_bc);
+  ASSERT_TRUE(g.valid);
+  EXPECT_EQ(g.p, 1.0);
+  EXPECT_NEAR(g.p_observed, 1.5, 1e-9);
+  EXPECT_NEAR(g.errorAt(128), d_bc, 1e-15);
+  EXPECT_NEAR(g.errorAt(512), d_bc / 4, 1e-15);
+  EXPECT_GT(g.errorAt(512), f.errorAt(512)); // more pessimistic beyond the runs
+  for (double p : {0.7, 1.0, 2.5, 4.0}) {
+    const ObservedOrder h = fitFor(p);
+    const ObservedOrder k =
+        atMostFirstOrderWithJumps(h, 64, 128, 2.0 * (std::pow(64.0, -p) - std::pow(128.0, -p)));
+    EXPECT_EQ(k.p, h.p) << p;
+    EXPECT_EQ(k.a, h.a) << p;
+  }
+  EXPECT_FALSE(atMostFirstOrderWithJumps(fitObservedOrder(32, 64, 128, 1e-3, 2e-3), 64, 128, 2e-3).valid);
+}
+
 TEST(GridDistance, SixthOrderOnSmoothData) {
   // The same smooth function sampled on 40 and 80 cells (no centre in common): the distance is the
   // interpolation error alone.
@@ -112,6 +139,31 @@ TEST(Chooser, PicksTheCheapestMeetingTheTargetAndEstimatesItsError) {
   EXPECT_NEAR(c.finals().back().estimate / (c_true / (double)c.chosen().n), 1.0, 0.02);
   EXPECT_NEAR(c.orders()[0].p, 1.0, 0.02);
   EXPECT_EQ(c.pilots().size(), 3u);
+}
+
+// Pilots whose differences show an order between 1 and kJumpOrderBound (error 0.5 n^-1.5): the chooser plans with
+// order 1 through the finest pilots' difference (a flow with jumps), keeps the observed order in its output, and
+// the chosen run meets the target.
+TEST(Chooser, PlansAtFirstOrderWhenThePilotsShowAnOrderBelowTwo) {
+  const auto err = [](double n) { return 0.5 * std::pow(n, -1.5); };
+  Runner runner = [&](const Family&, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    r->density = line(n, smooth);
+    for (long long i = 0; i < n; ++i)
+      r->density.values[(size_t)i] += err((double)n) * 2.0 * std::cos(3 * M_PI * (i + 0.5) / n);
+    r->steps = 2 * n;
+    r->seconds = 1e-6 * (double)n * (double)n;
+    return 0;
+  };
+  ChooserSettings s;
+  s.target_error = 1e-4, s.n0 = 32, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"only", {{"-scheme", "x"}}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  EXPECT_EQ(c.orders()[0].p, 1.0);
+  EXPECT_NEAR(c.orders()[0].p_observed, 1.5, 0.02);
+  EXPECT_TRUE(c.met()) << c.summary();
+  EXPECT_LE(err((double)c.chosen().n) * 4.0 / M_PI, s.target_error);
+  // the finest pilot's estimate is its difference to the pilot before it (order 1 at ratio 2)
+  EXPECT_NEAR(c.pilots().back().estimate / c.pilots().back().difference, 1.0, 1e-12);
 }
 
 namespace {
