@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 using namespace suite::model_choice;
 
@@ -27,6 +28,17 @@ double smooth(double x) {
 }
 double step(double x) {
   return x < 0.5 ? 1.0 : 0.125;
+}
+// Runs of one family: exact + e(n) 2 cos(3 pi x), 2n steps, cost 1e-6 n^2 s (the L1 error is e(n) 4/pi).
+Runner runsWithError(std::function<double(double)> e) {
+  return [e](const Family&, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    r->density = line(n, smooth);
+    for (long long i = 0; i < n; ++i)
+      r->density.values[(size_t)i] += e((double)n) * 2.0 * std::cos(3 * M_PI * (i + 0.5) / n);
+    r->steps = 2 * n;
+    r->seconds = 1e-6 * (double)n * (double)n;
+    return 0;
+  };
 }
 } // namespace
 
@@ -146,14 +158,7 @@ TEST(Chooser, PicksTheCheapestMeetingTheTargetAndEstimatesItsError) {
 // the chosen run meets the target.
 TEST(Chooser, PlansAtFirstOrderWhenThePilotsShowAnOrderBelowTwo) {
   const auto err = [](double n) { return 0.5 * std::pow(n, -1.5); };
-  Runner runner = [&](const Family&, long long n, RunKind, RunResult* r) -> PetscErrorCode {
-    r->density = line(n, smooth);
-    for (long long i = 0; i < n; ++i)
-      r->density.values[(size_t)i] += err((double)n) * 2.0 * std::cos(3 * M_PI * (i + 0.5) / n);
-    r->steps = 2 * n;
-    r->seconds = 1e-6 * (double)n * (double)n;
-    return 0;
-  };
+  const Runner runner = runsWithError(err);
   ChooserSettings s;
   s.target_error = 1e-4, s.n0 = 32, s.n_max = 8192;
   ModelChooser c(PETSC_COMM_WORLD, {{"only", {{"-scheme", "x"}}}}, s, CostModel());
@@ -214,14 +219,7 @@ TEST(Chooser, CheckRunsAtAQuarterAndHalfTheFinalResolution) {
         0.04 * std::pow(16.0 / std::min(n, 96.0), 0.25) * std::pow(96.0 / std::max(n, 96.0), 4);
     return 0.4 / n + plateau;
   };
-  Runner runner = [&](const Family&, long long n, RunKind, RunResult* r) -> PetscErrorCode {
-    r->density = line(n, smooth);
-    for (long long i = 0; i < n; ++i)
-      r->density.values[(size_t)i] += err((double)n) * 2.0 * std::cos(3 * M_PI * (i + 0.5) / n);
-    r->steps = 2 * n;
-    r->seconds = 1e-6 * (double)n * (double)n;
-    return 0;
-  };
+  const Runner runner = runsWithError(err);
   ChooserSettings s;
   s.target_error = 1e-2, s.n0 = 16, s.n_max = 8192;
   ModelChooser c(PETSC_COMM_WORLD, {{"only", {{"-scheme", "x"}}}}, s, CostModel());
