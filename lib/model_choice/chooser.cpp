@@ -40,6 +40,13 @@ CandidateRow escalationCandidate(const std::vector<CandidateRow>& table, const s
   return accurate.n != 0 && accurate.error < missed_estimate ? accurate : CandidateRow();
 }
 
+namespace {
+// With an error target: a is preferred to b when cheaper, at equal cost when more accurate.
+bool cheaperRow(const CandidateRow& a, const CandidateRow& b) {
+  return a.cost < b.cost || (a.cost == b.cost && a.error < b.error);
+}
+} // namespace
+
 CandidateRow fallbackCandidate(const std::vector<CandidateRow>& table, const std::vector<bool>& done,
                                const std::function<bool(const CandidateRow&)>& feasible,
                                const std::vector<bool>& has_final, double miss) {
@@ -49,7 +56,7 @@ CandidateRow fallbackCandidate(const std::vector<CandidateRow>& table, const std
     if (done[i]) continue;
     if (!has_final[(size_t)r.family]) r.error *= std::max(miss, 1.0);
     if (!feasible(r)) continue;
-    if (best.n == 0 || r.cost < best.cost || (r.cost == best.cost && r.error < best.error)) best = table[i];
+    if (best.n == 0 || cheaperRow(table[i], best)) best = table[i];
   }
   return best;
 }
@@ -263,7 +270,7 @@ bool ModelChooser::feasible(const CandidateRow& r) const {
 }
 
 bool ModelChooser::better(const CandidateRow& a, const CandidateRow& b) const {
-  if (set_.target_error > 0) return a.cost < b.cost || (a.cost == b.cost && a.error < b.error);
+  if (set_.target_error > 0) return cheaperRow(a, b);
   return a.error < b.error || (a.error == b.error && a.cost < b.cost);
 }
 
