@@ -147,12 +147,13 @@ bool ModelChooser::pilotTooDear(size_t f, int k, const std::vector<size_t>& comp
     if (cost_.loaded()) {
       pilot = cost_.predict(families_[f].name, (double)(set_.n0 << j));
     } else {
-      std::vector<double> ratios; // families that ran level j; else this family's own last ratio
+      std::vector<double> ratios; // families that ran level j; else this family's own last ratio (none
+                                  // before its pilot at 2 n0: 1, a lower bound of the cost)
       for (size_t g : completed)
         if (pilot_seconds_[g][(size_t)j] > 0)
           ratios.push_back(pilot_seconds_[g][(size_t)j] / pilot_seconds_[g][(size_t)j - 1]);
       if (ratios.empty())
-        ratios.push_back(pilot_seconds_[f][(size_t)k - 1] / pilot_seconds_[f][(size_t)k - 2]);
+        ratios.push_back(k >= 2 ? pilot_seconds_[f][(size_t)k - 1] / pilot_seconds_[f][(size_t)k - 2] : 1.0);
       std::sort(ratios.begin(), ratios.end());
       pilot *= ratios[ratios.size() / 2];
     }
