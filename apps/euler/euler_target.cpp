@@ -11,6 +11,7 @@
 #include "model_choice/chooser.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace euler_app {
 
@@ -197,8 +198,24 @@ PetscErrorCode runCandidate(const suite::RunContext& ctx, int dim, const PetscIn
   PetscFunctionReturn(0);
 }
 
+// Why a target run stopped without meeting its target, and where its last run's output went (a user then
+// knows which limit to raise and that the result is there, /model_choice included).
+std::string missExplanation(const mc::ModelChooser& chooser, const std::string& output) {
+  const mc::ChooserSettings& s = chooser.settings();
+  std::string why;
+  if ((int)chooser.finals().size() - 1 >= s.max_escalations)
+    why = "-target_escalations " + std::to_string(s.max_escalations) + " used up";
+  else if (chooser.chosen().n >= s.n_max)
+    why = "no finer candidate within -target_max_n " + std::to_string(s.n_max);
+  else
+    why = "no other candidate predicted to do better";
+  return why + "; best reachable is about that" +
+         (output.empty() ? std::string() : "; that run's output, with /model_choice, is in " + output);
+}
+
 // The summary line (with the error against the exact solution under -error), and a miss as the run's error.
-PetscErrorCode reportChoice(MPI_Comm comm, const mc::ModelChooser& chooser, double target, double exact_l1) {
+PetscErrorCode reportChoice(MPI_Comm comm, const mc::ModelChooser& chooser, double target, double exact_l1,
+                            const std::string& output) {
   char exact[64] = "";
   PetscFunctionBeginUser;
   if (std::isfinite(exact_l1))
@@ -206,10 +223,10 @@ PetscErrorCode reportChoice(MPI_Comm comm, const mc::ModelChooser& chooser, doub
   PetscCall(suite::logInfo(comm, false, "%s%s", chooser.summary().c_str(), exact));
   PetscCheck(
       chooser.met(), comm, PETSC_ERR_NOT_CONVERGED,
-      "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s); best "
-      "reachable is about that",
+      "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s): %s",
       target, chooser.finals().back().estimate, chooser.finals().size() - 1,
-      chooser.label(chooser.chosen().family, chooser.chosen().n).c_str());
+      chooser.label(chooser.chosen().family, chooser.chosen().n).c_str(),
+      missExplanation(chooser, output).c_str());
   PetscFunctionReturn(0);
 }
 } // namespace
@@ -231,7 +248,7 @@ PetscErrorCode runTargetEuler(const suite::RunContext& ctx, int dim, const Targe
   mc::ModelChooser chooser(ctx.comm(), fams, chooserSettings(t), cost);
   PetscCall(chooser.run(runner));
   if (!output.empty()) PetscCall(mc::writeModelChoice(ctx.comm(), output, chooser));
-  PetscCall(reportChoice(ctx.comm(), chooser, t.error, exact_l1));
+  PetscCall(reportChoice(ctx.comm(), chooser, t.error, exact_l1, output));
   PetscFunctionReturn(0);
 }
 

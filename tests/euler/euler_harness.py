@@ -9,8 +9,9 @@ MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
 SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def run(args, np_=1, expect_ok=True, timeout=1500, tail=4000):
-    """Runs euler with args on np_ ranks and returns its output (stdout and stderr)."""
+def run(args, np_=1, expect_ok=True, timeout=1500, tail=4000, with_code=False):
+    """Runs euler with args on np_ ranks and returns its output (stdout and stderr); with_code: and its exit
+    status."""
     cmd = [MPIEXEC, "--oversubscribe", "-n", str(np_), os.path.join(BIN, "euler")] + [str(a) for a in args]
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout, env=env)
@@ -18,7 +19,7 @@ def run(args, np_=1, expect_ok=True, timeout=1500, tail=4000):
     print(p.stdout[-tail:] if tail else p.stdout)
     if expect_ok and p.returncode != 0:
         raise SystemExit(f"FAIL: exit {p.returncode}")
-    return p.stdout
+    return (p.stdout, p.returncode) if with_code else p.stdout
 
 
 def check(cond, msg):

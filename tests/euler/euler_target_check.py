@@ -5,9 +5,12 @@ run given the 1-rank run's cost model (-cost_model) takes the same choice. Each 
 
 A scheme whose run fails on the problem is left out (failing_scheme).
 
-Usage: euler_target_check.py sod|density_wave|vortex|walltime|ranks|failing_scheme
+A target the final run misses is a clear error naming the limit reached and the output (missed).
+
+Usage: euler_target_check.py sod|density_wave|vortex|walltime|ranks|failing_scheme|missed
 """
 import os
+import re
 import sys
 import tempfile
 
@@ -116,6 +119,31 @@ def failing_scheme():
                 check(failed == [(0, 32)], f"failed pilots (family, n) {failed}: enopade6's first only")
                 check("invalid rho" in g.attrs["failure_enopade6"] and g.attrs["failure_muscl2"] == "",
                       "failure attributes")
+
+
+def missed():
+    """A target the final run misses, escalations used up (Toro 123, muscl2 alone, safety 1: n = 256 is predicted
+    at 2.7e-3 and estimated at 5.1e-3 afterwards) or no finer candidate (-target_max_n): a non-zero exit on every
+    rank, the error names the limit reached and the output file, which holds the run with /model_choice (not met),
+    at 1 and 2 ranks."""
+    base = ["-problem", "toro123", "-target_schemes", "muscl2", "-target_error", 3e-3, "-target_safety", 1, "-quiet"]
+    with tempfile.TemporaryDirectory() as tmp:
+        for np_, extra, why in ((1, ["-target_escalations", 0], "-target_escalations 0 used up"),
+                                (2, ["-target_escalations", 0], "-target_escalations 0 used up"),
+                                (1, ["-target_max_n", 256], "no finer candidate within -target_max_n 256")):
+            out = os.path.join(tmp, f"missed_np{np_}.h5")
+            log, code = run([*base, *extra, "-output", out], np_=np_, expect_ok=False, with_code=True)
+            check(code != 0, f"{np_} rank(s), {extra}: non-zero exit ({code})")
+            msg = (f"-target_error 0.003 missed: the final run's estimated error is {{e}} after 0 escalations "
+                   f"(muscl2 n=256): {why}; best reachable is about that; that run's output, with /model_choice, "
+                   f"is in {out}")
+            m = re.search(re.escape(msg).replace(re.escape("{e}"), r"([0-9.e+-]+)"), log)
+            check(m is not None and float(m.group(1)) > 3e-3, f"the error names the estimate and why: {why}")
+            with h5py.File(out, "r") as f:
+                g = f["model_choice"]
+                check(g.attrs["target_met"] == 0 and abs(g.attrs["estimated_error"] - float(m.group(1))) <=
+                      1e-3 * float(m.group(1)) and f["final/rho"].shape == (256,),
+                      "the output holds the 256-cell run and /model_choice with the miss")
 
 
 def ranks():
