@@ -10,6 +10,7 @@
 #include "model_choice/choice_output.hpp"
 #include "model_choice/chooser.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -202,10 +203,15 @@ PetscErrorCode runCandidate(const suite::RunContext& ctx, int dim, const PetscIn
 // knows which limit to raise and that the result is there, /model_choice included).
 std::string missExplanation(const mc::ModelChooser& chooser, const std::string& output) {
   const mc::ChooserSettings& s = chooser.settings();
+  const mc::CandidateRow& c = chooser.chosen();
+  // the finest of its family's candidates (the ladder's top may lie below n_max itself)
+  const bool finest =
+      std::none_of(chooser.table().begin(), chooser.table().end(),
+                   [&](const mc::CandidateRow& r) { return r.family == c.family && r.n > c.n; });
   std::string why;
   if ((int)chooser.finals().size() - 1 >= s.max_escalations)
     why = "-target_escalations " + std::to_string(s.max_escalations) + " used up";
-  else if (chooser.chosen().n >= s.n_max)
+  else if (finest)
     why = "no finer candidate within -target_max_n " + std::to_string(s.n_max);
   else
     why = "no other candidate predicted to do better";

@@ -193,7 +193,8 @@ bool standardBounds(const Problem& p) {
 void countFiniteBounds(const Problem& p, bool standard, ProblemFeatures* f) {
   f->finite_lower = standard ? f->n : 0;
   f->finite_upper = 0;
-  for (int i = 0; i < f->n && !standard; ++i) {
+  if (standard) return;
+  for (int i = 0; i < f->n; ++i) {
     f->finite_lower += std::isfinite(p.l[i]);
     f->finite_upper += std::isfinite(p.u[i]);
   }

@@ -123,15 +123,16 @@ def failing_scheme():
 
 def missed():
     """A target the final run misses, escalations used up (Toro 123, muscl2 alone, safety 1: n = 256 is predicted
-    at 2.7e-3 and estimated at 5.1e-3 afterwards) or no finer candidate (-target_max_n): a non-zero exit on every
-    rank, the error names the limit reached and the output file, which holds the run with /model_choice (not met),
-    at 1 and 2 ranks."""
+    at 2.7e-3 and estimated at 5.1e-3 afterwards) or no finer candidate (-target_max_n 256; also with 300, whose
+    ladder ends at 256): a non-zero exit, the error names the limit reached and the output file, which holds the
+    run with /model_choice (not met), at 1 and 2 ranks."""
     base = ["-problem", "toro123", "-target_schemes", "muscl2", "-target_error", 3e-3, "-target_safety", 1, "-quiet"]
     with tempfile.TemporaryDirectory() as tmp:
         for np_, extra, why in ((1, ["-target_escalations", 0], "-target_escalations 0 used up"),
                                 (2, ["-target_escalations", 0], "-target_escalations 0 used up"),
-                                (1, ["-target_max_n", 256], "no finer candidate within -target_max_n 256")):
-            out = os.path.join(tmp, f"missed_np{np_}.h5")
+                                (1, ["-target_max_n", 256], "no finer candidate within -target_max_n 256"),
+                                (1, ["-target_max_n", 300], "no finer candidate within -target_max_n 300")):
+            out = os.path.join(tmp, f"missed_np{np_}_{extra[1]}.h5")
             log, code = run([*base, *extra, "-output", out], np_=np_, expect_ok=False, with_code=True)
             check(code != 0, f"{np_} rank(s), {extra}: non-zero exit ({code})")
             msg = (f"-target_error 0.003 missed: the final run's estimated error is {{e}} after 0 escalations "
