@@ -44,4 +44,11 @@ PetscErrorCode EulerRun::solveSeconds(double* seconds) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode EulerRun::solveSecondsAfterFirstStep(double* seconds) const {
+  PetscFunctionBeginUser;
+  *seconds = cpu_solve_ - cpu_first_step_;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seconds, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace euler_app

@@ -2,6 +2,7 @@
 // the last step lands on t_final, max_steps, bounded retries at half dt, failure after the final write,
 // observers, snapshot cadence, checkpoint cadence, and a restart that continues bitwise.
 #include "../test_helpers.hpp"
+#include "core/clocks.hpp"
 #include "core/run_context.hpp"
 #include "core/time_loop.hpp"
 
@@ -24,6 +25,7 @@ class DecayApp : public suite::TimeStepped {
 public:
   double y = 1.0, dt = 0.3, max_ok_dt = 1e9; // advance asks for a retry above max_ok_dt
   bool fail_at_step_3 = false;
+  double first_step_cpu = 0.0, later_step_cpu = 0.0; // CPU seconds the first / every later step spins for
   std::vector<PetscInt> snapshots;
   std::vector<double> dts;
   suite::LoopSummary final_summary;
@@ -40,6 +42,9 @@ public:
     } else if (fail_at_step_3 && step + 1 == 3) {
       out->status = StepStatus::Failed, out->message = "injected failure";
     } else {
+      const double c0 = suite::processCpuSeconds();
+      while (suite::processCpuSeconds() - c0 < (step == 0 ? first_step_cpu : later_step_cpu)) {
+      }
       y -= d * y;
       dts.push_back(d);
       out->t_new = t + d;
@@ -125,6 +130,19 @@ TEST(TimeLoop, MaxStepsEndsTheRun) {
   ASSERT_EQ(loop.run(app), 0);
   EXPECT_EQ(loop.summary().steps, 5);
   EXPECT_NEAR(loop.summary().t, 1.5, 1e-14);
+}
+
+// The summary's cpu_first is the first step's share of cpu (the accuracy-target runs time the steps after it).
+TEST(TimeLoop, FirstStepCpuIsReportedApart) {
+  Fixture f;
+  DecayApp app;
+  app.first_step_cpu = 0.02, app.later_step_cpu = 0.005;
+  suite::TimeLoop loop(*f.ctx, f.policy, settings(100.0, 5));
+  ASSERT_EQ(loop.run(app), 0);
+  const suite::LoopSummary& s = loop.summary();
+  EXPECT_GE(s.cpu_first, 0.02);
+  EXPECT_LT(s.cpu_first, 0.025);        // not the second step's too
+  EXPECT_GE(s.cpu - s.cpu_first, 0.02); // the four later steps
 }
 
 TEST(TimeLoop, RejectedStepRetriedAtHalfDt) {
