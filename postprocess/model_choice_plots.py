@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import math
+from pathlib import Path
 
 import h5py
 import numpy as np
@@ -76,36 +77,46 @@ def _finish(plt, fig, ax, output):
     return [output]
 
 
-def read_bench(path):
-    """{problem: (targets, achieved)} of the runs that completed."""
+def read_bench(paths):
+    """{problem: (targets, achieved)} of the runs that completed, over one or several targets.csv files (a problem
+    in several files, e.g. at 1 and 2 ranks, keeps its points apart under "problem (file stem)")."""
+    paths = [paths] if isinstance(paths, (str, Path)) else list(paths)
+    rows = {}
+    for path in paths:
+        with open(path, newline="") as f:
+            rows[path] = [r for r in csv.DictReader(f) if r.get("achieved")]
+    files = {}  # problem -> the files it is in
+    for path, rs in rows.items():
+        for r in rs:
+            files.setdefault(r["problem"], set()).add(path)
     out = {}
-    with open(path, newline="") as f:
-        for r in csv.DictReader(f):
-            if r.get("achieved"):
-                t, a = out.setdefault(r["problem"], ([], []))
-                t.append(float(r["target"]))
-                a.append(float(r["achieved"]))
+    for path, rs in rows.items():
+        for r in rs:
+            key = r["problem"] if len(files[r["problem"]]) == 1 else f"{r['problem']} ({Path(path).stem})"
+            t, a = out.setdefault(key, ([], []))
+            t.append(float(r["target"]))
+            a.append(float(r["achieved"]))
     return out
 
 
-def plot_bench(path, output):
+def plot_bench(paths, output):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    data = read_bench(path)
+    data = read_bench(paths)
     fig, ax = plt.subplots(figsize=(6, 5))
     lo, hi = math.inf, 0.0
-    for name, (t, a) in data.items():
-        ax.loglog(t, a, "o", label=name)
+    for i, (name, (t, a)) in enumerate(data.items()):
+        ax.loglog(t, a, "os^Dv<>ph*"[i % 10], label=name, mfc="none" if i >= 10 else None)
         lo, hi = min(lo, *t, *a), max(hi, *t, *a)
     if hi > 0:
         x = np.array([lo / 2, hi * 2])
         ax.loglog(x, x, "k-", lw=1, label="achieved = E")
         ax.loglog(x, x / 4, "k:", lw=1, label="E / 4")
     ax.set_xlabel("target E (L1 density)")
-    ax.set_ylabel("achieved L1 error against the exact solution")
+    ax.set_ylabel("achieved L1 error (vs exact or reference)")
     return _finish(plt, fig, ax, output)
 
 
@@ -122,7 +133,7 @@ def register(sub):
 
     p.set_defaults(func=run)
     q = sub.add_parser("model-choice-bench", help="euler-target-error benchmark: achieved error vs target")
-    q.add_argument("csv", help="targets.csv written by scripts/bench/euler-target-error")
+    q.add_argument("csv", nargs="+", help="targets.csv file(s) written by scripts/bench/euler-target-error")
     q.add_argument("-o", "--output", default="target_error.png")
 
     def run_bench(a):

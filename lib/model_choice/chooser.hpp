@@ -83,7 +83,8 @@ struct RunResult {
   std::string failure; // then: why
 };
 // Runs family f at resolution n: a pilot or a check run (to t_final, no output), a timing run (kTimingSteps
-// steps, no output) or a final run (to t_final, with the run's output).
+// steps, no output; seconds and steps of steady stepping: a runner may leave out a first step that warms the
+// work arrays, as the Euler runner does) or a final run (to t_final, with the run's output).
 using Runner = std::function<PetscErrorCode(const Family& f, long long n, RunKind kind, RunResult* r)>;
 
 struct CandidateRow {

@@ -63,3 +63,17 @@ def test_bench_figure(tmp_path):
     out = tmp_path / "b.png"
     assert main(["model-choice-bench", str(p), "-o", str(out)]) == 0
     assert out.stat().st_size > 1000
+
+
+def test_bench_figure_of_several_tables(tmp_path):
+    """Several targets.csv in one figure; a problem in two of them (1 and 2 ranks) keeps its points apart."""
+    one, two, so = tmp_path / "targets.csv", tmp_path / "targets_np2.csv", tmp_path / "targets_shu_osher.csv"
+    one.write_text("problem,target,chosen,achieved\nsod,1e-3,weno5 n=512,7e-4\n")
+    two.write_text("problem,target,chosen,achieved\nsod,1e-3,weno5 n=512,6e-4\n")
+    so.write_text("problem,target,chosen,achieved\nshu_osher,1e-2,muscl2 n=3456,5.5e-3\n")
+    data = mc.read_bench([one, two, so])
+    assert data == {"sod (targets)": ([1e-3], [7e-4]), "sod (targets_np2)": ([1e-3], [6e-4]),
+                    "shu_osher": ([1e-2], [5.5e-3])}
+    out = tmp_path / "c.png"
+    assert main(["model-choice-bench", str(one), str(two), str(so), "-o", str(out)]) == 0
+    assert out.stat().st_size > 1000
