@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """euler -target_error (issue #17): the chooser's achieved error against the exact solution is <= the target
-on Sod, the density wave and the 2D isentropic vortex for two targets a decade apart, the /model_choice group is complete, and a 2-rank
-run given the 1-rank run's cost model (-cost_model) takes the same choice. Each case runs in a few seconds.
+on Sod, the density wave and the 2D isentropic vortex for two targets a decade apart (the vortex in 3D for one),
+the /model_choice group is complete, and a 2-rank run given the 1-rank run's cost model (-cost_model) takes the
+same choice. Each case runs in a few seconds.
 
 A scheme whose run fails on the problem is left out (failing_scheme).
 
 A target the final run misses is a clear error naming the limit reached and the output (missed).
 
-Usage: euler_target_check.py sod|density_wave|vortex|walltime|ranks|failing_scheme|missed
+Usage: euler_target_check.py sod|density_wave|vortex|vortex_3d|walltime|ranks|failing_scheme|missed
 """
 import os
 import re
@@ -95,6 +96,12 @@ def vortex():
     """2D: the isentropic vortex to t = 0.5, weno5 and muscl2 up to 128 x 128."""
     target_case("isentropic_vortex", [1e-4, 1e-5],
                 ["-dim", 2, "-t_final", 0.5, "-target_schemes", "weno5,muscl2", "-target_max_n", 128])
+
+
+def vortex_3d():
+    """3D: the isentropic vortex extruded along z (the 2D errors), weno5 and muscl2 up to 64 cells across."""
+    target_case("isentropic_vortex", [1e-4],
+                ["-dim", 3, "-t_final", 0.5, "-target_schemes", "weno5,muscl2", "-target_max_n", 64])
 
 
 def failing_scheme():
