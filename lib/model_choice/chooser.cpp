@@ -118,8 +118,7 @@ PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
   pilot_seconds_[f][(size_t)k] = r.seconds;
   runs_[f][n] = std::move(r.density);
   if (k < 2) PetscFunctionReturn(0);
-  // the family's last three pilot records, oldest first: its pilot at n0 precedes the other families' (the
-  // records of a family are not adjacent)
+  // the family's last three pilot records, oldest first
   std::vector<size_t> mine;
   for (size_t q = pilots_.size(); q-- > 0 && mine.size() < 3;)
     if (pilots_[q].family == (int)f) mine.insert(mine.begin(), q);
@@ -134,32 +133,52 @@ PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
 // cost more than the cheapest candidate already known to meet the target: then the family cannot lower the
 // whole cost (those pilots alone exceed what the known candidate costs). Counting only pilot k, the compact
 // families' pilots at 2 n0 on Lax-Liu 6 (0.45 s each) ran beside a candidate of 0.65 s, and their pilots at 4 n0
-// (3.5 s each) were then pruned, the first ones' cost wasted. A pilot's cost: from a loaded cost model, else the
-// family's previous pilot times the median ratio measured between the same levels on the families completed.
+// (3.5 s each) were then pruned, the first ones' cost wasted. A pilot's cost: from a loaded cost model, else
+// the family's previous pilot (at n0: its probe) times the ratio measured between the same levels
+// (pilotRatio).
 bool ModelChooser::pilotTooDear(size_t f, int k, const std::vector<size_t>& completed) {
   if (set_.target_error <= 0 || completed.empty()) return false;
   buildTable();
   CandidateRow best;
   choose(std::vector<bool>(table_.size(), false), &best);
   if (best.n == 0) return false;
-  double pilots = 0.0, pilot = pilot_seconds_[f][(size_t)k - 1];
+  double pilots = 0.0, pilot = k > 0 ? pilot_seconds_[f][(size_t)k - 1] : firstPilotSeconds(f, completed);
   for (int j = k; j <= std::max(k, 2); ++j) {
-    if (cost_.loaded()) {
+    if (cost_.loaded())
       pilot = cost_.predict(families_[f].name, (double)(set_.n0 << j));
-    } else {
-      std::vector<double> ratios; // families that ran level j; else this family's own last ratio (none
-                                  // before its pilot at 2 n0: 1, a lower bound of the cost)
-      for (size_t g : completed)
-        if (pilot_seconds_[g][(size_t)j] > 0)
-          ratios.push_back(pilot_seconds_[g][(size_t)j] / pilot_seconds_[g][(size_t)j - 1]);
-      if (ratios.empty())
-        ratios.push_back(k >= 2 ? pilot_seconds_[f][(size_t)k - 1] / pilot_seconds_[f][(size_t)k - 2] : 1.0);
-      std::sort(ratios.begin(), ratios.end());
-      pilot *= ratios[ratios.size() / 2];
-    }
+    else if (j > 0)
+      pilot *= pilotRatio(f, j, k, completed);
     pilots += pilot;
   }
   return pilots > best.cost;
+}
+
+// The predicted seconds of family f's pilot at n0: its probe's seconds per step times the steps the completed
+// families' pilots took at n0 (the median; the steps follow the CFL condition, nearly the same for every
+// scheme). 0 (never too dear) without a probe.
+double ModelChooser::firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const {
+  if (!(probe_per_step_[f] > 0)) return 0.0;
+  std::vector<double> steps;
+  for (const RunRecord& r : pilots_)
+    if (r.n == set_.n0 && !r.failed &&
+        std::find(completed.begin(), completed.end(), (size_t)r.family) != completed.end())
+      steps.push_back((double)r.steps);
+  if (steps.empty()) return 0.0;
+  std::sort(steps.begin(), steps.end());
+  return probe_per_step_[f] * steps[steps.size() / 2];
+}
+
+// The ratio of the cost of pilot j to pilot j - 1: the median over the completed families that ran level j;
+// else family f's own last ratio (none before its pilot at 2 n0: 1, a lower bound of the cost).
+double ModelChooser::pilotRatio(size_t f, int j, int k, const std::vector<size_t>& completed) const {
+  std::vector<double> ratios;
+  for (size_t g : completed)
+    if (pilot_seconds_[g][(size_t)j] > 0)
+      ratios.push_back(pilot_seconds_[g][(size_t)j] / pilot_seconds_[g][(size_t)j - 1]);
+  if (ratios.empty())
+    ratios.push_back(k >= 2 ? pilot_seconds_[f][(size_t)k - 1] / pilot_seconds_[f][(size_t)k - 2] : 1.0);
+  std::sort(ratios.begin(), ratios.end());
+  return ratios[ratios.size() / 2];
 }
 
 // After pilots up to level k - 1: whether the family needs pilot k, its order not yet observed in the asymptotic
@@ -170,8 +189,25 @@ bool ModelChooser::preAsymptotic(size_t f, int k) const {
          !(o.valid && o.p_observed >= kAsymptoticOrder);
 }
 
-// Pilots at n0 for every family, then, cheapest family first, its pilots at 2 n0 and 4 n0 and its timing runs,
-// unless a pilot is too dear (pilotTooDear: the family is left out).
+// A probe of family f (a timing run at n0, unless a cost model was loaded): its seconds per step order the
+// families and predict its first pilot (firstPilotSeconds). A probe that fails leaves the family out.
+PetscErrorCode ModelChooser::runProbe(const Runner& runner, size_t f) {
+  RunResult r;
+  PetscFunctionBeginUser;
+  if (cost_.loaded()) PetscFunctionReturn(0);
+  PetscCall(runner(families_[f], set_.n0, RunKind::timing, &r));
+  if (recordFailure(f, set_.n0, r, &timings_)) PetscFunctionReturn(0);
+  cost_.add(families_[f].name, {(double)set_.n0, r.seconds, (double)r.steps, false});
+  timings_.push_back({(int)f, set_.n0, r.seconds, r.steps, NAN, NAN});
+  probe_per_step_[f] = r.steps > 0 ? r.seconds / (double)r.steps : NAN;
+  PetscFunctionReturn(0);
+}
+
+// Families cheapest first (by their probes or the loaded cost model), each through its pilots at n0, 2 n0 and
+// 4 n0 (more while its order is pre-asymptotic) and its timing runs, unless its pilots still needed are too
+// dear (pilotTooDear: the family is left out; before its first pilot, when a cheaper family already has a
+// candidate meeting the target for less than they would cost: at loose targets the compact schemes' pilots
+// at n0 alone cost 3-5x the whole cheapest run on Sod).
 PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   PetscFunctionBeginUser;
   const size_t nf = families_.size();
@@ -179,24 +215,25 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   runs_.assign(nf, {});
   failures_.assign(nf, "");
   pilot_seconds_.assign(nf, std::array<double, kMaxPilotLevels>{});
-  for (size_t f = 0; f < nf; ++f) PetscCall(runPilot(runner, f, 0));
+  probe_per_step_.assign(nf, NAN);
+  for (size_t f = 0; f < nf; ++f) PetscCall(runProbe(runner, f));
   std::vector<size_t> order(nf), completed;
   for (size_t f = 0; f < nf; ++f) order[f] = f;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return cost_.loaded() ? cost_.predict(families_[a].name, (double)set_.n0) <
-                                cost_.predict(families_[b].name, (double)set_.n0)
-                          : pilot_seconds_[a][0] < pilot_seconds_[b][0];
-  });
+  const auto key = [&](size_t f) { // a failed probe (NaN) last: the sort needs a strict weak order
+    const double v = cost_.loaded() ? cost_.predict(families_[f].name, (double)set_.n0) : probe_per_step_[f];
+    return std::isnan(v) ? INFINITY : v;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
   for (size_t f : order) {
     bool pruned = false;
-    for (int k = 1; !pruned && failures_[f].empty() && (k <= 2 || preAsymptotic(f, k)); ++k) {
+    for (int k = 0; !pruned && failures_[f].empty() && (k <= 2 || preAsymptotic(f, k)); ++k) {
       pruned = pilotTooDear(f, k, completed);
       if (!pruned) PetscCall(runPilot(runner, f, k));
     }
     if (!failures_[f].empty()) continue;
     if (pruned) {
       orders_[f] = ObservedOrder();
-      orders_[f].why = "left out: its next pilot would cost more than a candidate already meeting the target";
+      orders_[f].why = "left out: its pilots would cost more than a candidate already meeting the target";
       continue;
     }
     PetscCall(runTimings(runner, f));
@@ -236,14 +273,59 @@ PetscErrorCode ModelChooser::runTimings(const Runner& runner, size_t f) {
   if (cost_.loaded()) PetscFunctionReturn(0);
   long long previous = 0;
   for (long long n : {set_.n0 << 3, set_.n0 << 5}) {
-    RunResult r;
     n = std::min(n, set_.n_max);
     if (n <= set_.n0 << 2 || n == previous || timingTooDear(f, n)) continue;
     previous = n;
-    PetscCall(runner(families_[f], n, RunKind::timing, &r));
-    if (recordFailure(f, n, r, &timings_)) break;
-    cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
-    timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
+    PetscCall(timeAt(runner, f, n));
+    if (!failures_[f].empty()) break;
+  }
+  PetscFunctionReturn(0);
+}
+
+// A timing run of family f at n into the cost model (a failure leaves the family out).
+PetscErrorCode ModelChooser::timeAt(const Runner& runner, size_t f, long long n) {
+  RunResult r;
+  PetscFunctionBeginUser;
+  PetscCall(runner(families_[f], n, RunKind::timing, &r));
+  if (recordFailure(f, n, r, &timings_)) PetscFunctionReturn(0);
+  cost_.add(families_[f].name, {(double)n, r.seconds, (double)r.steps, false});
+  timings_.push_back({(int)f, n, r.seconds, r.steps, NAN, NAN});
+  PetscFunctionReturn(0);
+}
+
+long long ModelChooser::finestTimed(size_t f) const {
+  long long n = 0;
+  for (const std::vector<RunRecord>* t : {&pilots_, &timings_})
+    for (const RunRecord& r : *t)
+      if (r.family == (int)f && !r.failed) n = std::max(n, r.n);
+  return n;
+}
+
+// Before the final run of candidate *c (error target, cost model timed here): every family whose cheapest
+// candidate meeting the target is predicted within kNearCost of *c's cost and lies above the family's finest
+// timed run is timed there (kTimingSteps steps: ~0.1% of such a final run in 1D), and the
+// choice is made again, until no near candidate is left untimed. The cost laws are fitted to runs up to 32 n0
+// and extrapolate past them; on Sod muscl2 and weno5 cost the same per step at 1024 cells and weno5 18% less at
+// 3444 (measured), so at 3e-4 the extrapolation took muscl2 n = 3456 where weno5 n = 3456 costs 1.4 s, not 1.7.
+PetscErrorCode ModelChooser::timeNearChoice(const Runner& runner, const std::vector<bool>& done,
+                                            CandidateRow* c) {
+  PetscFunctionBeginUser;
+  if (cost_.loaded() || set_.target_error <= 0) PetscFunctionReturn(0);
+  for (size_t round = 0; c->n != 0 && round < families_.size(); ++round) {
+    bool timed = false;
+    for (size_t g = 0; g < families_.size(); ++g) {
+      CandidateRow best;
+      for (size_t i = 0; i < table_.size(); ++i)
+        if (!done[i] && table_[i].family == (int)g && feasible(table_[i]) &&
+            (best.n == 0 || table_[i].cost < best.cost))
+          best = table_[i];
+      if (best.n == 0 || !(best.cost <= kNearCost * c->cost) || best.n <= finestTimed(g)) continue;
+      PetscCall(timeAt(runner, g, best.n));
+      timed = true;
+    }
+    if (!timed) break;
+    buildTable();
+    PetscCall(choose(done, c));
   }
   PetscFunctionReturn(0);
 }
@@ -461,6 +543,8 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
   buildTable();
   std::vector<bool> done(table_.size(), false);
   PetscCall(choose(done, &c));
+  if (c.n == 0) PetscCall(explainUnreachable());
+  PetscCall(timeNearChoice(runner, done, &c));
   if (c.n == 0) PetscCall(explainUnreachable());
   for (int escalation = 0;; ++escalation) {
     PetscCall(runFinal(runner, c));

@@ -5,13 +5,16 @@
 //      order 1, atMostFirstOrderWithJumps; an order below kAsymptoticOrder adds pilot levels 8 n0, 16 n0,
 //      refitting each time) and, unless a cost model was loaded, short timing runs (kTimingSteps steps) at
 //      8 n0 and 32 n0 (at most n_max; a timing run predicted to cost more than the family's pilots is left
-//      out): with the pilots' timings, the cost model (cost_model.hpp). Families go cheapest first (by their
-//      n0 pilot); with an error target, a family whose pilots still needed for its fit are predicted to cost
-//      more than a candidate already known to meet the target is left out (it cannot lower the whole cost),
+//      out): with the pilots' timings, the cost model (cost_model.hpp). Families go cheapest first, by a probe
+//      (a timing run at n0) or the loaded cost model, one family's pilots after the other's; with an error
+//      target, a family whose pilots still needed for its fit (from n0 on) are predicted to cost more than a
+//      candidate already known to meet the target is left out (it cannot lower the whole cost),
 //   2. tabulates every candidate (family x resolution ladderN(n0, per_octave, k) up to n_max) with its
 //      predicted cost and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone,
-//      the most accurate one predicted to finish within the time left), runs it through the caller's runner,
+//      the most accurate one predicted to finish within the time left; with an error target, after timing runs
+//      at the candidates near its cost that lie beyond their family's timed runs, timeNearChoice), runs it
+//      through the caller's runner,
 //   4. checks its own estimate: the final run at n against the finest earlier run b <= n/2 of its family and
 //      the finest run a <= b/2: the order observed again from a, b, n (fitObservedOrder, at most 1 as above),
 //      or without a the pair estimate with the order so far (ratios of 2 or more: closer runs of a flow with
@@ -73,6 +76,11 @@ constexpr double kCheckGap = 2.1;
 // predicted to meet the target or, of the missed family, to improve on it (escalationCandidate): a ladder whose
 // runs together cost at most 4/3 of its last one.
 constexpr double kEscalationGrowth = 4.0;
+
+// Before a final run, a family whose best candidate is predicted within this factor of the choice's cost and
+// lies above the family's finest timed run is timed at that candidate (timeNearChoice): its cost there is
+// measured instead of extrapolated.
+constexpr double kNearCost = 1.5;
 
 enum class RunKind { pilot, timing, check, final };
 struct RunResult {
@@ -156,10 +164,16 @@ public:
 private:
   PetscErrorCode runPilots(const Runner& runner);
   PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
+  PetscErrorCode runProbe(const Runner& runner, size_t f);
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
+  double firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const;
+  double pilotRatio(size_t f, int j, int k, const std::vector<size_t>& completed) const;
   bool preAsymptotic(size_t f, int k) const;
   bool timingTooDear(size_t f, long long n) const;
   PetscErrorCode runTimings(const Runner& runner, size_t f);
+  PetscErrorCode timeNearChoice(const Runner& runner, const std::vector<bool>& done, CandidateRow* c);
+  PetscErrorCode timeAt(const Runner& runner, size_t f, long long n);
+  long long finestTimed(size_t f) const;
   bool recordFailure(size_t f, long long n, const RunResult& r, std::vector<RunRecord>* into);
   PetscErrorCode explainAllFailed() const;
   void buildTable();
@@ -182,6 +196,7 @@ private:
   std::vector<ObservedOrder> orders_;
   std::vector<std::map<long long, GridField>> runs_; // per family: the density of every run so far, by n
   std::vector<std::array<double, kMaxPilotLevels>> pilot_seconds_; // per family: its pilots' seconds by level
+  std::vector<double> probe_per_step_; // per family: seconds per step of its probe at n0 (NaN: none)
   std::vector<CandidateRow> table_;
   std::vector<RunRecord> pilots_, finals_, timings_, checks_;
   std::vector<std::string> failures_;

@@ -39,9 +39,14 @@ def check_group(path, target):
         check(not missing, f"/model_choice complete (missing: {missing})")
         fams = g.attrs["families"].split(",")
         per = [int((g["pilots/family"][:] == i).sum()) for i in range(len(fams))]
+        probes = [int(((g["timings/family"][:] == i) & (g["timings/n"][:] == g["pilots/n"][:].min())).sum())
+                  for i in range(len(fams))]
         chosen = int(g.attrs["chosen_family"])
-        check(all(1 <= k <= 3 for k in per) and per[chosen] == 3,
-              f"pilots per family {per}: every family at n0, the chosen one ({fams[chosen]}) at n0, 2 n0, 4 n0")
+        probe = 0 if g.attrs["cost_model"] != "pilots" else 1  # a loaded cost model (-cost_model): no probes
+        check(all(0 <= k <= 3 for k in per) and per[chosen] == 3 and all(k == probe for k in probes),
+              f"pilots per family {per}, probes at n0 {probes}: a probe of every family ({probe}: "
+              f"cost model {g.attrs['cost_model']}), the chosen one ({fams[chosen]}) piloted at n0, 2 n0, 4 n0 "
+              f"(a family left out before its pilots has none)")
         full = [i for i, k in enumerate(per) if k == 3]  # families piloted to 4 n0: costed and estimated
         rows = [i for i, fam in enumerate(g["candidates/family"][:]) if fam in full]
         cost, err = g["candidates/predicted_cost"][:], g["candidates/predicted_error"][:]
@@ -121,9 +126,11 @@ def failing_scheme():
                   f"{np_} rank(s): chose {label}, achieved {achieved:.3e} <= 2e-2")
             with h5py.File(out, "r") as f:
                 g = f["model_choice"]
-                failed = [(int(a), int(n)) for a, n, x in zip(g["pilots/family"][:], g["pilots/n"][:],
-                                                               g["pilots/failed"][:]) if x]
-                check(failed == [(0, 32)], f"failed pilots (family, n) {failed}: enopade6's first only")
+                failed = [(int(a), int(n)) for t in ("pilots", "timings") for a, n, x in
+                          zip(g[f"{t}/family"][:], g[f"{t}/n"][:], g[f"{t}/failed"][:]) if x]
+                # 1 rank: enopade6's probe (a timing run at n0) fails; 2 ranks (cost model loaded, no probes):
+                # its first pilot
+                check(failed == [(0, 32)], f"failed runs (family, n) {failed}: enopade6's first only")
                 check("invalid rho" in g.attrs["failure_enopade6"] and g.attrs["failure_muscl2"] == "",
                       "failure attributes")
 

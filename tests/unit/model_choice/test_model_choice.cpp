@@ -183,9 +183,10 @@ PetscErrorCode syntheticRun(long long n, double cost_factor, RunResult* r) {
 }
 } // namespace
 
-// A family whose run fails (a non-physical state) is left out, whether it fails in its first pilot or in its
-// final run: the other family is chosen and meets the target, the failures are recorded.
-TEST(Chooser, LeavesOutAFamilyWhosePilotFails) {
+// A family whose run fails (a non-physical state) is left out, whether it fails in its probe (the first run, a
+// timing run at n0) or in its final run: the other family is chosen and meets the target, the failures are
+// recorded.
+TEST(Chooser, LeavesOutAFamilyWhoseFirstRunFails) {
   Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
     if (f.name == "cheap_but_fails") {
       r->failed = true, r->failure = "invalid rho";
@@ -201,11 +202,58 @@ TEST(Chooser, LeavesOutAFamilyWhosePilotFails) {
   EXPECT_EQ(c.chosen().family, 1);
   EXPECT_EQ(c.failures()[0], "N = 32: invalid rho");
   EXPECT_TRUE(c.failures()[1].empty());
-  ASSERT_GE(c.pilots().size(), 1u);
-  EXPECT_TRUE(c.pilots()[0].failed);
-  for (const RunRecord& r : c.pilots())
-    EXPECT_TRUE(r.family == 1 || r.n == 32); // no further pilot of family 0
+  ASSERT_GE(c.timings().size(), 1u);
+  EXPECT_TRUE(c.timings()[0].failed);
+  EXPECT_EQ(c.timings()[0].family, 0);
+  for (const RunRecord& r : c.pilots()) EXPECT_EQ(r.family, 1); // no pilot of family 0
   EXPECT_NE(c.summary().find("cheap_but_fails left out"), std::string::npos);
+}
+
+// Families go cheapest first by their probes (a timing run at n0), and a family whose pilots from n0 on are
+// predicted to cost more than a candidate already known to meet the target is left out before its first pilot:
+// "dear" (50x the cost per run, the same errors) has its probe and no pilot at 1e-2; "cheap" is chosen and meets
+// it.
+TEST(Chooser, LeavesOutADearFamilyBeforeItsFirstPilot) {
+  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    return syntheticRun(n, f.name == "dear" ? 50.0 : 1.0, r);
+  };
+  ChooserSettings s;
+  s.target_error = 1e-2, s.n0 = 32, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"dear", {}}, {"cheap", {}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  EXPECT_TRUE(c.met()) << c.summary();
+  EXPECT_EQ(c.chosen().family, 1);
+  for (const RunRecord& r : c.pilots()) EXPECT_EQ(r.family, 1); // no pilot of "dear"
+  int probes = 0;
+  for (const RunRecord& r : c.timings()) probes += r.family == 0 && r.n == 32;
+  EXPECT_EQ(probes, 1);
+  EXPECT_NE(c.orders()[0].why.find("left out"), std::string::npos);
+  // at 1e-3 cheap's candidate (n >= 1273, over 1.6 s) costs more than dear's pilots (50 x 21504e-6 s = 1.1 s),
+  // so dear is piloted
+  s.target_error = 1e-3;
+  ModelChooser d(PETSC_COMM_WORLD, {{"dear", {}}, {"cheap", {}}}, s, CostModel());
+  ASSERT_EQ(d.run(runner), 0);
+  int dear_pilots = 0;
+  for (const RunRecord& r : d.pilots()) dear_pilots += r.family == 0;
+  EXPECT_EQ(dear_pilots, 3);
+}
+
+// The cost laws are fitted to runs up to 32 n0 = 512 here; "a" costs 0.9x "b" there and 1.8x above 600 cells
+// (as muscl2 against weno5 on Sod beyond 1024 cells, less so). Extrapolated, "a" n = 1448 is the cheaper
+// candidate for 1e-3; timed there before the final run (timeNearChoice), "b" at the same n is chosen.
+TEST(Chooser, TimesTheCandidatesNearTheChoiceBeyondTheTimedRuns) {
+  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    return syntheticRun(n, f.name == "a" ? (n > 600 ? 1.8 : 0.9) : 1.0, r);
+  };
+  ChooserSettings s;
+  s.target_error = 1e-3, s.n0 = 16, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"a", {}}, {"b", {}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  EXPECT_TRUE(c.met()) << c.summary();
+  EXPECT_EQ(c.chosen().family, 1) << c.summary();
+  int timed_at_choice = 0;
+  for (const RunRecord& r : c.timings()) timed_at_choice += r.n == c.chosen().n;
+  EXPECT_EQ(timed_at_choice, 2); // both families, at the candidate's n
 }
 
 // Pilots on a plateau (error 0.4/n + a term that decays slowly, as n^-0.25, up to n = 96 and as n^-4 beyond):
