@@ -545,6 +545,9 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
   PetscCall(choose(done, &c));
   if (c.n == 0) PetscCall(explainUnreachable());
   PetscCall(timeNearChoice(runner, done, &c));
+  if (c.n == 0 &&
+      std::none_of(failures_.begin(), failures_.end(), [](const std::string& w) { return w.empty(); }))
+    PetscCall(explainAllFailed()); // a timing run at the candidate failed, and no family is left
   if (c.n == 0) PetscCall(explainUnreachable());
   for (int escalation = 0;; ++escalation) {
     PetscCall(runFinal(runner, c));

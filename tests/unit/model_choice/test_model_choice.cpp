@@ -256,6 +256,36 @@ TEST(Chooser, TimesTheCandidatesNearTheChoiceBeyondTheTimedRuns) {
   EXPECT_EQ(timed_at_choice, 2); // both families, at the candidate's n
 }
 
+// A timing run at the candidate (timeNearChoice) that fails leaves its family out like any failed run: "a"
+// (cheaper) fails above 600 cells, "b" is chosen and meets the target; with "a" alone, the error names the
+// failure.
+TEST(Chooser, LeavesOutAFamilyWhoseTimingAtTheCandidateFails) {
+  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    if (f.name == "a" && n > 600) {
+      r->failed = true, r->failure = "invalid rho";
+      return 0;
+    }
+    return syntheticRun(n, f.name == "a" ? 0.9 : 1.0, r);
+  };
+  ChooserSettings s;
+  s.target_error = 1e-3, s.n0 = 16, s.n_max = 8192;
+  ModelChooser c(PETSC_COMM_WORLD, {{"a", {}}, {"b", {}}}, s, CostModel());
+  ASSERT_EQ(c.run(runner), 0);
+  EXPECT_TRUE(c.met()) << c.summary();
+  EXPECT_EQ(c.chosen().family, 1);
+  EXPECT_NE(c.failures()[0].find("invalid rho"), std::string::npos);
+  EXPECT_TRUE(c.finals().size() == 1 && !c.finals()[0].failed); // found before any final run
+  ModelChooser alone(PETSC_COMM_WORLD, {{"a", {}}}, s, CostModel());
+  ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), 0);
+  const PetscErrorCode ierr = alone.run(runner);
+  ASSERT_EQ(PetscPopErrorHandler(), 0);
+  EXPECT_EQ(ierr, PETSC_ERR_NOT_CONVERGED);
+  char* specific = nullptr;
+  ASSERT_EQ(PetscErrorMessage(ierr, nullptr, &specific), 0);
+  ASSERT_NE(specific, nullptr);
+  EXPECT_NE(std::string(specific).find("every candidate family failed: a N = "), std::string::npos) << specific;
+}
+
 // Pilots on a plateau (error 0.4/n + a term that decays slowly, as n^-0.25, up to n = 96 and as n^-4 beyond):
 // the pilots at 16..64 observe p = 0.7 and a small constant, the chosen run (n = 609) is past the plateau, and
 // its difference to the 64-cell pilot, the plateau's error, made its estimate miss the target (an escalation to
