@@ -283,7 +283,8 @@ TEST(Chooser, LeavesOutAFamilyWhoseTimingAtTheCandidateFails) {
   char* specific = nullptr;
   ASSERT_EQ(PetscErrorMessage(ierr, nullptr, &specific), 0);
   ASSERT_NE(specific, nullptr);
-  EXPECT_NE(std::string(specific).find("every candidate family failed: a N = "), std::string::npos) << specific;
+  EXPECT_NE(std::string(specific).find("every candidate family failed: a N = "), std::string::npos)
+      << specific;
 }
 
 // Pilots on a plateau (error 0.4/n + a term that decays slowly, as n^-0.25, up to n = 96 and as n^-4 beyond):
