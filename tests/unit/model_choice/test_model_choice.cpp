@@ -12,6 +12,8 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 using namespace suite::model_choice;
 
@@ -181,19 +183,36 @@ PetscErrorCode syntheticRun(long long n, double cost_factor, RunResult* r) {
   r->seconds = cost_factor * 1e-6 * (double)n * (double)n;
   return 0;
 }
+
+// Synthetic runs of every family, family `name` at `cost_factor` times the others' cost and failing with `why`
+// for the runs fails(n, kind) selects.
+Runner failingRuns(const std::string& name, double cost_factor, std::function<bool(long long, RunKind)> fails,
+                   const std::string& why) {
+  return [=](const Family& f, long long n, RunKind kind, RunResult* r) -> PetscErrorCode {
+    if (f.name == name && fails(n, kind)) {
+      r->failed = true, r->failure = why;
+      return 0;
+    }
+    return syntheticRun(n, f.name == name ? cost_factor : 1.0, r);
+  };
+}
+
+// A chooser between the families named (no options), target E, pilots from n0, candidates up to 8192.
+ModelChooser chooserOf(std::vector<std::string> names, double target, long long n0) {
+  ChooserSettings s;
+  s.target_error = target, s.n0 = n0, s.n_max = 8192;
+  std::vector<Family> fams;
+  for (const std::string& n : names) fams.push_back({n, {}});
+  return ModelChooser(PETSC_COMM_WORLD, fams, s, CostModel());
+}
 } // namespace
 
 // A family whose run fails (a non-physical state) is left out, whether it fails in its probe (the first run, a
 // timing run at n0) or in its final run: the other family is chosen and meets the target, the failures are
 // recorded.
 TEST(Chooser, LeavesOutAFamilyWhoseFirstRunFails) {
-  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
-    if (f.name == "cheap_but_fails") {
-      r->failed = true, r->failure = "invalid rho";
-      return 0;
-    }
-    return syntheticRun(n, 1.0, r);
-  };
+  const Runner runner = failingRuns(
+      "cheap_but_fails", 1.0, [](long long, RunKind) { return true; }, "invalid rho");
   ChooserSettings s;
   s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
   ModelChooser c(PETSC_COMM_WORLD, {{"cheap_but_fails", {}}, {"works", {}}}, s, CostModel());
@@ -217,9 +236,7 @@ TEST(Chooser, LeavesOutADearFamilyBeforeItsFirstPilot) {
   Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
     return syntheticRun(n, f.name == "dear" ? 50.0 : 1.0, r);
   };
-  ChooserSettings s;
-  s.target_error = 1e-2, s.n0 = 32, s.n_max = 8192;
-  ModelChooser c(PETSC_COMM_WORLD, {{"dear", {}}, {"cheap", {}}}, s, CostModel());
+  ModelChooser c = chooserOf({"dear", "cheap"}, 1e-2, 32);
   ASSERT_EQ(c.run(runner), 0);
   EXPECT_TRUE(c.met()) << c.summary();
   EXPECT_EQ(c.chosen().family, 1);
@@ -230,8 +247,7 @@ TEST(Chooser, LeavesOutADearFamilyBeforeItsFirstPilot) {
   EXPECT_NE(c.orders()[0].why.find("left out"), std::string::npos);
   // at 1e-3 cheap's candidate (n >= 1273, over 1.6 s) costs more than dear's pilots (50 x 21504e-6 s = 1.1 s),
   // so dear is piloted
-  s.target_error = 1e-3;
-  ModelChooser d(PETSC_COMM_WORLD, {{"dear", {}}, {"cheap", {}}}, s, CostModel());
+  ModelChooser d = chooserOf({"dear", "cheap"}, 1e-3, 32);
   ASSERT_EQ(d.run(runner), 0);
   int dear_pilots = 0;
   for (const RunRecord& r : d.pilots()) dear_pilots += r.family == 0;
@@ -260,22 +276,15 @@ TEST(Chooser, TimesTheCandidatesNearTheChoiceBeyondTheTimedRuns) {
 // (cheaper) fails above 600 cells, "b" is chosen and meets the target; with "a" alone, the error names the
 // failure.
 TEST(Chooser, LeavesOutAFamilyWhoseTimingAtTheCandidateFails) {
-  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
-    if (f.name == "a" && n > 600) {
-      r->failed = true, r->failure = "invalid rho";
-      return 0;
-    }
-    return syntheticRun(n, f.name == "a" ? 0.9 : 1.0, r);
-  };
-  ChooserSettings s;
-  s.target_error = 1e-3, s.n0 = 16, s.n_max = 8192;
-  ModelChooser c(PETSC_COMM_WORLD, {{"a", {}}, {"b", {}}}, s, CostModel());
+  const Runner runner = failingRuns(
+      "a", 0.9, [](long long n, RunKind) { return n > 600; }, "invalid rho");
+  ModelChooser c = chooserOf({"a", "b"}, 1e-3, 16);
   ASSERT_EQ(c.run(runner), 0);
   EXPECT_TRUE(c.met()) << c.summary();
   EXPECT_EQ(c.chosen().family, 1);
   EXPECT_NE(c.failures()[0].find("invalid rho"), std::string::npos);
   EXPECT_TRUE(c.finals().size() == 1 && !c.finals()[0].failed); // found before any final run
-  ModelChooser alone(PETSC_COMM_WORLD, {{"a", {}}}, s, CostModel());
+  ModelChooser alone = chooserOf({"a"}, 1e-3, 16);
   ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), 0);
   const PetscErrorCode ierr = alone.run(runner);
   ASSERT_EQ(PetscPopErrorHandler(), 0);
@@ -342,13 +351,8 @@ TEST(Chooser, PilotRecordsCarryTheirOwnFamilysEstimate) {
 TEST(Chooser, EscalatesPastAFinalRunThatFails) {
   // "cheap" is 4x cheaper per run than "dear" with the same errors, so it is chosen first; its final run (above
   // the pilots' resolutions) fails, and the escalation runs "dear" instead.
-  Runner runner = [&](const Family& f, long long n, RunKind kind, RunResult* r) -> PetscErrorCode {
-    if (f.name == "cheap" && kind == RunKind::final) {
-      r->failed = true, r->failure = "step failed";
-      return 0;
-    }
-    return syntheticRun(n, f.name == "cheap" ? 0.25 : 1.0, r);
-  };
+  const Runner runner = failingRuns(
+      "cheap", 0.25, [](long long, RunKind kind) { return kind == RunKind::final; }, "step failed");
   ChooserSettings s;
   s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
   ModelChooser c(PETSC_COMM_WORLD, {{"cheap", {}}, {"dear", {}}}, s, CostModel());
