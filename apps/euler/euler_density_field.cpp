@@ -37,16 +37,9 @@ PetscErrorCode EulerRun::densityField(suite::model_choice::GridField* g) const {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode EulerRun::solveSeconds(double* seconds) const {
+PetscErrorCode EulerRun::solveSeconds(double* seconds, bool after_first_step) const {
   PetscFunctionBeginUser;
-  *seconds = cpu_solve_;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seconds, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode EulerRun::solveSecondsAfterFirstStep(double* seconds) const {
-  PetscFunctionBeginUser;
-  *seconds = cpu_solve_ - cpu_first_step_;
+  *seconds = cpu_solve_ - (after_first_step ? cpu_first_step_ : 0.0);
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, seconds, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
   PetscFunctionReturn(0);
 }

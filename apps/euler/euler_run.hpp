@@ -53,9 +53,8 @@ public:
   void setQuiet(bool q) { quiet_ = q; }
   const Options& options() const { return opt_; }
   PetscErrorCode densityField(suite::model_choice::GridField* g) const;
-  PetscErrorCode solveSeconds(double* seconds) const;
-  // The same without the first step (steady per-step cost: the first step touches the work arrays first).
-  PetscErrorCode solveSecondsAfterFirstStep(double* seconds) const;
+  // after_first_step: without the first step (the steady cost: the first step touches the work arrays first)
+  PetscErrorCode solveSeconds(double* seconds, bool after_first_step = false) const;
   PetscInt steps() const { return step_; }
   double finalTime() const { return time_; }
   double l1DensityError() const { return err_.have ? err_.l1[0] : NAN; }

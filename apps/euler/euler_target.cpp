@@ -192,15 +192,11 @@ PetscErrorCode runCandidate(const suite::RunContext& ctx, int dim, const PetscIn
       "or a signal)",
       f.name.c_str(), n, run.finalTime(), t_final);
   if (kind != mc::RunKind::timing) PetscCall(run.densityField(&r->density));
-  if (kind == mc::RunKind::timing && run.steps() > 1) {
-    // the steady cost per step: the first step touches the work arrays first and costs as much as 2-4 later
-    // ones (weno5 at 1024 cells: 0.52 ms against 0.13 ms), which made weno5's 3 timed steps 2x too dear
-    PetscCall(run.solveSecondsAfterFirstStep(&r->seconds));
-    r->steps = run.steps() - 1;
-  } else {
-    PetscCall(run.solveSeconds(&r->seconds));
-    r->steps = run.steps();
-  }
+  // a timing run's steady cost per step: its first step touches the work arrays first and costs as much as 2-4
+  // later ones (weno5 at 1024 cells: 0.52 ms against 0.13 ms), which made weno5's 3 timed steps 2x too dear
+  const bool steady = kind == mc::RunKind::timing && run.steps() > 1;
+  PetscCall(run.solveSeconds(&r->seconds, steady));
+  r->steps = run.steps() - (steady ? 1 : 0);
   if (kind == mc::RunKind::final) *exact_l1 = run.l1DensityError();
   PetscCall(so.restore());
   PetscFunctionReturn(0);

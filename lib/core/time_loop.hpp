@@ -52,8 +52,8 @@ struct LoopSummary {
   std::string failure;     // the app's message
   double wall = 0.0;       // seconds in the loop (wall, MPI_Wtime)
   double cpu = 0.0;        // this process's CPU seconds in the loop
-  double cpu_first =
-      0.0; // of which the first step's (work arrays touched for the first time: a few steps' worth)
+  // of cpu, the first step's (it touches the work arrays for the first time: a few steps' worth)
+  double cpu_first = 0.0;
   PetscInt stepsTaken() const { return steps - first_step; }
 };
 

@@ -157,7 +157,8 @@ bool ModelChooser::pilotTooDear(size_t f, int k, const std::vector<size_t>& comp
 // families' pilots took at n0 (the median; the steps follow the CFL condition, nearly the same for every
 // scheme). 0 (never too dear) without a probe.
 double ModelChooser::firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const {
-  if (!(probe_per_step_[f] > 0)) return 0.0;
+  const double per_step = probePerStep(f);
+  if (!(per_step > 0)) return 0.0;
   std::vector<double> steps;
   for (const RunRecord& r : pilots_)
     if (r.n == set_.n0 && !r.failed &&
@@ -165,7 +166,7 @@ double ModelChooser::firstPilotSeconds(size_t f, const std::vector<size_t>& comp
       steps.push_back((double)r.steps);
   if (steps.empty()) return 0.0;
   std::sort(steps.begin(), steps.end());
-  return probe_per_step_[f] * steps[steps.size() / 2];
+  return per_step * steps[steps.size() / 2];
 }
 
 // The ratio of the cost of pilot j to pilot j - 1: the median over the completed families that ran level j;
@@ -192,15 +193,20 @@ bool ModelChooser::preAsymptotic(size_t f, int k) const {
 // A probe of family f (a timing run at n0, unless a cost model was loaded): its seconds per step order the
 // families and predict its first pilot (firstPilotSeconds). A probe that fails leaves the family out.
 PetscErrorCode ModelChooser::runProbe(const Runner& runner, size_t f) {
-  RunResult r;
   PetscFunctionBeginUser;
-  if (cost_.loaded()) PetscFunctionReturn(0);
-  PetscCall(runner(families_[f], set_.n0, RunKind::timing, &r));
-  if (recordFailure(f, set_.n0, r, &timings_)) PetscFunctionReturn(0);
-  cost_.add(families_[f].name, {(double)set_.n0, r.seconds, (double)r.steps, false});
-  timings_.push_back({(int)f, set_.n0, r.seconds, r.steps, NAN, NAN});
-  probe_per_step_[f] = r.steps > 0 ? r.seconds / (double)r.steps : NAN;
+  if (!cost_.loaded()) PetscCall(timeAt(runner, f, set_.n0));
   PetscFunctionReturn(0);
+}
+
+// Seconds per step of family f's probe (its timing run at n0); NaN without one.
+double ModelChooser::probePerStep(size_t f) const {
+  for (const RunRecord& r : timings_)
+    if (r.family == (int)f && r.n == set_.n0 && !r.failed && r.steps > 0) return r.seconds / (double)r.steps;
+  return NAN;
+}
+
+bool ModelChooser::allFailed() const {
+  return std::none_of(failures_.begin(), failures_.end(), [](const std::string& w) { return w.empty(); });
 }
 
 // Families cheapest first (by their probes or the loaded cost model), each through its pilots at n0, 2 n0 and
@@ -215,12 +221,11 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   runs_.assign(nf, {});
   failures_.assign(nf, "");
   pilot_seconds_.assign(nf, std::array<double, kMaxPilotLevels>{});
-  probe_per_step_.assign(nf, NAN);
   for (size_t f = 0; f < nf; ++f) PetscCall(runProbe(runner, f));
   std::vector<size_t> order(nf), completed;
   for (size_t f = 0; f < nf; ++f) order[f] = f;
   const auto key = [&](size_t f) { // a failed probe (NaN) last: the sort needs a strict weak order
-    const double v = cost_.loaded() ? cost_.predict(families_[f].name, (double)set_.n0) : probe_per_step_[f];
+    const double v = cost_.loaded() ? cost_.predict(families_[f].name, (double)set_.n0) : probePerStep(f);
     return std::isnan(v) ? INFINITY : v;
   };
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
@@ -239,9 +244,7 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
     PetscCall(runTimings(runner, f));
     if (failures_[f].empty()) completed.push_back(f);
   }
-  if (completed.empty() &&
-      std::none_of(failures_.begin(), failures_.end(), [](const std::string& w) { return w.empty(); }))
-    PetscCall(explainAllFailed());
+  if (completed.empty() && allFailed()) PetscCall(explainAllFailed());
   std::vector<std::string> names;
   for (size_t f : completed) names.push_back(families_[f].name);
   PetscCall(cost_.checkCovers(comm_, names));
@@ -545,9 +548,7 @@ PetscErrorCode ModelChooser::run(const Runner& runner) {
   PetscCall(choose(done, &c));
   if (c.n == 0) PetscCall(explainUnreachable());
   PetscCall(timeNearChoice(runner, done, &c));
-  if (c.n == 0 &&
-      std::none_of(failures_.begin(), failures_.end(), [](const std::string& w) { return w.empty(); }))
-    PetscCall(explainAllFailed()); // a timing run at the candidate failed, and no family is left
+  if (c.n == 0 && allFailed()) PetscCall(explainAllFailed()); // a timing run at the candidate failed them all
   if (c.n == 0) PetscCall(explainUnreachable());
   for (int escalation = 0;; ++escalation) {
     PetscCall(runFinal(runner, c));

@@ -165,6 +165,8 @@ private:
   PetscErrorCode runPilots(const Runner& runner);
   PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
   PetscErrorCode runProbe(const Runner& runner, size_t f);
+  double probePerStep(size_t f) const;
+  bool allFailed() const; // every family has failed
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
   double firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const;
   double pilotRatio(size_t f, int j, int k, const std::vector<size_t>& completed) const;
@@ -196,7 +198,6 @@ private:
   std::vector<ObservedOrder> orders_;
   std::vector<std::map<long long, GridField>> runs_; // per family: the density of every run so far, by n
   std::vector<std::array<double, kMaxPilotLevels>> pilot_seconds_; // per family: its pilots' seconds by level
-  std::vector<double> probe_per_step_; // per family: seconds per step of its probe at n0 (NaN: none)
   std::vector<CandidateRow> table_;
   std::vector<RunRecord> pilots_, finals_, timings_, checks_;
   std::vector<std::string> failures_;

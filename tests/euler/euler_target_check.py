@@ -111,8 +111,9 @@ def vortex_3d():
 
 def failing_scheme():
     """LeBlanc without the positivity limiter: enopade6 stops at step 1 (negative density), muscl2 runs. The
-    target run leaves enopade6 out (its failed pilot recorded) and meets the target with muscl2, at 1 and 2 ranks
-    (the 2-rank run loads its cost model from the 1-rank file, whose failed pilot it must skip)."""
+    target run leaves enopade6 out (its failed first run recorded: the probe at 1 rank, the first pilot at 2
+    ranks) and meets the target with muscl2, at 1 and 2 ranks (the 2-rank run loads its cost model from the
+    1-rank file, whose failed probe it must skip)."""
     deck = os.path.join(ROOT, "inputs", "euler", "extreme_leblanc.yaml")
     with tempfile.TemporaryDirectory() as tmp:
         for np_ in (1, 2):
