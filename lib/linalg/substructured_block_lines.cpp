@@ -360,7 +360,10 @@ void SubstructuredBlockLines::secondPass(const Shape& s, int l0, int batch, cons
 }
 
 // One rank, open lines: block Thomas (lineSolve) and the residual of every line, four lines at a time where
-// NR = 1 (blockThomasLanes, bitwise the one-line solves; a rejected pivot sends its four lines one by one).
+// NR = 1 (blockThomasLanes, bitwise the one-line solves; a rejected pivot sends its four lines one by one). A
+// remainder of two or three lines goes through the four lanes too, the spare lanes repeating its first line
+// into scratch: the two systems of a 1D line (its left- and right-biased rows) then cost about one
+// (measured: Sod N = 2048, enopade6, lineSolve<3,1> was 25% of the run).
 template <int BS, int NR, class Rows>
 void SubstructuredBlockLines::plainSweeps(const Shape& s, const Rows& rows, double* x, std::size_t xstride) {
   const auto one = [&](int l) {
@@ -373,15 +376,17 @@ void SubstructuredBlockLines::plainSweeps(const Shape& s, const Rows& rows, doub
   };
   int l = 0;
   if constexpr (laned<BS, NR>())
-    for (; l + kThomasLanes <= s.nlines; l += kThomasLanes) {
+    for (; s.nlines - l >= 2; l += kThomasLanes) {
+      const int real = std::min(kThomasLanes, s.nlines - l); // lanes k >= real: spares
+      spare_.resize(real < kThomasLanes ? (size_t)s.count * BS * s.nrhs : 0);
       LaneLine q[kThomasLanes];
       for (int k = 0; k < kThomasLanes; ++k) {
-        const LineRows L = rows(l + k);
-        q[k] = {L.A, L.B, L.C, L.d, L.ms, x + (l + k) * xstride};
+        const LineRows L = rows(k < real ? l + k : l);
+        q[k] = {L.A, L.B, L.C, L.d, L.ms, k < real ? x + (l + k) * xstride : spare_.data()};
       }
       const bool ok = blockThomasLanes(BS, s.n, q, laneWork(BS, s.n));
       stats_.lane_batches += ok;
-      for (int k = 0; k < kThomasLanes; ++k)
+      for (int k = 0; k < real; ++k)
         if (ok)
           lineResidual<BS, NR>(s.n, s.nrhs, rows(l + k), false, false, nullptr, nullptr, q[k].x,
                                &res_[2 * (size_t)(l + k)]);

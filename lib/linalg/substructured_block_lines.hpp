@@ -109,6 +109,7 @@ private:
   };
   std::vector<LaneQuad> lanes_;    // work of the four-line block Thomas (block_thomas_lanes.hpp)
   std::vector<double> neighbours_; // pass 2: the values beyond the ends (xl, xr) of up to four lines
+  std::vector<double> spare_;      // the solution of a spare lane (plainSweeps)
 };
 
 } // namespace suite::linalg

@@ -292,53 +292,91 @@ TEST(SubstructuredBlockLines, BandAndWoodburyReducedSolve) {
     }
 }
 
+namespace {
+// nlines open lines of n rows of bs x bs blocks (this rank's rows): diagonal blocks holding their largest
+// entries off the diagonal (row exchanges in most pivot steps, differing from lane to lane); line far's first
+// diagonal block is zero (far >= nlines: none).
+struct LaneLines {
+  std::vector<double> A, B, C, d;
+};
+LaneLines laneLines(int bs, int n, int nlines, int far, std::mt19937_64& gen) {
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  const int bb = bs * bs;
+  LaneLines L{
+      std::vector<double>((size_t)nlines * n * bb), {}, {}, std::vector<double>((size_t)nlines * n * bs)};
+  L.B = L.A, L.C = L.A;
+  for (int l = 0; l < nlines; ++l)
+    for (int i = 0; i < n; ++i) {
+      const size_t row = ((size_t)l * n + i) * bb;
+      const int shift = 1 + (int)((l + i) % (bs - 1)); // column of row a holding its large entry: a + shift
+      for (int a = 0; a < bs; ++a)
+        for (int b = 0; b < bs; ++b) {
+          L.A[row + a * bs + b] = 0.3 * U(gen), L.C[row + a * bs + b] = 0.3 * U(gen);
+          L.B[row + a * bs + b] =
+              (b == (a + shift) % bs ? 4.0 : 0.5) * U(gen) + (b == (a + shift) % bs ? 4.0 : 0.0);
+        }
+      if (l == far && i == 0)
+        for (int e = 0; e < bb; ++e) L.B[row + e] = 0.0;
+    }
+  for (double& v : L.d) v = U(gen);
+  return L;
+}
+
+// Solves the lines together (*all) and one by one (*one); asserts each line's solution bitwise the same.
+void expectLanesBitwiseAlone(int bs, int n, int nlines, const LaneLines& L,
+                             suite::linalg::SubstructuredBlockLines* all,
+                             suite::linalg::SubstructuredBlockLines* one) {
+  const int bb = bs * bs;
+  std::vector<double> x_all(L.d.size()), x_one(L.d.size());
+  all->solve(PETSC_COMM_WORLD, bs, nlines, n, L.A.data(), L.B.data(), L.C.data(), L.d.data(), false, 0, n,
+             x_all.data());
+  for (int l = 0; l < nlines; ++l) {
+    const size_t r = (size_t)l * n * bb, v = (size_t)l * n * bs;
+    one->solve(PETSC_COMM_WORLD, bs, 1, n, L.A.data() + r, L.B.data() + r, L.C.data() + r, L.d.data() + v,
+               false, 0, n, x_one.data() + v);
+  }
+  for (size_t k = 0; k < L.d.size(); ++k)
+    ASSERT_EQ(x_all[k], x_one[k]) << "bs " << bs << ", line " << k / ((size_t)n * bs) << ", entry " << k;
+}
+} // namespace
+
 // Open lines are solved four at a time, one per SIMD lane (block_thomas_lanes.hpp): on one rank the whole line,
 // on several the second pass of each rank's rows with the neighbour values moved to the right-hand side. Each
-// line's solution must be bitwise the one it gets solved alone. The diagonal blocks hold their largest entries
-// off the diagonal (row exchanges in most pivot steps, differing from lane to lane), and one batch holds a line
-// whose first diagonal block on every rank is zero (the lanes give up, the four lines go one by one, that one
-// to the fallback).
+// line's solution must be bitwise the one it gets solved alone. One batch holds a line whose first diagonal
+// block on every rank is zero (the lanes give up, the four lines go one by one, that one to the fallback).
 TEST(SubstructuredBlockLines, FourLinesAtOnceAreBitwiseEachLineAlone) {
-  int rank = 0;
+  int rank = 0, P = 1;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &P);
   std::mt19937_64 gen(7 + rank); // this rank's rows of the lines
-  std::uniform_real_distribution<double> U(-1.0, 1.0);
   for (int bs = 3; bs <= 5; ++bs) {
-    const int n = 7, nlines = 9, bb = bs * bs, far = 5;
-    std::vector<double> A((size_t)nlines * n * bb), B(A.size()), C(A.size()), d((size_t)nlines * n * bs);
-    for (int l = 0; l < nlines; ++l)
-      for (int i = 0; i < n; ++i) {
-        const size_t row = ((size_t)l * n + i) * bb;
-        const int shift = 1 + (int)((l + i) % (bs - 1)); // column of row a holding its large entry: a + shift
-        for (int a = 0; a < bs; ++a)
-          for (int b = 0; b < bs; ++b) {
-            A[row + a * bs + b] = 0.3 * U(gen), C[row + a * bs + b] = 0.3 * U(gen);
-            B[row + a * bs + b] =
-                (b == (a + shift) % bs ? 4.0 : 0.5) * U(gen) + (b == (a + shift) % bs ? 4.0 : 0.0);
-          }
-        if (l == far && i == 0)
-          for (int e = 0; e < bb; ++e) B[row + e] = 0.0;
-      }
-    for (double& v : d) v = U(gen);
+    const int n = 7, nlines = 9, far = 5;
     suite::linalg::SubstructuredBlockLines all, one;
-    std::vector<double> x_all(d.size()), x_one(d.size());
-    all.solve(PETSC_COMM_WORLD, bs, nlines, n, A.data(), B.data(), C.data(), d.data(), false, 0, n,
-              x_all.data());
-    for (int l = 0; l < nlines; ++l) {
-      const size_t r = (size_t)l * n * bb, v = (size_t)l * n * bs;
-      one.solve(PETSC_COMM_WORLD, bs, 1, n, A.data() + r, B.data() + r, C.data() + r, d.data() + v, false, 0,
-                n, x_one.data() + v);
-    }
-    for (size_t k = 0; k < d.size(); ++k)
-      ASSERT_EQ(x_all[k], x_one[k]) << "bs " << bs << ", line " << k / ((size_t)n * bs) << ", entry " << k;
+    expectLanesBitwiseAlone(bs, n, nlines, laneLines(bs, n, nlines, far, gen), &all, &one);
     EXPECT_EQ(all.stats().fallbacks, 1) << "bs " << bs << ": the line with a zero diagonal block";
     // Lines 0-3 went four at a time (on one rank the sweep; on several pass 1 and pass 2), lines 4-7 did not
     // (line 5's pivot), line 8 is alone; solved alone, no line went four at a time.
-    int P = 1;
-    MPI_Comm_size(PETSC_COMM_WORLD, &P);
     EXPECT_EQ(all.stats().lane_batches, P == 1 ? 1 : 2) << "bs " << bs;
     EXPECT_EQ(one.stats().lane_batches, 0) << "bs " << bs;
   }
+}
+
+// On one rank two or three lines (a 1D line's two systems) go through the four lanes too, the spare lanes
+// repeating the first line: still bitwise each line alone, and one lane batch. On several ranks (the passes
+// take full batches only) they go one by one.
+TEST(SubstructuredBlockLines, TwoOrThreeLinesShareTheFourLanes) {
+  int rank = 0, P = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &P);
+  std::mt19937_64 gen(11 + rank);
+  for (int bs = 3; bs <= 5; ++bs)
+    for (int nlines : {2, 3, 6}) { // 6: a full batch, then two lines
+      const int n = 9;
+      suite::linalg::SubstructuredBlockLines all, one;
+      expectLanesBitwiseAlone(bs, n, nlines, laneLines(bs, n, nlines, nlines, gen), &all, &one);
+      EXPECT_EQ(all.stats().lane_batches, P == 1 ? (nlines + 3) / 4 : 2 * (nlines / 4))
+          << "bs " << bs << ", " << nlines << " lines";
+    }
 }
 
 TEST(SubstructuredBlockLines, RejectsBadArguments) {
