@@ -44,16 +44,18 @@ template <class T> SUITE_ROW_INLINE void weno5Smoothness(const T* v, T beta[3]) 
   beta[2] = 13.0 / 12.0 * t2 * t2 + 0.25 * s2 * s2;
 }
 
-// WENO-Z weights (p = 2) for the linear weights d[3] from the indicators beta of v.
-template <class T>
+// WENO-Z weights with exponent P (2: the CRWENO5 rows; 1: the upwind part of the ENO-Pade row) for the linear
+// weights d[3] from the indicators beta of v.
+template <int P = 2, class T>
 SUITE_ROW_INLINE void wenoZWeightsFromBeta(const T* v, const T beta[3], const double d[3], T w[3]) {
+  static_assert(P == 1 || P == 2, "WENO-Z exponent 1 or 2");
   const T tau = absOf(beta[0] - beta[2]);
   const T eps =
       kWenoEpsAbs + kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
   T sum = T{} + 0.0;
   for (int k = 0; k < 3; ++k) {
     const T q = tau / (beta[k] + eps);
-    w[k] = d[k] * (1.0 + q * q);
+    w[k] = d[k] * (1.0 + (P == 1 ? q : q * q));
     sum += w[k];
   }
   for (int k = 0; k < 3; ++k) w[k] /= sum;
@@ -118,7 +120,7 @@ template <class T> SUITE_ROW_INLINE RowOf<T> enoPadeBlendRow(const T* v) {
   cu6WeightsFromBeta(v, beta, w);
   const RowOf<T> cu6 = cu6RowFromWeights(v, w);
   const T one = T{} + 1.0, r3 = w[3] / kCu6Optimal[3], s = r3 < one ? r3 : one, theta = s * s;
-  wenoZWeightsFromBeta(v, beta, kCrweno5Optimal, w5); // the CRWENO5-Z row on the same indicators
+  wenoZWeightsFromBeta<1>(v, beta, kCrweno5Optimal, w5); // the CRWENO5-Z row (p = 1) on the same indicators
   const RowOf<T> up = crweno5RowFromWeights(v, w5);
   const T u = 1.0 - theta;
   const RowOf<T> blend = {theta * cu6.a + u * up.a, theta * cu6.b + u * up.b, theta * cu6.c + u * up.c,

@@ -3,6 +3,7 @@
 #include "euler/direction_sweep.hpp"
 
 #include "core/error_handler.hpp"
+#include "euler/crweno5.hpp"
 #include "euler/enopade6.hpp"
 #include "euler/line_rows.hpp"
 #include "euler/rf_char.hpp"
@@ -234,36 +235,68 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
 // The interior shock rows of the faces batch_ of a block line (lineCompactRows, characteristic rows): per face
 // its Roe eigensystem and projected stencils (as splitRows), the rows of all of them in one call of the
 // scheme's batched row function (compact_rows_batch.hpp: bitwise its RowFunction's), then the block rows
-// (writeSplitRow). Stencil lane (2 j + s) NV + c: face batch_[j], f+ (s = 0) or mirrored f- (s = 1), field c.
+// (writeSplitRow). Stencil lane (2 j + s) NV + c: face j of the call, f+ (s = 0) or mirrored f- (s = 1), field
+// c. With rf-char, the hybrid's faces where every field is upwinded the same way (supersonicFace) take
+// crweno5's CRWENO5-Z rows instead (a second call).
 template <int NV>
 void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool unsplit,
                                           CompactLineRows out) {
-  const int nb = (int)batch_.size(), lanes = 2 * NV * nb;
+  const int nb = (int)batch_.size();
   eig_.resize(nb);
+  for (int j = 0; j < nb; ++j) eig_[j] = roeEigen<NV>(q + batch_[j], rs_.data() + batch_[j], opt_.gamma);
+  const bool upwind_supersonic = scheme_->hybrid && rfChar();
+  for (int pass = 0; pass < (upwind_supersonic ? 2 : 1); ++pass) {
+    faces_.clear(); // indices j into batch_ of this call's faces
+    for (int j = 0; j < nb; ++j)
+      if (!upwind_supersonic || supersonicFace(q + batch_[j], eig_[j]) == (pass == 1)) faces_.push_back(j);
+    if (!faces_.empty()) splitRowsCall(q, pass == 1 ? batchedRows(crweno5Row) : rows_fn, unsplit, out);
+  }
+}
+
+// Whether rf-char upwinds every field of the face between cells 2 and 3 of the stencil qs the same way (the
+// signs of u - c and u + c at both cells and of the face's Roe speeds e all agree: a supersonic face). There
+// every characteristic wave runs downstream, and the central CU6 part of the ENO-Pade row, whose downwind
+// candidate reaches against all of them, carries the errors that the near-vacuum rarefactions' start-up
+// leaves in their supersonic parts (docs/euler_extremes.md: L1(rho) 0.5-0.7% above crweno5 on the four
+// near-vacuum cases until session 23); the row is crweno5's there.
+template <int NV>
+bool DirectionSweep<NV>::supersonicFace(const V* qs, const typename LineGas<NV>::Eigen& e) const {
+  using RF = RfChar<NV>;
+  double a[NV], b[NV], roe[NV];
+  RF::cellSpeeds(qs[2], opt_.gamma, a);
+  RF::cellSpeeds(qs[3], opt_.gamma, b);
+  RF::roeSpeeds(e, roe);
+  const int slow = RF::sign(a[0], roe[0], b[0]), fast = RF::sign(a[NV - 1], roe[NV - 1], b[NV - 1]);
+  return slow != 0 && slow == fast;
+}
+
+// The rows of the faces faces_ (indices into batch_, eigensystems eig_) by one call of rows_fn.
+template <int NV>
+void DirectionSweep<NV>::splitRowsCall(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out) {
+  const int nb = (int)faces_.size(), lanes = 2 * NV * nb;
   stencil_.resize((size_t)6 * lanes);
   brow_.resize((size_t)4 * lanes);
-  for (int j = 0; j < nb; ++j) {
-    const int k = batch_[j];
-    eig_[j] = roeEigen<NV>(q + k, rs_.data() + k, opt_.gamma);
+  for (int i = 0; i < nb; ++i) {
+    const int j = faces_[i], k = batch_[j];
     double wp[NV][6], wm[NV][6];
     projectStencils<NV>(q + k, f_.data() + k, alpha_[k], &eig_[j], unsplit, wp, wm);
     for (int c = 0; c < NV; ++c)
       for (int m = 0; m < 6; ++m) {
-        stencil_[(size_t)m * lanes + 2 * NV * j + c] = wp[c][m];
-        stencil_[(size_t)m * lanes + (2 * j + 1) * NV + c] = wm[c][5 - m]; // mirrorRow's stencil
+        stencil_[(size_t)m * lanes + 2 * NV * i + c] = wp[c][m];
+        stencil_[(size_t)m * lanes + (2 * i + 1) * NV + c] = wm[c][5 - m]; // mirrorRow's stencil
       }
   }
   rows_fn(lanes, stencil_.data(), brow_.data());
-  for (int j = 0; j < nb; ++j) {
+  for (int i = 0; i < nb; ++i) {
     Row rows[2][NV];
     for (int s = 0; s < 2; ++s)
       for (int c = 0; c < NV; ++c) {
-        const size_t i = (size_t)(2 * j + s) * NV + c;
-        const double a = brow_[i], c3 = brow_[2 * (size_t)lanes + i];
-        rows[s][c] = {s == 0 ? a : c3, brow_[(size_t)lanes + i], s == 0 ? c3 : a,
-                      brow_[3 * (size_t)lanes + i]};
+        const size_t l = (size_t)(2 * i + s) * NV + c;
+        const double a = brow_[l], c3 = brow_[2 * (size_t)lanes + l];
+        rows[s][c] = {s == 0 ? a : c3, brow_[(size_t)lanes + l], s == 0 ? c3 : a,
+                      brow_[3 * (size_t)lanes + l]};
       }
-    writeSplitRow<NV>(eig_[j], rows, true, batch_[j], out);
+    writeSplitRow<NV>(eig_[faces_[i]], rows, true, batch_[faces_[i]], out);
   }
 }
 

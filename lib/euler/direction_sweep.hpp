@@ -117,6 +117,8 @@ private:
   void lineCompactRows(const V* q, long long n, long long xs, int xm, int nown, bool periodic, double alpha,
                        const char* shocks, CompactLineRows out);
   void batchedSplitRows(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out);
+  bool supersonicFace(const V* qs, const typename LineGas<NV>::Eigen& e) const;
+  void splitRowsCall(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out);
   // Steps of linesFaceFluxes for compact schemes.
   void markBlockLines(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm, int nown,
                       bool periodic);
@@ -148,6 +150,7 @@ private:
   std::vector<std::array<double, NV>> lam_;      // its cells' rf-char speeds (RfChar::cellSpeeds)
   std::vector<int> batch_;                       // its faces whose rows go through batchedSplitRows
   std::vector<typename LineGas<NV>::Eigen> eig_; // their Roe eigensystems
+  std::vector<int> faces_;                       // the faces (indices into batch_) of one splitRowsCall
   std::vector<double> stencil_, brow_;           // their stencils and rows (structure of arrays)
   std::vector<int> flag_, blocks_;
   std::vector<char> shock_; // per line and owned row: ENO-Pade shock row

@@ -84,7 +84,9 @@ def ranks():
     3D explosion (ENO-Pade; also in 1 MiB block-line batches), 3D Taylor-Green (WENO5). Lines split over ranks are
     transposed (default -line_solve transpose: bitwise the 1-rank result, also for 2048-cell lines moved in
     1 MiB batches of 31 lines at 2 ranks) or solved in place (-line_solve substructured: round-off, amplified by
-    the nonlinear weights of enopade6's shocked lines to up to 2.9e-12 after 25 steps of lax_liu_4: bound 1e-11)."""
+    the nonlinear weights of enopade6's shocked lines: 1.0e-11 after 8 steps of the 3D explosion at 4 ranks since
+    its WENO-Z weights take p = 1 (session 23; 5.7e-13 with p = 2), 2.9e-12 after 25 steps of lax_liu_4 before:
+    bound 1e-10)."""
     cases = [["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25],
              ["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25, "-line_solve",
               "substructured"],
@@ -109,7 +111,7 @@ def ranks():
                 res[np_] = fields(path)
             for np_ in (2, 4):
                 v = max_rel_diff(res[1], res[np_])
-                bound = 1e-11 if "substructured" in c else 1e-12
+                bound = 1e-10 if "substructured" in c else 1e-12
                 check(v <= bound, f"{' '.join(map(str, c))}: 1 vs {np_} ranks max relative difference {v:.3e} "
                       f"<= {bound}")
 
