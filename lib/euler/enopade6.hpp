@@ -6,21 +6,23 @@
 // ENO-type compact rows); hybrid switch as in Pirozzoli, J. Comput. Phys. 178 (2002) 81 and Ren, Liu & Zhang,
 // J. Comput. Phys. 192 (2003) 365; Hu, Wang & Adams, J. Comput. Phys. 229 (2010) 8952 (central-upwind WENO).
 //
-// Variant implemented (and why): a line-wise hybrid. A line (a row of cells along the sweep direction, over all
-// its ranks) where the sensor below finds no shock row is a Pade line: central, so f+ + f- = f, the smooth-flow
-// scheme is the dissipation-free sixth-order Pade scheme and its solve is one scalar tridiagonal system per
-// component. A line with a shock row anywhere gets the ENO-Pade row (crweno_cu6.hpp) on every interior row,
-// characteristic-wise and upwinded per field by the sign of its Roe speed (rf-char, rf_char.hpp): a
-// central-upwind compact WENO row whose smooth limit is this Pade row, blended into the CRWENO5-Z row
-// (Ghosh & Baeder 2012) where its downwind candidate is rejected. Why not the former row-wise switch (Pade
-// rows, CRWENO5-Z rows on the flagged rows only): the Pade rows between and next to the flagged rows carry
-// the grid-scale waves that the shocks and contacts shed, undamped and at spurious group velocities
-// (upstream into a supersonic inflow on the Mach 100 case), and the switch between a central and an upwind
-// row is abrupt; with every row of a shocked line nonlinear, the weights damp those waves where they arise
-// and reach the Pade weights where the data are smooth. Measured (issue #18 item 3, HyPar's Sod / Lax
-// settings, docs/euler_extremes.md): L1(rho) Sod N = 200 / 800 2.401e-3 / 7.16e-4 -> 1.859e-3 / 5.47e-4, Lax
-// 8.74e-3 / 2.07e-3 -> 7.03e-3 / 1.71e-3, all at or below HyPar's CRWENO5; at or below this suite's crweno5
-// on 12 of the 16 1D battery cases (the others within 0.6%).
+// Variant implemented (and why): a line-wise hybrid. A line (a row of cells along the sweep direction, over
+// all its ranks) where the sensor below finds no shock row is a Pade line: central, so f+ + f- = f, the
+// smooth-flow scheme is the dissipation-free sixth-order Pade scheme and its solve is one scalar tridiagonal
+// system per component. A line with a shock row anywhere gets the ENO-Pade row (crweno_cu6.hpp) on every
+// interior row, characteristic-wise and upwinded per field by the sign of its Roe speed (rf-char,
+// rf_char.hpp): a central-upwind compact WENO row whose smooth limit is this Pade row, blended into the
+// CRWENO5-Z row (Ghosh & Baeder 2012) where its downwind candidate is rejected; at a face where rf-char
+// upwinds every field the same way (supersonic), crweno5's CRWENO5-Z row (DirectionSweep::supersonicFace:
+// every wave runs downstream there, and the central part kept the near-vacuum rarefactions' start-up errors).
+// Why not the former row-wise switch (Pade rows, CRWENO5-Z rows on the flagged rows only): the Pade rows
+// between and next to the flagged rows carry the grid-scale waves that the shocks and contacts shed, undamped
+// and at spurious group velocities (upstream into a supersonic inflow on the Mach 100 case), and the switch
+// between a central and an upwind row is abrupt; with every row of a shocked line nonlinear, the weights damp
+// those waves where they arise and reach the Pade weights where the data are smooth. Measured (issue #18 item
+// 3, HyPar's Sod / Lax settings, docs/euler_extremes.md): L1(rho) Sod N = 200 / 800 2.401e-3 / 7.16e-4 ->
+// 1.765e-3 / 4.92e-4, Lax 8.74e-3 / 2.07e-3 -> 6.26e-3 / 1.48e-3, all 5-19% below HyPar's CRWENO5; at or
+// below this suite's crweno5 on all 16 1D battery cases (ratios 0.80-0.99).
 // Boundary closure (non-periodic lines): the first and last interface of the line use the explicit
 // sixth-order central formula (f_{j-2} - 8 f_{j-1} + 37 f_j + 37 f_{j+1} - 8 f_{j+2} + f_{j+3})/60 on ghost
 // cells (shock rows: explicit WENO5-Z), so the closure is sixth (fifth) order given ghost values of that

@@ -9,6 +9,7 @@
 //    discontinuities: WENO5 L1(rho) Sod N = 200 2.46e-3 -> 2.22e-3 (HyPar's WENO5 2.39e-3), Lax 8.94e-3 ->
 //    7.81e-3; order 5.3 at critical points here (scale-relative epsilon). Without the positivity limiter it
 //    fails LeBlanc at -cfl 0.4 (p = 2 completes); the limiter is on by default and covers it.
+//  - the upwind part of enopade6's ENO-Pade row: p = 1 (crweno_cu6.hpp).
 //  - CRWENO5 rows (wenoZWeights): p = 2 (Don & Borges, J. Comput. Phys. 250 (2013) 347). p = 1 lowers
 //    crweno5's errors below HyPar's too (Sod 200 1.90e-3 -> 1.72e-3), but its weights then pass round-off
 //    differences on to the tridiagonal systems: with -line_solve substructured (not bitwise across ranks)
