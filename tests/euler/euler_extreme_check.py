@@ -138,7 +138,8 @@ def enopade6_vs_crweno5():
     N = 200, the decks' settings) enopade6's L1(rho) is at or below crweno5's. Measured (session 23): ratios
     0.80-0.99, the closest the near-vacuum rarefactions (near_vacuum_left 0.992, initial_vacuum_right 0.992,
     near_vacuum_shock_tube 0.989, leblanc 0.986); before the supersonic faces took crweno5's rows those four
-    were 0.5-0.7% above."""
+    were 0.5-0.7% above. At 1 rank only: at 2 and 3 ranks pressure_1e10 flips (1.29, 1.38), the compact schemes'
+    round-off-dependent noise in its cold gas (docs/euler_extremes.md, "Open: the compact schemes' precursor")."""
     decks = sorted(glob.glob(os.path.join(SRC, "inputs", "euler", "extreme_*.yaml")))
     decks = [d for d in decks if re.search(r"^error: true", open(d).read(), re.M)]
     check(len(decks) == 16, f"{len(decks)} 1D battery decks with an exact solution (16)")
