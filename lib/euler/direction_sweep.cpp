@@ -244,12 +244,14 @@ void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool
   const int nb = (int)batch_.size();
   eig_.resize(nb);
   for (int j = 0; j < nb; ++j) eig_[j] = roeEigen<NV>(q + batch_[j], rs_.data() + batch_[j], opt_.gamma);
-  const bool upwind_supersonic = scheme_->hybrid && rfChar();
-  for (int pass = 0; pass < (upwind_supersonic ? 2 : 1); ++pass) {
+  supersonic_.assign(nb, 0); // per face: 1 when its rows are crweno5's
+  if (scheme_->hybrid && rfChar())
+    for (int j = 0; j < nb; ++j) supersonic_[j] = supersonicFace(q + batch_[j], eig_[j]);
+  for (char pass : {0, 1}) {
     faces_.clear(); // indices j into batch_ of this call's faces
     for (int j = 0; j < nb; ++j)
-      if (!upwind_supersonic || supersonicFace(q + batch_[j], eig_[j]) == (pass == 1)) faces_.push_back(j);
-    if (!faces_.empty()) splitRowsCall(q, pass == 1 ? batchedRows(crweno5Row) : rows_fn, unsplit, out);
+      if (supersonic_[j] == pass) faces_.push_back(j);
+    if (!faces_.empty()) splitRowsCall(q, pass ? batchedRows(crweno5Row) : rows_fn, unsplit, out);
   }
 }
 

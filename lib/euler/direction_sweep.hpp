@@ -151,6 +151,7 @@ private:
   std::vector<int> batch_;                       // its faces whose rows go through batchedSplitRows
   std::vector<typename LineGas<NV>::Eigen> eig_; // their Roe eigensystems
   std::vector<int> faces_;                       // the faces (indices into batch_) of one splitRowsCall
+  std::vector<char> supersonic_;                 // per face of batch_: supersonicFace (its rows crweno5's)
   std::vector<double> stencil_, brow_;           // their stencils and rows (structure of arrays)
   std::vector<int> flag_, blocks_;
   std::vector<char> shock_; // per line and owned row: ENO-Pade shock row

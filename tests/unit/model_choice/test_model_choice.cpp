@@ -213,9 +213,7 @@ ModelChooser chooserOf(std::vector<std::string> names, double target, long long 
 TEST(Chooser, LeavesOutAFamilyWhoseFirstRunFails) {
   const Runner runner = failingRuns(
       "cheap_but_fails", 1.0, [](long long, RunKind) { return true; }, "invalid rho");
-  ChooserSettings s;
-  s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
-  ModelChooser c(PETSC_COMM_WORLD, {{"cheap_but_fails", {}}, {"works", {}}}, s, CostModel());
+  ModelChooser c = chooserOf({"cheap_but_fails", "works"}, 1e-3, 32);
   ASSERT_EQ(c.run(runner), 0);
   EXPECT_TRUE(c.met());
   EXPECT_EQ(c.chosen().family, 1);
@@ -261,9 +259,7 @@ TEST(Chooser, TimesTheCandidatesNearTheChoiceBeyondTheTimedRuns) {
   Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
     return syntheticRun(n, f.name == "a" ? (n > 600 ? 1.8 : 0.9) : 1.0, r);
   };
-  ChooserSettings s;
-  s.target_error = 1e-3, s.n0 = 16, s.n_max = 8192;
-  ModelChooser c(PETSC_COMM_WORLD, {{"a", {}}, {"b", {}}}, s, CostModel());
+  ModelChooser c = chooserOf({"a", "b"}, 1e-3, 16);
   ASSERT_EQ(c.run(runner), 0);
   EXPECT_TRUE(c.met()) << c.summary();
   EXPECT_EQ(c.chosen().family, 1) << c.summary();
@@ -337,9 +333,7 @@ TEST(Chooser, PilotRecordsCarryTheirOwnFamilysEstimate) {
       r->density.values[i] = exact.values[i] + scale(f) * (r->density.values[i] - exact.values[i]);
     return 0;
   };
-  ChooserSettings s;
-  s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
-  ModelChooser c(PETSC_COMM_WORLD, {{"a", {}}, {"b", {}}}, s, CostModel());
+  ModelChooser c = chooserOf({"a", "b"}, 1e-3, 32);
   ASSERT_EQ(c.run(runner), 0);
   ASSERT_EQ(c.pilots().size(), 6u);
   for (const RunRecord& r : c.pilots()) {
@@ -353,9 +347,7 @@ TEST(Chooser, EscalatesPastAFinalRunThatFails) {
   // the pilots' resolutions) fails, and the escalation runs "dear" instead.
   const Runner runner = failingRuns(
       "cheap", 0.25, [](long long, RunKind kind) { return kind == RunKind::final; }, "step failed");
-  ChooserSettings s;
-  s.target_error = 1e-3, s.n0 = 32, s.n_max = 8192;
-  ModelChooser c(PETSC_COMM_WORLD, {{"cheap", {}}, {"dear", {}}}, s, CostModel());
+  ModelChooser c = chooserOf({"cheap", "dear"}, 1e-3, 32);
   ASSERT_EQ(c.run(runner), 0);
   ASSERT_EQ(c.finals().size(), 2u);
   EXPECT_TRUE(c.finals()[0].failed);
