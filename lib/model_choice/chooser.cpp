@@ -198,6 +198,32 @@ PetscErrorCode ModelChooser::runProbe(const Runner& runner, size_t f) {
   PetscFunctionReturn(0);
 }
 
+// A loaded cost model without complete runs of family f at two resolutions: the run that wrote it left f out
+// (its pilots too dear or failed). f is left out here too, named in the summary: its cost is unknown.
+bool ModelChooser::uncosted(size_t f) const {
+  return cost_.loaded() && !cost_.covers(families_[f].name);
+}
+
+std::string ModelChooser::uncostedWhy(size_t f) const {
+  return "-cost_model " + cost_.source() + " has no complete runs of " + families_[f].name +
+         " at two resolutions";
+}
+
+PetscErrorCode ModelChooser::checkLoadedCoversOne() const {
+  std::string names;
+  PetscFunctionBeginUser;
+  for (size_t f = 0; f < families_.size(); ++f) {
+    if (!uncosted(f)) PetscFunctionReturn(0);
+    names += (f ? "," : "") + families_[f].name;
+  }
+  PetscCheck(
+      families_.empty(), comm_, PETSC_ERR_ARG_WRONG,
+      "-cost_model %s has no complete runs at two resolutions of any family asked for (%s): give a file "
+      "whose target run piloted one of them, or drop -cost_model",
+      cost_.source().c_str(), names.c_str());
+  PetscFunctionReturn(0);
+}
+
 // Seconds per step of family f's probe (its timing run at n0); NaN without one.
 double ModelChooser::probePerStep(size_t f) const {
   for (const RunRecord& r : timings_)
@@ -224,12 +250,18 @@ PetscErrorCode ModelChooser::runPilots(const Runner& runner) {
   for (size_t f = 0; f < nf; ++f) PetscCall(runProbe(runner, f));
   std::vector<size_t> order(nf), completed;
   for (size_t f = 0; f < nf; ++f) order[f] = f;
+  PetscCall(checkLoadedCoversOne());
   const auto key = [&](size_t f) { // a failed probe (NaN) last: the sort needs a strict weak order
+    if (uncosted(f)) return (double)INFINITY;
     const double v = cost_.loaded() ? cost_.predict(families_[f].name, (double)set_.n0) : probePerStep(f);
     return std::isnan(v) ? INFINITY : v;
   };
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
   for (size_t f : order) {
+    if (uncosted(f)) {
+      orders_[f].why = "left out: " + uncostedWhy(f);
+      continue;
+    }
     bool pruned = false;
     for (int k = 0; !pruned && failures_[f].empty() && (k <= 2 || preAsymptotic(f, k)); ++k) {
       pruned = pilotTooDear(f, k, completed);
@@ -582,7 +614,10 @@ std::string ModelChooser::summary() const {
       label(most_accurate_.family, most_accurate_.n).c_str(), most_accurate_.cost, most_accurate_.error);
   std::string line = b;
   for (size_t f = 0; f < failures_.size(); ++f)
-    if (!failures_[f].empty()) line += "; " + families_[f].name + " left out: its run at " + failures_[f];
+    if (!failures_[f].empty())
+      line += "; " + families_[f].name + " left out: its run at " + failures_[f];
+    else if (uncosted(f))
+      line += "; " + families_[f].name + " left out: " + uncostedWhy(f);
   return line;
 }
 

@@ -30,6 +30,8 @@
 //      it (escalationCandidate), else the cheapest predicted to meet the target at any cost, the families
 //      without a final run judged by their pilots' fits raised by the worst miss of a final run so far
 //      (fallbackCandidate).
+// With a loaded cost model (-cost_model FILE), a family without complete runs there at two resolutions (the run
+// that wrote FILE left it out) is left out and named in the summary; none covered is an error.
 // A run that fails (RunResult::failed: a non-physical state, a failed step) leaves its family out: its pilots
 // stop, a failed final run is followed by the next candidate (an escalation), and the output records the
 // failure; only when every family fails is it an error. A target run thus never picks a scheme that fails on
@@ -166,6 +168,9 @@ private:
   PetscErrorCode runPilot(const Runner& runner, size_t f, int k);
   PetscErrorCode runProbe(const Runner& runner, size_t f);
   double probePerStep(size_t f) const;
+  bool uncosted(size_t f) const;
+  std::string uncostedWhy(size_t f) const;
+  PetscErrorCode checkLoadedCoversOne() const;
   bool allFailed() const; // every family has failed
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
   double firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const;

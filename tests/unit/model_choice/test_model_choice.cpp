@@ -2,7 +2,9 @@
 // error constant from three runs (any ratios), the pair estimate, the grid transfer (sixth order on smooth
 // data, no overshoot at a jump), the cost law, the chooser on a family whose runs are exact + A n^-p g(x) (and
 // with a family whose pilot or final run fails), and the scoped options of a candidate.
+#include "io/h5_append.hpp"
 #include "model_choice/candidate.hpp"
+#include "model_choice/choice_output.hpp"
 #include "model_choice/chooser.hpp"
 #include "model_choice/cost_model.hpp"
 #include "model_choice/grid_distance.hpp"
@@ -11,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -250,6 +253,42 @@ TEST(Chooser, LeavesOutADearFamilyBeforeItsFirstPilot) {
   int dear_pilots = 0;
   for (const RunRecord& r : d.pilots()) dear_pilots += r.family == 0;
   EXPECT_EQ(dear_pilots, 3);
+}
+
+// A target run's own /model_choice as the cost model of a later run (-cost_model FILE; the 2-rank target test
+// loads the 1-rank file): "dear" was left out before its pilots there, so the file has only its probe. The
+// later run leaves it out too, says why in its summary, and chooses the same candidate; a file that covers no
+// family asked for is an error.
+TEST(Chooser, LoadedCostModelLeavesOutTheFamiliesItDoesNotCover) {
+  Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
+    return syntheticRun(n, f.name == "dear" ? 50.0 : 1.0, r);
+  };
+  ModelChooser first = chooserOf({"dear", "cheap"}, 1e-2, 32);
+  ASSERT_EQ(first.run(runner), 0);
+  const std::string path = ::testing::TempDir() + "loaded_cost_model.h5";
+  suite::H5AppendFile file;
+  file.create(path);
+  file.close();
+  ASSERT_EQ(writeModelChoice(PETSC_COMM_WORLD, path, first), 0);
+  CostModel loaded;
+  ASSERT_EQ(loaded.load(PETSC_COMM_WORLD, path), 0);
+  EXPECT_TRUE(loaded.covers("cheap") && !loaded.covers("dear"));
+  ChooserSettings s = first.settings();
+  ModelChooser second(PETSC_COMM_WORLD, first.families(), s, loaded);
+  ASSERT_EQ(second.run(runner), 0);
+  EXPECT_TRUE(second.met()) << second.summary();
+  EXPECT_EQ(second.chosen().family, first.chosen().family);
+  EXPECT_EQ(second.chosen().n, first.chosen().n);
+  for (const RunRecord& r : second.pilots()) EXPECT_EQ(r.family, 1); // no pilot of "dear"
+  EXPECT_NE(second.orders()[0].why.find("has no complete runs of dear"), std::string::npos);
+  EXPECT_NE(second.summary().find("dear left out: -cost_model " + path), std::string::npos)
+      << second.summary();
+  ModelChooser none(PETSC_COMM_WORLD, {{"dear", {}}}, s, loaded);
+  ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), 0);
+  const PetscErrorCode ierr = none.run(runner);
+  ASSERT_EQ(PetscPopErrorHandler(), 0);
+  EXPECT_EQ(ierr, PETSC_ERR_ARG_WRONG);
+  std::remove(path.c_str());
 }
 
 // The cost laws are fitted to runs up to 32 n0 = 512 here; "a" costs 0.9x "b" there and 1.8x above 600 cells
