@@ -31,12 +31,12 @@ PetscErrorCode EulerRun::reportConservation() {
 
 namespace {
 struct SweepCounts {
-  long long counts[3]; // shock rows, limited faces, exact fallbacks of the line solves
+  long long counts[4]; // shock rows, limited faces, exact fallbacks of the line solves, component-wise faces
   long long solves, lines;
   long long sensor_rows; // rows the ENO-Pade sensor examined
 };
 template <int NV> SweepCounts countsOf(const suite::euler::DirectionSweep<NV>& s) {
-  return {{s.stats().shock_rows, s.stats().limited_faces, s.lineFallbacks()},
+  return {{s.stats().shock_rows, s.stats().limited_faces, s.lineFallbacks(), s.stats().componentwise_faces},
           s.lineSolves(),
           s.linesSolved(),
           s.stats().sensor_rows};
@@ -57,19 +57,21 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
   const double cells = (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * sum.steps, rate = cells / wall_solve_;
   const char* head =
       "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank; "
-      "rank 0 CPU %.3f s); steps retried %lld, shock rows %lld, limited faces %lld";
+      "rank 0 CPU %.3f s); steps retried %lld, shock rows %lld, limited faces %lld, component-wise faces "
+      "%lld";
   if (dim() == 1) { // the line's counts are rank 0's, but for the shock rows (summed)
     const std::string fmt = std::string(head) + ", line solves %lld (exact fallbacks %lld)";
     PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
-                             c.solves, c.counts[2]));
-  } else { // shock rows, limited faces and fallbacks summed over the ranks; the solve calls and lines are rank 0's
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, c.counts, 3, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
+                             c.counts[3], c.solves, c.counts[2]));
+  } else { // shock rows, limited faces, fallbacks and component-wise faces summed over the ranks; the solve calls
+           // and lines are rank 0's
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, c.counts, 4, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
     const std::string fmt =
         std::string(head) + "; rank 0: %lld batched line solves of %lld lines; exact fallbacks %lld";
     PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
-                             c.solves, c.lines, c.counts[2]));
+                             c.counts[3], c.solves, c.lines, c.counts[2]));
   }
   if (!opt_.implicit) PetscFunctionReturn(0);
   PetscInt failures, rejections;

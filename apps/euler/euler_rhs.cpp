@@ -133,7 +133,7 @@ void EulerRun::addGravity(const double* ul, double* f) const {
 
 // amax[d] = max |u_d| + c over the cells this rank owns; false when one of them has a density or pressure that is
 // not > 0 (or not finite).
-template <int NV> bool EulerRun::stageSpeeds(const double* ul, double amax[3]) const {
+template <int NV> bool EulerRun::stageSpeeds(const double* ul, double amax[3], double* flux_scale) const {
   bool ok = true;
   for (PetscInt k = s_[2]; k < s_[2] + m_[2]; ++k)
     for (PetscInt j = s_[1]; j < s_[1] + m_[1]; ++j)
@@ -143,7 +143,11 @@ template <int NV> bool EulerRun::stageSpeeds(const double* ul, double amax[3]) c
         double s[3];
         waveSpeeds(q, dim(), problem_.gamma, s);
         for (int d = 0; d < dim(); ++d) amax[d] = std::max(amax[d], s[d]);
-        ok = ok && q[0] > 0.0 && primitive(q, dim(), problem_.gamma).p > 0.0;
+        const PrimN w = primitive(q, dim(), problem_.gamma);
+        ok = ok && q[0] > 0.0 && w.p > 0.0;
+        double m2 = 0.0; // |m|^2
+        for (int d = 0; d < dim(); ++d) m2 += q[1 + d] * q[1 + d];
+        *flux_scale = std::max(*flux_scale, w.p + m2 / q[0]);
       }
   return ok;
 }
@@ -158,11 +162,13 @@ template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, d
   using V = std::array<double, NV>;
   DirectionSweep<NV>& sweep = sweepOf<NV>();
   PetscFunctionBeginUser;
-  // Max |u_d| + c over the stage state per direction, and speeds[3] = 1 where an explicit stage state has a cell
-  // that is not admissible (one Allreduce): the step is then retried (euler_step.cpp) and no flux is computed.
-  double speeds[4] = {0, 0, 0, 0};
-  if (!stageSpeeds<NV>(ul, speeds) && !opt_.implicit) speeds[3] = 1.0;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, speeds, 4, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
+  // Max |u_d| + c over the stage state per direction, speeds[3] = 1 where an explicit stage state has a cell
+  // that is not admissible, and speeds[4] the largest momentum flux p + rho |u|^2 (the flux scale of
+  // characteristic_conditioning.hpp), in one Allreduce. A rejected stage is retried (euler_step.cpp) and no flux
+  // is computed.
+  double speeds[5] = {0, 0, 0, 0, 0};
+  if (!stageSpeeds<NV>(ul, speeds, &speeds[4]) && !opt_.implicit) speeds[3] = 1.0;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, speeds, 5, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
   const double* amax = speeds;
   if (speeds[3] > 0.0) {
     stage_rejected_ = true;
@@ -186,7 +192,7 @@ template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, d
     if (opt_.positivity) lambda = dim() == 1 ? dt_limiter_ / dx_[0] : dt_limiter_ * cfl_rate / amax[d];
     try {
       sweep.faceFluxes(dim() == 1 ? ctx_.comm() : line_comm_[d], q.data(), nlines, opt_.n[d], s_[d], xm,
-                       periodic_[d], amax[d] * (1.0 + 1e-12), lambda, h.data());
+                       periodic_[d], amax[d] * (1.0 + 1e-12), lambda, speeds[4], h.data());
       addFluxDifferences<NV>(d, h, f);
     } catch (const std::exception& e) {
       // Reduced over the whole grid by rhs(). The other directions still run: their line communicators hold

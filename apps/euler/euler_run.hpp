@@ -82,7 +82,8 @@ private:
   PetscErrorCode totals(Vec U, std::vector<double>* sum) const;
   // right-hand side (euler_rhs.cpp)
   template <int NV> PetscErrorCode rhsImpl(double t, const double* ul, double* f);
-  template <int NV> bool stageSpeeds(const double* ul, double amax[3]) const; // false: a cell not admissible
+  // amax: max |u_d| + c per direction; flux_scale: max p + rho |u|^2. false: a cell not admissible.
+  template <int NV> bool stageSpeeds(const double* ul, double amax[3], double* flux_scale) const;
   long long unattainableFaces() const; // DirectionSweep's count, this rank
   template <int NV>
   void gatherLines(int d, double t, const double* ul, std::vector<std::array<double, NV>>* q);

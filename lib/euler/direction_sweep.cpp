@@ -3,6 +3,7 @@
 #include "euler/direction_sweep.hpp"
 
 #include "core/error_handler.hpp"
+#include "euler/characteristic_conditioning.hpp"
 #include "euler/crweno5.hpp"
 #include "euler/enopade6.hpp"
 #include "euler/line_rows.hpp"
@@ -113,7 +114,8 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
     return;
   }
   if (scheme_->shock_row == weno5Row && scheme_->boundary_shock == weno5Row) { // the same rows, vectorised
-    weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic, opt_.rf_char, g, h);
+    stats_.componentwise_faces += weno5_.faceFluxes(q, xm + 1, alpha, opt_.local_lf, opt_.characteristic,
+                                                    opt_.rf_char, g, stage_flux_scale_, h);
     return;
   }
   prepareLine(q, xm, alpha);
@@ -123,13 +125,16 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
   for (int k = 0; k <= xm; ++k) {
     const bool boundary = boundaryFace(periodic, xs + k, n);
     const RowFunction fn = boundary ? scheme_->boundary_shock : scheme_->shock_row;
+    // a face treated component-wise (illConditioned) is split by Lax-Friedrichs, as with -characteristic false
+    const bool ch = opt_.characteristic && !illConditioned(q + k);
+    stats_.componentwise_faces += opt_.characteristic && !ch;
     typename G::Eigen e;
     Row rows[2][NV];
-    splitRows<NV>(q + k, f_.data() + k, alpha_[k], opt_.characteristic ? rs_.data() + k : nullptr, fn,
-                  opt_.characteristic, g, &e, rows, rfChar());
+    splitRows<NV>(q + k, f_.data() + k, alpha_[k], ch ? rs_.data() + k : nullptr, fn, ch, g, &e, rows,
+                  rfChar() && ch);
     V hc;
     for (int c = 0; c < NV; ++c) hc[c] = rows[0][c].r / rows[0][c].b + rows[1][c].r / rows[1][c].b;
-    if (rfChar()) { // rf-char: the upwind row of l_c f, or the split rows where the sign changes
+    if (rfChar() && ch) { // rf-char: the upwind row of l_c f, or the split rows where the sign changes
       int sgn[NV];
       double ac[NV];
       rfSigns<NV>(lam_.data() + k, e, alpha, opt_.local_lf, sgn, ac);
@@ -142,7 +147,7 @@ void DirectionSweep<NV>::lineExplicit(const V* q, long long n, long long xs, int
         hc[c] = rp.r / rp.b + rm.r / rm.b;
       }
     }
-    h[k] = opt_.characteristic ? G::mul(e.R, hc) : hc;
+    h[k] = ch ? G::mul(e.R, hc) : hc;
   }
 }
 
@@ -225,9 +230,9 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
       padeBlockRow<NV>(qs, fs, a, fn, k, out, unsplit);
     else if (batched && !boundary) // an interior shock row: with the others below
       batch_.push_back(k);
-    else
-      splitCompactRow<NV>(qs, fs, a, roe ? rs_.data() + k : nullptr, fn, opt_.characteristic, opt_.gamma, k,
-                          out, unsplit);
+    else // boundary closures (and scalar lines' rows): component-wise too where illConditioned
+      splitCompactRow<NV>(qs, fs, a, roe ? rs_.data() + k : nullptr, fn,
+                          opt_.characteristic && !illConditioned(qs), opt_.gamma, k, out, unsplit);
   }
   if (!batch_.empty()) batchedSplitRows(q, batched, unsplit, out);
 }
@@ -244,6 +249,11 @@ void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool
   const int nb = (int)batch_.size();
   eig_.resize(nb);
   for (int j = 0; j < nb; ++j) eig_[j] = roeEigen<NV>(q + batch_[j], rs_.data() + batch_[j], opt_.gamma);
+  componentwise_.assign(nb, 0);
+  for (int j = 0; j < nb; ++j) {
+    componentwise_[j] = illConditioned(q + batch_[j]);
+    stats_.componentwise_faces += componentwise_[j];
+  }
   supersonic_.assign(nb, 0); // per face: 1 when its rows are crweno5's
   if (scheme_->hybrid && rfChar())
     for (int j = 0; j < nb; ++j) supersonic_[j] = supersonicFace(q + batch_[j], eig_[j]);
@@ -272,6 +282,15 @@ bool DirectionSweep<NV>::supersonicFace(const V* qs, const typename LineGas<NV>:
   return slow != 0 && slow == fast;
 }
 
+// Whether the face between cells 2 and 3 of the stencil qs is treated component-wise: the smaller of its cells'
+// pressures is too low against this stage's flux scale for its characteristic basis
+// (characteristic_conditioning.hpp).
+template <int NV> bool DirectionSweep<NV>::illConditioned(const V* qs) const {
+  using G = LineGas<NV>;
+  const double p = std::min(G::pressure(qs[2], opt_.gamma), G::pressure(qs[3], opt_.gamma));
+  return characteristicIllConditioned(stage_flux_scale_, p);
+}
+
 // The rows of the faces faces_ (indices into batch_, eigensystems eig_) by one call of rows_fn.
 template <int NV>
 void DirectionSweep<NV>::splitRowsCall(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out) {
@@ -281,7 +300,8 @@ void DirectionSweep<NV>::splitRowsCall(const V* q, RowsFunction rows_fn, bool un
   for (int i = 0; i < nb; ++i) {
     const int j = faces_[i], k = batch_[j];
     double wp[NV][6], wm[NV][6];
-    projectStencils<NV>(q + k, f_.data() + k, alpha_[k], &eig_[j], unsplit, wp, wm);
+    projectStencils<NV>(q + k, f_.data() + k, alpha_[k], componentwise_[j] ? nullptr : &eig_[j], unsplit, wp,
+                        wm);
     for (int c = 0; c < NV; ++c)
       for (int m = 0; m < 6; ++m) {
         stencil_[(size_t)m * lanes + 2 * NV * i + c] = wp[c][m];
@@ -298,14 +318,15 @@ void DirectionSweep<NV>::splitRowsCall(const V* q, RowsFunction rows_fn, bool un
         rows[s][c] = {s == 0 ? a : c3, brow_[(size_t)lanes + l], s == 0 ? c3 : a,
                       brow_[3 * (size_t)lanes + l]};
       }
-    writeSplitRow<NV>(eig_[faces_[i]], rows, true, batch_[faces_[i]], out);
+    writeSplitRow<NV>(eig_[faces_[i]], rows, !componentwise_[faces_[i]], batch_[faces_[i]], out);
   }
 }
 
 template <int NV>
 void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm,
-                                    bool periodic, double alpha, double lambda, V* h) {
+                                    bool periodic, double alpha, double lambda, double flux_scale, V* h) {
   ++stats_.evaluations;
+  stage_flux_scale_ = flux_scale;
   int size = 1;
   MPI_Comm_size(comm, &size);
   // nlines is the same on every rank of comm, so all take the same branch.
@@ -509,7 +530,7 @@ void DirectionSweep<NV>::rfCombine(const V* q, long long n, long long xs, int xm
       continue;
     }
     h[k] = rfFaceFlux<NV>(q + k, rs_.data() + k, lam_.data() + k, x0 + NV * k, x1 + NV * k, true, alpha,
-                          opt_.local_lf, opt_.gamma);
+                          opt_.local_lf, opt_.gamma, illConditioned(q + k));
   }
 }
 

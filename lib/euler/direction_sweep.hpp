@@ -22,6 +22,9 @@
 // one system of h with each field's row of its own bias mixes left- and right-biased rows in one block row,
 // which the block Thomas sweep does not solve accurately (3D explosion, 1 vs 2 ranks: 3e-5 apart).
 //
+// A face one of whose cells is far below the grid's flux scale (cold gas, near-vacuum) has an ill-conditioned
+// characteristic basis: it is treated component-wise, its rows and its upwinding (characteristic_conditioning.hpp).
+//
 // Positivity (Hu, Adams & Shu, J. Comput. Phys. 242 (2013) 169; Zhang & Shu, J. Comput. Phys. 229 (2010) 8918).
 // One forward-Euler stage U_j - sum_d lambda_d (h_{j+1/2} - h_{j-1/2}), lambda_d = dt/dx_d, is the convex
 // combination sum_d w_d [1/2 (U_j - 2 L_d h_{j+1/2}) + 1/2 (U_j + 2 L_d h_{j-1/2})] with w_d = lambda_d A_d / S,
@@ -85,11 +88,13 @@ public:
   // ghosts filled), line after line. n: global cells along the direction; xs, xm: this rank's cells.
   // line_comm: the ranks sharing these lines, in line order (every rank passes the same nlines).
   // alpha: the Lax-Friedrichs speed for compact schemes and -local_lf false (max |u_n| + c of the direction).
-  // lambda: L_d = dt/dx_d scaled for the positivity limiter, see above (<= 0: off). Output h: nlines x (xm + 1) face fluxes,
+  // lambda: L_d = dt/dx_d scaled for the positivity limiter, see above (<= 0: off). flux_scale: the grid's
+  // largest momentum flux p + rho |u|^2 (characteristic_conditioning.hpp: faces whose characteristic basis
+  // is ill-conditioned against it are treated component-wise). Output h: nlines x (xm + 1) face fluxes,
   // h[l (xm+1) + k] at x_{xs+k-1/2}. Collective on line_comm for compact schemes. Throws std::runtime_error (the
   // same on every rank of line_comm) if a line system is singular.
   void faceFluxes(MPI_Comm line_comm, const V* q, int nlines, long long n, long long xs, int xm,
-                  bool periodic, double alpha, double lambda, V* h);
+                  bool periodic, double alpha, double lambda, double flux_scale, V* h);
 
   // ENO-Pade shock rows of nlines lines laid out as for faceFluxes, at all xm + 1 faces of each (boundary faces
   // of a non-periodic line are explicit closures: 0): shock[l (xm+1) + k] = 1 at a shock row. Only the sensor
@@ -118,6 +123,7 @@ private:
                        const char* shocks, CompactLineRows out);
   void batchedSplitRows(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out);
   bool supersonicFace(const V* qs, const typename LineGas<NV>::Eigen& e) const;
+  bool illConditioned(const V* qs) const;
   void splitRowsCall(const V* q, RowsFunction rows_fn, bool unsplit, CompactLineRows out);
   // Steps of linesFaceFluxes for compact schemes.
   void markBlockLines(MPI_Comm comm, const V* q, int nlines, long long n, long long xs, int xm, int nown,
@@ -152,6 +158,8 @@ private:
   std::vector<typename LineGas<NV>::Eigen> eig_; // their Roe eigensystems
   std::vector<int> faces_;                       // the faces (indices into batch_) of one splitRowsCall
   std::vector<char> supersonic_;                 // per face of batch_: supersonicFace (its rows crweno5's)
+  std::vector<char> componentwise_;              // per face of batch_: illConditioned (component-wise rows)
+  double stage_flux_scale_ = 0.0;                // faceFluxes' flux_scale
   std::vector<double> stencil_, brow_;           // their stencils and rows (structure of arrays)
   std::vector<int> flag_, blocks_;
   std::vector<char> shock_; // per line and owned row: ENO-Pade shock row

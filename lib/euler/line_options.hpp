@@ -41,6 +41,9 @@ struct LineStats {
   // Faces the positivity limiter could not make safe: their Lax-Friedrichs sides are not positive, which happens
   // only above the limiter's CFL bound (direction_sweep.hpp); the Euler run retries such a step at half dt.
   long long unattainable_faces = 0;
+  // Face evaluations treated component-wise because their characteristic basis is ill-conditioned
+  // (characteristic_conditioning.hpp; characteristic rows only).
+  long long componentwise_faces = 0;
 };
 
 } // namespace suite::euler

@@ -232,20 +232,39 @@ void splitCompactRow(const typename LineGas<NV>::V* qs, const typename LineGas<N
   writeSplitRow<NV>(e, rows, characteristic, k, out);
 }
 
+// The face flux of rfFaceFlux at a face treated component-wise (characteristic_conditioning.hpp): every
+// component as a field whose sign changes, (x0 + x1) / 2 + a (uL - uR) / 2 with the explicit WENO5-Z values
+// uL, uR of the component of U and a the largest of the fields' Lax-Friedrichs speeds ac.
+template <int NV>
+typename LineGas<NV>::V componentwiseFaceFlux(const typename LineGas<NV>::V* qs, const double* x0,
+                                              const double* x1, const double ac[NV]) {
+  typename LineGas<NV>::V h;
+  double a = 0.0;
+  for (int c = 0; c < NV; ++c) a = std::max(a, ac[c]);
+  for (int c = 0; c < NV; ++c) {
+    const double uL = weno5ZValue(qs[0][c], qs[1][c], qs[2][c], qs[3][c], qs[4][c]);
+    const double uR = weno5ZValue(qs[5][c], qs[4][c], qs[3][c], qs[2][c], qs[1][c]);
+    h[c] = 0.5 * (x0[c] + x1[c]) + 0.5 * a * (uL - uR);
+  }
+  return h;
+}
+
 // rf-char face flux from the left- and right-biased compact solutions x0, x1 (conserved space) of the face
 // between cells 2 and 3 of qs[0..5]: per characteristic field l_c x0 (speeds > 0), l_c x1 (< 0), else
 // (l_c x0 + l_c x1) / 2 plus, when `dissipate`, the Lax-Friedrichs term alpha_c (w(l_c U) - w~(l_c U)) / 2, w
-// and w~ the explicit WENO5-Z left and right values (the compact systems carry f only).
+// and w~ the explicit WENO5-Z left and right values (the compact systems carry f only). componentwise: the face is
+// treated component-wise (componentwiseFaceFlux; characteristic_conditioning.hpp).
 template <int NV>
 typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs,
                                    const typename LineGas<NV>::RoeState* rs,
                                    const std::array<double, NV>* lam, const double* x0, const double* x1,
-                                   bool dissipate, double alpha, bool local, double g) {
+                                   bool dissipate, double alpha, bool local, double g, bool componentwise) {
   using G = LineGas<NV>;
   const typename G::Eigen e = roeEigen<NV>(qs, rs, g);
   int sgn[NV];
   double ac[NV];
   rfSigns<NV>(lam, e, alpha, local, sgn, ac);
+  if (dissipate && componentwise) return componentwiseFaceFlux<NV>(qs, x0, x1, ac);
   typename G::V X0, X1, hc;
   for (int c = 0; c < NV; ++c) X0[c] = x0[c], X1[c] = x1[c];
   const typename G::V y0 = G::mul(e.L, X0), y1 = G::mul(e.L, X1);

@@ -1,18 +1,20 @@
 // Face fluxes of one grid line for the `weno5` scheme (see weno5_line.hpp).
 #include "euler/weno5_line.hpp"
 
+#include "euler/characteristic_conditioning.hpp"
 #include "euler/weno5.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace suite::euler {
 
 template <int NV>
-void Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_lf, bool characteristic,
-                               bool rf, double g, V* h) {
+int Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_lf, bool characteristic,
+                              bool rf, double g, double flux_scale, V* h) {
   if (rf && characteristic) {
     rf_.faceFluxes(q, nface, alpha, local_lf, g, h);
-    return;
+    return componentwiseFaces(q, nface, alpha, local_lf, g, flux_scale, h);
   }
   prepareCells(q, nface + 5, local_lf, characteristic, g);
   alpha_.resize(nface);
@@ -25,6 +27,7 @@ void Weno5Line<NV>::faceFluxes(const V* q, int nface, double alpha, bool local_l
   for (int k = 0; k < nface; ++k) projectFace(k, nface, characteristic);
   wenoValues(nface);
   for (int k = 0; k < nface; ++k) combineFace(k, nface, characteristic, h);
+  return characteristic ? componentwiseFaces(q, nface, alpha, local_lf, g, flux_scale, h) : 0;
 }
 
 template <int NV>
@@ -106,6 +109,38 @@ template <int NV> void Weno5Line<NV>::combineFace(int k, int nface, bool charact
       if (!G::rightZero(i, j)) s += R[NV * i + j] * hc[j];
     h[k][i] = s;
   }
+}
+
+// The faces whose characteristic basis is ill-conditioned (characteristic_conditioning.hpp: the smaller of the
+// face's cells' pressures against flux_scale) recomputed component-wise: h = w(f+) + w~(f-), f+- = (f +- a U) / 2
+// with the face's Lax-Friedrichs speed a (faceAlpha) and the WENO5-Z values of the left- and right-biased
+// stencils. Returns their number; one pass over the cells' pressures settles the common case, none.
+template <int NV>
+int Weno5Line<NV>::componentwiseFaces(const V* q, int nface, double alpha, bool local_lf, double g,
+                                      double flux_scale, V* h) {
+  const int ncell = nface + 5;
+  p_.resize(ncell);
+  double p_min = INFINITY;
+  for (int m = 0; m < ncell; ++m) p_[m] = G::pressure(q[m], g), p_min = std::min(p_min, p_[m]);
+  if (!characteristicIllConditioned(flux_scale, p_min)) return 0;
+  speed_.resize(ncell);
+  for (int m = 0; m < ncell; ++m) speed_[m] = G::maxSpeed(q[m], g);
+  int count = 0;
+  for (int k = 0; k < nface; ++k) {
+    if (!characteristicIllConditioned(flux_scale, std::min(p_[k + 2], p_[k + 3]))) continue;
+    ++count;
+    const double a = faceAlpha(k, alpha, local_lf);
+    V f[6];
+    for (int m = 0; m < 6; ++m) f[m] = G::flux(q[k + m], g);
+    for (int i = 0; i < NV; ++i) {
+      double fp[6], fm[6];
+      for (int m = 0; m < 6; ++m)
+        fp[m] = 0.5 * (f[m][i] + a * q[k + m][i]), fm[m] = 0.5 * (f[m][i] - a * q[k + m][i]);
+      h[k][i] =
+          weno5ZValue(fp[0], fp[1], fp[2], fp[3], fp[4]) + weno5ZValue(fm[5], fm[4], fm[3], fm[2], fm[1]);
+    }
+  }
+  return count;
 }
 
 template class Weno5Line<3>;

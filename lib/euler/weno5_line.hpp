@@ -25,9 +25,12 @@ public:
 
   // q: nface + 5 cells of a line (3 ghosts each side of its nface - 1 cells); h[k]: the flux at the face between
   // cells k + 2 and k + 3. alpha: the Lax-Friedrichs speed when !local_lf (otherwise max |u| + c over each
-  // face's six-cell stencil). rf: rf-char upwinding (rf_char.hpp; with characteristic only).
-  void faceFluxes(const V* q, int nface, double alpha, bool local_lf, bool characteristic, bool rf, double g,
-                  V* h);
+  // face's six-cell stencil). rf: rf-char upwinding (rf_char.hpp; with characteristic only). flux_scale: the
+  // grid's largest momentum flux; characteristic-wise, a face whose basis is ill-conditioned against it
+  // (characteristic_conditioning.hpp) is split component-wise instead (Lax-Friedrichs). Returns the number of
+  // such faces.
+  int faceFluxes(const V* q, int nface, double alpha, bool local_lf, bool characteristic, bool rf, double g,
+                 double flux_scale, V* h);
 
 private:
   void prepareCells(const V* q, int ncell, bool local_lf, bool characteristic, double g);
@@ -35,9 +38,12 @@ private:
   void projectFace(int k, int nface, bool characteristic);
   void wenoValues(int nface);
   void combineFace(int k, int nface, bool characteristic, V* h) const;
+  int componentwiseFaces(const V* q, int nface, double alpha, bool local_lf, double g, double flux_scale,
+                         V* h);
 
   int ncell_ = 0;
   std::vector<double> qt_, ft_, speed_; // cell-major per component: qt_[j * ncell + m]
+  std::vector<double> p_;               // per cell: its pressure (componentwiseFaces)
   std::vector<typename G::RoeState> roe_;
   std::vector<double> alpha_;            // per face: the Lax-Friedrichs speed
   std::vector<typename G::Eigen> eigen_; // per face: the Roe eigenvectors

@@ -110,7 +110,7 @@ def vortex_3d():
 
 
 def failing_scheme():
-    """LeBlanc without the positivity limiter: enopade6 stops at step 1 (negative density), muscl2 runs. The
+    """LeBlanc without the positivity limiter: enopade6 stops at step 1 (negative pressure), muscl2 runs. The
     1-rank target run leaves enopade6 out (its failed probe recorded) and meets the target with muscl2. The
     2-rank run loads its cost model from the 1-rank file, which has no complete run of enopade6: it leaves
     enopade6 out without running it, names the reason, and makes the same choice."""
@@ -137,7 +137,7 @@ def failing_scheme():
                 expect = [(0, 32)] if np_ == 1 else []
                 check(failed == expect and (np_ == 1 or 0 not in ran),
                       f"failed runs (family, n) {failed}, families run {sorted(set(ran))}: {expect}")
-                check(("invalid rho" in g.attrs["failure_enopade6"]) == (np_ == 1) and
+                check(("invalid " in g.attrs["failure_enopade6"]) == (np_ == 1) and
                       g.attrs["failure_muscl2"] == "", "failure attributes")
 
 

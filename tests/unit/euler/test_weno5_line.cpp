@@ -72,7 +72,7 @@ TYPED_TEST(Weno5LineTest, FluxesEqualTheRowByRowSchemeBitwise) {
   for (bool local : {true, false})
     for (bool characteristic : {true, false}) {
       std::vector<typename G::V> h(nface);
-      line.faceFluxes(q.data(), nface, 2.5, local, characteristic, false, kGamma, h.data());
+      line.faceFluxes(q.data(), nface, 2.5, local, characteristic, false, kGamma, 1.0, h.data());
       for (int k = 0; k < nface; ++k) {
         double a = 2.5;
         if (local) {
@@ -155,7 +155,7 @@ TYPED_TEST(Weno5LineTest, RfCharFluxesEqualTheirDefinition) {
       testLine<NV>(nface + 5); // u changes sign across the jump: fields of both signs and mixed ones
   Weno5Line<NV> line;
   std::vector<typename G::V> h(nface);
-  line.faceFluxes(q.data(), nface, 2.5, true, true, true, kGamma, h.data());
+  line.faceFluxes(q.data(), nface, 2.5, true, true, true, kGamma, 1.0, h.data());
   int mixed = 0;
   for (int k = 0; k < nface; ++k) {
     const typename G::V ref = rfReference<NV>(q.data() + k, &mixed);
@@ -193,7 +193,7 @@ TYPED_TEST(Weno5LineTest, RfCharDenseAndSparseSplitsAndGlobalAlphaEqualTheDefini
   Weno5Line<NV> line;
   std::vector<typename G::V> h(nface);
   for (double alpha : {0.0, 3.0}) { // 0: local alpha
-    line.faceFluxes(q.data(), nface, alpha, alpha == 0.0, true, true, kGamma, h.data());
+    line.faceFluxes(q.data(), nface, alpha, alpha == 0.0, true, true, kGamma, 1.0, h.data());
     int mixed = 0;
     for (int k = 0; k < nface; ++k) {
       const typename G::V ref = rfReference<NV>(q.data() + k, &mixed, alpha);
