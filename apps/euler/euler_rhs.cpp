@@ -145,9 +145,9 @@ template <int NV> bool EulerRun::stageSpeeds(const double* ul, double amax[3], d
         for (int d = 0; d < dim(); ++d) amax[d] = std::max(amax[d], s[d]);
         const PrimN w = primitive(q, dim(), problem_.gamma);
         ok = ok && q[0] > 0.0 && w.p > 0.0;
-        double m2 = 0.0; // |m|^2
-        for (int d = 0; d < dim(); ++d) m2 += q[1 + d] * q[1 + d];
-        *flux_scale = std::max(*flux_scale, w.p + m2 / q[0]);
+        double momentum_flux = w.p; // p + rho |u|^2
+        for (int d = 0; d < dim(); ++d) momentum_flux += q[1 + d] * w.u[d];
+        *flux_scale = std::max(*flux_scale, momentum_flux);
       }
   return ok;
 }

@@ -264,7 +264,7 @@ typename LineGas<NV>::V rfFaceFlux(const typename LineGas<NV>::V* qs,
   int sgn[NV];
   double ac[NV];
   rfSigns<NV>(lam, e, alpha, local, sgn, ac);
-  if (dissipate && componentwise) return componentwiseFaceFlux<NV>(qs, x0, x1, ac);
+  if (componentwise) return componentwiseFaceFlux<NV>(qs, x0, x1, ac);
   typename G::V X0, X1, hc;
   for (int c = 0; c < NV; ++c) X0[c] = x0[c], X1[c] = x1[c];
   const typename G::V y0 = G::mul(e.L, X0), y1 = G::mul(e.L, X1);

@@ -123,8 +123,10 @@ int Weno5Line<NV>::componentwiseFaces(const V* q, int nface, double alpha, bool 
   double p_min = INFINITY;
   for (int m = 0; m < ncell; ++m) p_[m] = G::pressure(q[m], g), p_min = std::min(p_min, p_[m]);
   if (!characteristicIllConditioned(flux_scale, p_min)) return 0;
-  speed_.resize(ncell);
-  for (int m = 0; m < ncell; ++m) speed_[m] = G::maxSpeed(q[m], g);
+  if (local_lf) { // faceAlpha's speeds (the rf-char path has not set them)
+    speed_.resize(ncell);
+    for (int m = 0; m < ncell; ++m) speed_[m] = G::maxSpeed(q[m], g);
+  }
   int count = 0;
   for (int k = 0; k < nface; ++k) {
     if (!characteristicIllConditioned(flux_scale, std::min(p_[k + 2], p_[k + 3]))) continue;

@@ -170,7 +170,6 @@ private:
   double probePerStep(size_t f) const;
   bool uncosted(size_t f) const;
   std::string uncostedWhy(size_t f) const;
-  PetscErrorCode checkLoadedCoversOne() const;
   bool allFailed() const; // every family has failed
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
   double firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const;

@@ -29,8 +29,8 @@ public:
   PetscErrorCode load(MPI_Comm comm, const std::string& path);
   bool loaded() const { return !source_.empty(); }
   const std::string& source() const { return source_; }
-  // Collective check: every family has complete runs at two resolutions or more.
-  PetscErrorCode checkCovers(MPI_Comm comm, const std::vector<std::string>& families) const;
+  // Collective check: at least one of the families has complete runs at two resolutions or more (covers).
+  PetscErrorCode checkCoversAny(MPI_Comm comm, const std::vector<std::string>& families) const;
   bool covers(const std::string& family) const;              // complete runs at two resolutions or more
   double predict(const std::string& family, double n) const; // seconds
   double exponent(const std::string& family) const;          // d log seconds / d log n at the finest sample
