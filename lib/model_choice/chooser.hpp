@@ -8,7 +8,9 @@
 //      out): with the pilots' timings, the cost model (cost_model.hpp). Families go cheapest first, by a probe
 //      (a timing run at n0) or the loaded cost model, one family's pilots after the other's; with an error
 //      target, a family whose pilots still needed for its fit (from n0 on) are predicted to cost more than a
-//      candidate already known to meet the target is left out (it cannot lower the whole cost),
+//      candidate already known to meet the target is left out (it cannot lower the whole cost); on a flow with
+//      jumps, before its third pilot, together with its own candidate by the fit of its first two
+//      (provisionalCandidateSeconds),
 //   2. tabulates every candidate (family x resolution ladderN(n0, per_octave, k) up to n_max) with its
 //      predicted cost and predicted error,
 //   3. picks the cheapest candidate predicted to meet target_error / safety (or, with target_walltime alone,
@@ -78,6 +80,11 @@ constexpr double kCheckGap = 2.1;
 // predicted to meet the target or, of the missed family, to improve on it (escalationCandidate): a ladder whose
 // runs together cost at most 4/3 of its last one.
 constexpr double kEscalationGrowth = 4.0;
+
+// Before a family's third pilot on a flow with jumps: its own candidate is judged by the provisional fit of its
+// first two pilots (order 1 through their distance) at this times the target / safety (the benefit of the
+// doubt; see ModelChooser::provisionalCandidateSeconds).
+constexpr double kProvisionalSlack = 2.0;
 
 // Before a final run, a family whose best candidate is predicted within this factor of the choice's cost and
 // lies above the family's finest timed run is timed at that candidate (timeNearChoice): its cost there is
@@ -174,6 +181,7 @@ private:
   bool pilotTooDear(size_t f, int k, const std::vector<size_t>& completed);
   double firstPilotSeconds(size_t f, const std::vector<size_t>& completed) const;
   double pilotRatio(size_t f, int j, int k, const std::vector<size_t>& completed) const;
+  double provisionalCandidateSeconds(size_t f, const std::vector<size_t>& completed) const;
   bool preAsymptotic(size_t f, int k) const;
   bool timingTooDear(size_t f, long long n) const;
   PetscErrorCode runTimings(const Runner& runner, size_t f);
