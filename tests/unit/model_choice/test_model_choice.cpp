@@ -260,13 +260,16 @@ TEST(Chooser, LeavesOutADearFamilyBeforeItsFirstPilot) {
 // its first two pilots before its third: at 1e-3 "dear" (50x the cost, the same errors, order 1) has pilots at
 // 32 and 64 (0.26 s, less than cheap's candidate, 1.6 s), then its candidate by them (n ~ 640 for 2 x 1e-3 / 2,
 // over 20 s) is dearer than cheap's and it is left out before its 128-cell pilot (0.8 s). On a smooth flow
-// (order 4) the rule does not apply and dear's three pilots run: its first two pilots' fit at order 1 would
-// misjudge it.
+// (order 2.5, dear 2x the cost) the rule does not apply and dear's three pilots run: the order-1 fit of its
+// first two pilots would put its candidate at n ~ 8000 (130 s) against cheap's n ~ 320 (0.1 s) and leave it out.
 TEST(Chooser, JudgesAFamilyByItsFirstTwoPilotsOnAFlowWithJumps) {
-  for (const double p : {1.0, 4.0}) {
-    const double a = p == 1.0 ? 0.5 : 2.5e9; // order 4: 1e-3 / safety met near n = 1500, as at order 1
+  struct Case {
+    double p, a, dear_cost;
+    int dear_pilots;
+  };
+  for (const Case& k : {Case{1.0, 0.5, 50.0, 2}, Case{2.5, 700.0, 2.0, 3}}) {
     Runner runner = [&](const Family& f, long long n, RunKind, RunResult* r) -> PetscErrorCode {
-      return syntheticRun(n, f.name == "dear" ? 50.0 : 1.0, r, a, p);
+      return syntheticRun(n, f.name == "dear" ? k.dear_cost : 1.0, r, k.a, k.p);
     };
     ModelChooser c = chooserOf({"dear", "cheap"}, 1e-3, 32);
     ASSERT_EQ(c.run(runner), 0);
@@ -274,8 +277,9 @@ TEST(Chooser, JudgesAFamilyByItsFirstTwoPilotsOnAFlowWithJumps) {
     EXPECT_EQ(c.chosen().family, 1);
     int dear_pilots = 0;
     for (const RunRecord& r : c.pilots()) dear_pilots += r.family == 0;
-    EXPECT_EQ(dear_pilots, p == 1.0 ? 2 : 3) << "order " << p;
-    EXPECT_EQ(c.orders()[0].why.find("left out") != std::string::npos, p == 1.0) << c.orders()[0].why;
+    EXPECT_EQ(dear_pilots, k.dear_pilots) << "order " << k.p;
+    EXPECT_EQ(c.orders()[0].why.find("left out") != std::string::npos, k.dear_pilots == 2)
+        << c.orders()[0].why;
   }
 }
 
