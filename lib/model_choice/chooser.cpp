@@ -170,10 +170,13 @@ double ModelChooser::provisionalCandidateSeconds(size_t f, const std::vector<siz
   for (const RunRecord& r : pilots_)
     if (r.family == (int)f && r.n == 2 * set_.n0 && !r.failed) d = r.difference;
   if (!(d > 0) || !cost_.covers(families_[f].name)) return 0.0;
+  ObservedOrder fit; // order 1 through the two pilots' distance: e(2 n0) = d
+  const double n2 = 2.0 * (double)set_.n0;
+  fit.valid = true, fit.p = fit.p_observed = 1.0, fit.a = pairEstimate((double)set_.n0, n2, d, 1.0) * n2;
   for (int k = 0;; ++k) {
     const long long n = ladderN(set_.n0, set_.per_octave, k);
     if (n > set_.n_max) return 0.0;
-    if (d * 2.0 * (double)set_.n0 / (double)n <= kProvisionalSlack * set_.target_error / set_.safety)
+    if (fit.errorAt((double)n) <= kProvisionalSlack * set_.target_error / set_.safety)
       return cost_.predict(families_[f].name, (double)n);
   }
 }
