@@ -100,7 +100,7 @@ bool sparsePass(const DelassusSystem& sys, double mu, BoxRows* sp, double rel_to
   p.body = s.body.get();
   lcp::Vec z = s.full.cwiseMax(l).cwiseMin(u);
   SparseSolveStats ss;
-  // the sweeps only from a poor start (scaled residual above 1e-2 (1 + |b|): about the former 1e-3 on the
+  // the sweeps only from a poor start (scaled residual above 1e-2 (1 + |b|): about 1e-3 on the
   // unscaled residual at 1 kg boxes, A_ii 4 to 8 kg^-1); the answer always from at least one exact solve
   const double poor = 1e-2 * (1.0 + p.b.lpNorm<Eigen::Infinity>());
   if (!(sparseResidual(p, z) <= poor)) freeStart(p, &z, &ss);

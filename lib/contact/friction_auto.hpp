@@ -6,8 +6,8 @@
 //   mu > 0:  box, scaled_box, splitting 2 passes, splitting 5 passes, polyhedral d = 4, polyhedral d = 8 (the
 //            full model; the d-gon is inscribed in the cone, so both polyhedral rungs violate it only by the
 //            cone-row compliance, ~0.3 -polyhedral_gamma_reg). No converged-splitting rung: on the 40-log heap
-//            it was chosen for 2 of 383 problems, and each failed probe of a large island from polyhedral_4
-//            cost up to -splitting_max_it box solves (auto 25 s against 11.5 s with the 2/5-pass rungs).
+//            it is chosen for 2 of 383 problems, and each failed probe of a large island from polyhedral_4
+//            costs up to -splitting_max_it box solves (auto 25 s against 11.5 s with the 2/5-pass rungs).
 // A problem's violation is +inf when friction acts on it without any normal impulse (box bounds from the
 // weight estimate on separating contacts), so that every problem within E bounds the step's violation by E.
 // Warm choice: a problem starts at the highest rung its contacts used at the previous step (matched contacts;

@@ -2,7 +2,7 @@
 // LCP with bounds mu nu; nu <- lambda_n } until max A_nn |delta lambda_n| <= tol (1 m/s + max A_nn lambda_n)
 // (velocities: the normal velocity the change of impulse makes, A_nn the normal row's diagonal of the Delassus
 // matrix; the rule is the same for any scaling of the masses, where one in impulses with an absolute 1 N s
-// was 1,000 times stricter on 1,000 kg bodies than on 1 kg ones: 5 to 50 passes a step instead of 4) or the pass
+// is 1,000 times stricter on 1,000 kg bodies than on 1 kg ones: 5 to 50 passes a step instead of 4) or the pass
 // cap, starting from nu = 0 (zero friction), +inf (infinite friction) or the previous step's normal impulses
 // (without them: the weight estimate, or on the sparse path the sticking estimate of box_lcp.hpp)
 // (-splitting_start). Each pass's change and force ratio are kept (StepStats::split_errors / split_ratios).

@@ -35,7 +35,7 @@ enum class RowState : signed char { Lower, Upper, Free };
 // small against the impulses) the jump read sends rows from bound to bound. Scaled by A_ii, the reads and the
 // residual below do not change when every mass is scaled (z with the masses, w not). Pivots per step on
 // pile_grid (1,125 boxes, 20 steps) by the first read's gain: 1: 1,092; 2: 311; 4: 304; 8: 185; 16: 151;
-// 32: 145; 100: 108; 1,000: 4,000 and splitting passes at their cap. 8 is the former unscaled read (z - w)
+// 32: 145; 100: 108; 1,000: 4,000 and splitting passes at their cap. 8 is about the unscaled read z - w
 // at 1 kg boxes; gain 8 without the stall switch fails ContactBlockPgs's narrow-box pyramid.
 
 // States read off z - gain w / A_ii (as lcp::statesFromSolution); inactive rows at their (zero) bound.

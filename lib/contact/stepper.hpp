@@ -70,7 +70,7 @@ struct StepperOptions {
   SplitStart split_start = SplitStart::Previous;
   int splitting_max_it = 50;
   // on max A_nn |delta lambda_n| (m/s), relative to 1 m/s + max A_nn lambda_n; 4e-8 m/s at 1 kg boxes (A_nn 4 to
-  // 8 kg^-1) is about the former rule in impulses, 1e-8 N s: the same passes and cone violations on pile_grid
+  // 8 kg^-1) is about 1e-8 N s in impulses: the same passes and cone violations on pile_grid as that rule
   double splitting_tol = 4e-8;
   int polyhedral_directions = 8;
   // Polyhedral: solver chain (Lemke, the accurate reference, first; the Newton methods when round-off in a

@@ -1,7 +1,8 @@
 // Compact rows of many stencils at once: the rows of a RowFunction over n stencils held as structure of arrays,
 // in loops the compiler vectorises (kernel_clones.hpp: AVX2 where the CPU has it). Bitwise the rows of the
 // scalar functions (both call compact_row_kernels.hpp). Used for the ENO-Pade / CRWENO rows of the block lines
-// (direction_sweep.cpp), where the weights' divisions were a third to a half of a shocked line's cost.
+// (direction_sweep.cpp): there the weights' divisions, computed one stencil at a time by the scalar functions,
+// are a third to a half of a shocked line's cost.
 #pragma once
 
 #include "euler/row.hpp"

@@ -23,16 +23,16 @@
 //   row = theta * CU6 + (1 - theta) * CRWENO5-Z,   theta = min(1, w_3 / d_3)^2,
 // a convex combination of two consistent rows, so still a consistent compact row of fifth order or more:
 // where the stencil is smooth (w_3 >= d_3) it is the CU6 row, tending to Pade; where the downwind part is
-// rejected it becomes the CRWENO5-Z row, which keeps contacts sharper than CU6's own upwind limit (issue #18
-// item 3, measured at HyPar's Sod / Lax settings, rf-char, every row of the line this row: Sod N = 200 / 800,
+// rejected it becomes the CRWENO5-Z row, which keeps contacts sharper than CU6's own upwind limit (measured
+// at HyPar's Sod / Lax settings, rf-char, every row of the line this row: Sod N = 200 / 800,
 // Lax N = 200 / 800 L1(rho) CU6 alone 1.945e-3 / 5.72e-4 / 6.57e-3 / 1.58e-3, the blend with theta = w_3 / d_3
 // 1.868e-3 / 5.43e-4 / 7.01e-3 / 1.71e-3, with its square 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3 at C = 30).
 // C = 30 instead of Hu et al.'s 20: scanned over 15, 20, 30, 40 on those four figures, 30 is the only value that
 // met the four HyPar CRWENO5 figures (docs/euler_extremes.md). epsilon as in weno5.hpp (relative).
 // p = 1 in the upwind part (Borges et al.'s original exponent; crweno5's own rows keep p = 2, weno5.hpp): less
 // dissipative at shocks and contacts, with crweno5's row at the supersonic faces (direction_sweep.cpp) the four
-// figures above become 1.765e-3 / 4.92e-4 / 6.26e-3 / 1.48e-3 and every 1D battery case is at or below
-// crweno5 (session 23; p = 2: 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3, four near-vacuum cases 0.5-0.7% above).
+// figures above are 1.765e-3 / 4.92e-4 / 6.26e-3 / 1.48e-3 and every 1D battery case is at or below
+// crweno5 (with p = 2: 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3, and four near-vacuum cases 0.5-0.7% above).
 #pragma once
 
 #include "euler/row.hpp"

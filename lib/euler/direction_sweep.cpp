@@ -269,8 +269,8 @@ void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool
 // signs of u - c and u + c at both cells and of the face's Roe speeds e all agree: a supersonic face). There
 // every characteristic wave runs downstream, and the central CU6 part of the ENO-Pade row, whose downwind
 // candidate reaches against all of them, carries the errors that the near-vacuum rarefactions' start-up
-// leaves in their supersonic parts (docs/euler_extremes.md: L1(rho) 0.5-0.7% above crweno5 on the four
-// near-vacuum cases until session 23); the row is crweno5's there.
+// leaves in their supersonic parts (docs/euler_extremes.md: with the ENO-Pade row there, L1(rho) is 0.5-0.7%
+// above crweno5 on the four near-vacuum cases); the row is crweno5's there.
 template <int NV>
 bool DirectionSweep<NV>::supersonicFace(const V* qs, const typename LineGas<NV>::Eigen& e) const {
   using RF = RfChar<NV>;
@@ -398,7 +398,8 @@ void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, 
 // ENO-Pade row's weights are the Pade weights to ~1e-18 (beta_k ~ (1e-12 q)^2 against epsilon ~ 1e-6 q^2,
 // weno5.hpp), so the row is the Pade row (crweno_cu6.hpp) and is assembled as one, without the characteristic
 // projection and the weights: a round-off change that saves most of a shocked line's row cost where the line is
-// at rest (the 3D explosion at 64^3: ENO-Pade / WENO5 cost 3.17 -> 3.04, docs/euler_nd.md).
+// at rest (the 3D explosion at 64^3: ENO-Pade / WENO5 cost 3.04 with this shortcut, 3.17 without,
+// docs/euler_nd.md).
 template <int NV> static bool uniformStencil(const typename LineGas<NV>::V* qs) {
   double scale[NV] = {}, diff[NV] = {};
   for (int m = 0; m < 6; ++m)

@@ -15,14 +15,14 @@
 // CRWENO5-Z row (Ghosh & Baeder 2012) where its downwind candidate is rejected; at a face where rf-char
 // upwinds every field the same way (supersonic), crweno5's CRWENO5-Z row (DirectionSweep::supersonicFace:
 // every wave runs downstream there, and the central part kept the near-vacuum rarefactions' start-up errors).
-// Why not the former row-wise switch (Pade rows, CRWENO5-Z rows on the flagged rows only): the Pade rows
+// Why not a row-wise switch (Pade rows, CRWENO5-Z rows on the flagged rows only): the Pade rows
 // between and next to the flagged rows carry the grid-scale waves that the shocks and contacts shed, undamped
 // and at spurious group velocities (upstream into a supersonic inflow on the Mach 100 case), and the switch
 // between a central and an upwind row is abrupt; with every row of a shocked line nonlinear, the weights damp
-// those waves where they arise and reach the Pade weights where the data are smooth. Measured (issue #18 item
-// 3, HyPar's Sod / Lax settings, docs/euler_extremes.md): L1(rho) Sod N = 200 / 800 2.401e-3 / 7.16e-4 ->
-// 1.765e-3 / 4.92e-4, Lax 8.74e-3 / 2.07e-3 -> 6.26e-3 / 1.48e-3, all 5-19% below HyPar's CRWENO5; at or
-// below this suite's crweno5 on all 16 1D battery cases (ratios 0.80-0.99).
+// those waves where they arise and reach the Pade weights where the data are smooth. Measured (HyPar's Sod /
+// Lax settings, docs/euler_extremes.md): L1(rho) Sod N = 200 / 800 1.765e-3 / 4.92e-4 (row-wise switch
+// 2.401e-3 / 7.16e-4), Lax 6.26e-3 / 1.48e-3 (row-wise switch 8.74e-3 / 2.07e-3), all 5-19% below HyPar's
+// CRWENO5; at or below this suite's crweno5 on all 16 1D battery cases (ratios 0.80-0.99).
 // Boundary closure (non-periodic lines): the first and last interface of the line use the explicit
 // sixth-order central formula (f_{j-2} - 8 f_{j-1} + 37 f_j + 37 f_{j+1} - 8 f_{j+2} + f_{j+3})/60 on ghost
 // cells (shock rows: explicit WENO5-Z), so the closure is sixth (fifth) order given ghost values of that
@@ -49,7 +49,7 @@
 //    Pade scheme carries at spurious group velocities to the outflow boundary, which reflects them as a smooth
 //    acoustic pulse (Sod N = 800: L1(rho) 1.14e-3 at P = 6 against 7.2e-4 at P = 8 and 6.8e-4 with the
 //    amplitude test alone). The 32^2 vortex peaks at R = 0.17.
-// The amplitude test alone is the former sensor (-shock_ppw 0). Jameson's phi is O(h^2 q''/q): alone it
+// The amplitude test alone is the sensor of -shock_ppw 0. Jameson's phi is O(h^2 q''/q): alone it
 // flags any smooth feature with a few cells across (the isentropic vortex at 32^2: ~3% of the rows over a
 // run, a 9x larger L1 error than the Pade core), while the resolution test alone would flag round-off and
 // the low-amplitude grid-scale ripples Pade rows leave in constant states (Sod's plateaus: relative

@@ -151,8 +151,8 @@ template <int NV> void diagonalBlockRow(const Row* rows, int r, double* A, doubl
   }
 }
 
-// Block row k of both systems from the characteristic rows of f+ and f-: R diag(a) L etc. (the sums of
-// the former per-system loop, with the products R_rc L_c,cc formed once for the two systems) and R r.
+// Block row k of both systems from the characteristic rows of f+ and f-: R diag(a) L etc. (the sums of a
+// per-system loop, with the products R_rc L_c,cc formed once for the two systems) and R r.
 template <int NV>
 void characteristicBlockRows(const typename LineGas<NV>::Eigen& e, const Row rows[2][NV], int k,
                              CompactLineRows out) {

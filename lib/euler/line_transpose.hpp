@@ -1,6 +1,6 @@
 // Pencil transpose of the grid lines of one direction, the alternative to a substructured (partition-method)
-// solve of lines that cross rank boundaries (issue #7: "substructuring with a batched reduced solve, or pencil
-// transposes"). The P ranks of a line communicator each hold a segment of every one of the same nlines lines;
+// solve with a batched reduced system for lines that cross rank boundaries. The P ranks of a line
+// communicator each hold a segment of every one of the same nlines lines;
 // one MPI_Alltoallv moves the segments so that each rank holds about nlines / P WHOLE lines (lines j = r, r + P,
 // r + 2P, ... of a batch on rank r: round-robin, so that lines with shocks, which cost more, spread evenly),
 // the ranks process them serially, exactly as one rank would, and a second MPI_Alltoallv returns to every rank

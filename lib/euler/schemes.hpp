@@ -19,8 +19,8 @@ struct SchemeInfo {
   RowFunction smooth_row, shock_row; // interior rows (shock_row used everywhere unless hybrid)
   RowFunction boundary_smooth, boundary_shock; // explicit closure rows at the ends of a non-periodic line
   int order;                                   // formal order in smooth flow
-  // Default flux upwinding of the flux-split schemes (-upwinding; rf_char.hpp): rf-char for every one (issue #18
-  // item 3: with its rows of a shocked line all ENO-Pade rows, enopade6 gains from rf-char as CRWENO5 does).
+  // Default flux upwinding of the flux-split schemes (-upwinding; rf_char.hpp): rf-char for every one (with its
+  // rows of a shocked line all ENO-Pade rows, enopade6 gains from rf-char as CRWENO5 does).
   bool rf_char_default;
 };
 

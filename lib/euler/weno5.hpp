@@ -3,17 +3,19 @@
 // for candidates and smoothness indicators; Borges, Carmona, Costa & Don, J. Comput. Phys. 227 (2008) 3191,
 // eq. (28) for the Z weights alpha_k = d_k (1 + (tau / (beta_k + eps))^p); epsilon = 1e-6 times the mean
 // square of the stencil values (scale-invariant form of Ghosh & Baeder's 1e-6).
-// The exponent p (issue #18 item 3, measured at HyPar's Sod / Lax settings, rf-char):
+// The exponent p (measured at HyPar's Sod / Lax settings, rf-char):
 //  - explicit values (weno5ZValue: the `weno5` scheme, the WENO5 closures of the compact schemes, the
 //    Lax-Friedrichs term of their rf-char faces): p = 1, Borges et al.'s original, less dissipative at
-//    discontinuities: WENO5 L1(rho) Sod N = 200 2.46e-3 -> 2.22e-3 (HyPar's WENO5 2.39e-3), Lax 8.94e-3 ->
-//    7.81e-3; order 5.3 at critical points here (scale-relative epsilon). Without the positivity limiter it
-//    fails LeBlanc at -cfl 0.4 (p = 2 completes); the limiter is on by default and covers it.
+//    discontinuities: WENO5 L1(rho) Sod N = 200 2.22e-3 with p = 1, 2.46e-3 with p = 2 (HyPar's WENO5
+//    2.39e-3), Lax 7.81e-3 against 8.94e-3; order 5.3 at critical points here (scale-relative epsilon).
+//    Without the positivity limiter it fails LeBlanc at -cfl 0.4 (p = 2 completes); the limiter is on by
+//    default and covers it.
 //  - the upwind part of enopade6's ENO-Pade row: p = 1 (crweno_cu6.hpp).
 //  - CRWENO5 rows (wenoZWeights): p = 2 (Don & Borges, J. Comput. Phys. 250 (2013) 347). p = 1 lowers
-//    crweno5's errors below HyPar's too (Sod 200 1.90e-3 -> 1.72e-3), but its weights then pass round-off
-//    differences on to the tridiagonal systems: with -line_solve substructured (not bitwise across ranks)
-//    the 3D explosion at 24^3 differs by 1e-11 between 1 and 2 ranks after 8 steps instead of < 1e-12.
+//    crweno5's errors below HyPar's too (Sod 200 1.72e-3 against 1.90e-3 with p = 2), but its weights then
+//    pass round-off differences on to the tridiagonal systems: with -line_solve substructured (not bitwise
+//    across ranks) the 3D explosion at 24^3 differs by 1e-11 between 1 and 2 ranks after 8 steps instead of
+//    < 1e-12.
 #pragma once
 
 #include "euler/row.hpp"

@@ -284,8 +284,7 @@ Result runIndexed(const Problem& p, const Portfolio& t, const std::vector<const 
 // class's chain runs; only when its answer is not accepted is the test done, and the final class's chain tried
 // without that solver (route). A verified answer of the first solver is an answer whatever the test would say;
 // the class recorded in info is the final one. An indefinite matrix pays for one failed attempt where the
-// first solver fails on it (lcp_CPS_1, symmetric indefinite, when lcp-spd-small starts with bpp; until
-// 2026-11-27 the test was deferred only for n > 32).
+// first solver fails on it (lcp_CPS_1, symmetric indefinite, when lcp-spd-small starts with bpp).
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   const double t0 = o.timed ? MPI_Wtime() : 0.0, c0 = o.timed ? threadCpuSeconds() : 0.0;
   const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();

@@ -8,7 +8,8 @@
 //           Pang & Stone 2009, 5.3)
 //   tril    nonsymmetric, lower triangular with a positive diagonal: a P-matrix (its principal minors are
 //           products of diagonal entries), e.g. Murty's example (Murty 1988, ch. 6: 2^n - 1 Lemke pivots),
-//           whose symmetric part is indefinite (it was "gen", with the Siconos files' general matrices)
+//           whose symmetric part is indefinite (a class of its own, not "gen" with the Siconos files' general
+//           matrices)
 //   triu    the same, upper triangular (e.g. the Siconos files lcp_exp_murty*, Murty's matrix transposed).
 //           Apart from tril because the solvers' costs differ by orientation: a pivoting or sweeping order
 //           that follows the triangle settles each index once (Murty's example, tril: cottle_dantzig 0.24 us

@@ -363,7 +363,7 @@ void SubstructuredBlockLines::secondPass(const Shape& s, int l0, int batch, cons
 // NR = 1 (blockThomasLanes, bitwise the one-line solves; a rejected pivot sends its four lines one by one). A
 // remainder of two or three lines goes through the four lanes too, the spare lanes repeating its first line
 // into scratch: the two systems of a 1D line (its left- and right-biased rows) then cost about one
-// (measured: Sod N = 2048, enopade6, lineSolve<3,1> was 25% of the run).
+// (measured: Sod N = 2048, enopade6: solved one line at a time, lineSolve<3,1> takes 25% of the run).
 template <int BS, int NR, class Rows>
 void SubstructuredBlockLines::plainSweeps(const Shape& s, const Rows& rows, double* x, std::size_t xstride) {
   const auto one = [&](int l) {

@@ -20,11 +20,12 @@ double secondsOf(const std::vector<RunRecord>& runs) {
 
 // The missed run showed the fits wrong at its resolution, so the next run stays within a factor of that
 // evidence, on the family whose fit that run corrected unless another is predicted to meet the target there.
-// On Shu-Osher (pre-asymptotic pilots, estimates 2-7x pessimistic) E = 1e-2 escalated from muscl2 n = 1722
-// (0.8 s) to enopade6 n = 2896 (31 s), the only family predicted to meet target / safety; within the cap it
-// went to muscl2 n = 2880 (3 s), which met E. Lax-Liu 6 at E = 1e-2: the most accurate of any family within the
-// cap after weno5 n = 216 missed was crweno5 n = 128, then enopade6 n = 184, on their pilots' fits (estimates
-// 2.0e-2, 4.1e-2), before weno5 n = 512 met E: 83 s; on weno5's own ladder, n = 304 met it: 13 s.
+// On Shu-Osher (pre-asymptotic pilots, estimates 2-7x pessimistic) at E = 1e-2, after muscl2 n = 1722 (0.8 s)
+// misses: without the cap the next run is enopade6 n = 2896 (31 s), the only family predicted to meet target /
+// safety; within the cap it is muscl2 n = 2880 (3 s), which meets E. Lax-Liu 6 at E = 1e-2, after weno5 n = 216
+// misses: the most accurate candidates of any family within the cap are crweno5 n = 128, then enopade6 n = 184,
+// on their pilots' fits (estimates 2.0e-2, 4.1e-2), before weno5 n = 512 meets E: 83 s; on weno5's own ladder,
+// n = 304 meets it: 13 s.
 CandidateRow escalationCandidate(const std::vector<CandidateRow>& table, const std::vector<bool>& done,
                                  const std::function<bool(const CandidateRow&)>& feasible, int missed_family,
                                  double missed_seconds, double missed_estimate) {
@@ -132,8 +133,8 @@ PetscErrorCode ModelChooser::runPilot(const Runner& runner, size_t f, int k) {
 // True when the pilots family f still needs for a fit, k up to 2 (or k alone, an extra level), are predicted to
 // cost more than the cheapest candidate already known to meet the target: then the family cannot lower the
 // whole cost (those pilots alone exceed what the known candidate costs). Counting only pilot k, the compact
-// families' pilots at 2 n0 on Lax-Liu 6 (0.45 s each) ran beside a candidate of 0.65 s, and their pilots at 4 n0
-// (3.5 s each) were then pruned, the first ones' cost wasted. A pilot's cost: from a loaded cost model, else
+// families' pilots at 2 n0 on Lax-Liu 6 (0.45 s each) run beside a candidate of 0.65 s, and their pilots at 4 n0
+// (3.5 s each) are then pruned, the first ones' cost wasted. A pilot's cost: from a loaded cost model, else
 // the family's previous pilot (at n0: its probe) times the ratio measured between the same levels
 // (pilotRatio). Before the third pilot on a flow with jumps, the family's own candidate is added
 // (provisionalCandidateSeconds).

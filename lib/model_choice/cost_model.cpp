@@ -110,7 +110,7 @@ PetscErrorCode CostModel::checkCoversAny(MPI_Comm comm, const std::vector<std::s
 
 namespace {
 // The runs of one table (pilots: complete; timings: a few steps) of /model_choice; cols[4]: the failed flag
-// (files written before it: none failed).
+// (a file without that column: none failed).
 PetscErrorCode readRuns(const suite::H5Input& in, const std::string& table, std::vector<double> cols[5]) {
   const char* names[5] = {"family", "n", "seconds", "steps", "failed"};
   suite::Dims dims;
