@@ -1,4 +1,4 @@
-"""Checkpoint/restart of the contact app (issue #8), at 1 and 2 ranks: a run with periodic checkpoints
+"""Checkpoint/restart of the contact app, at 1 and 2 ranks: a run with periodic checkpoints
 restarted from the latest one, and a run stopped by -max_walltime (which writes a final checkpoint) then
 restarted, both end in exactly (bitwise) the final state of the uninterrupted run: positions, orientations,
 velocities. The scene (a small log heap with sleeping on and the splitting model, warm-started from the

@@ -1,4 +1,4 @@
-"""-contact_accuracy on the contact app's HDF5 output (issue #19; run by ctest: test_contact_accuracy.py <contact>).
+"""-contact_accuracy on the contact app's HDF5 output (run by ctest: test_contact_accuracy.py <contact>).
 
 - every mode completes a pyramid of base 4 (10 boxes) and records per step the residual (complementarity
   error), cone violation, penetration, factorisations and whether the sweeps ended at the budget;

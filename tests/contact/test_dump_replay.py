@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Contact problems dumped with -dump_problems replay as an lcpbench batch (issue 6 <-> issue 4 interface).
+"""Contact problems dumped with -dump_problems replay as an lcpbench batch (the interface from
+the contact app to lcpbench).
 
 Asserts: the incline run dumps one problem per step and splitting pass; lcpbench reads every dump
 (-file alone implies -family file) and bpp and lemke solve all of them (status 0, verified residual).

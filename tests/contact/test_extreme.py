@@ -1,4 +1,4 @@
-"""Extreme inputs of the contact app (issue #8), one ctest per case; each completes with a verified answer:
+"""Extreme inputs of the contact app, one ctest per case; each completes with a verified answer:
 
   mass_ratio  a 1000 kg box resting on a 1 kg box on the ground: the stack stays (drift <= 1e-4 m over 300
               steps, final speeds <= 1e-6 m/s), every step solved;

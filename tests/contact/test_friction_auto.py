@@ -1,4 +1,4 @@
-"""-friction auto -target_error E on the contact app's HDF5 output (issue #20; run by ctest: test_friction_auto.py
+"""-friction auto -target_error E on the contact app's HDF5 output (run by ctest: test_friction_auto.py
 <contact>). E = 1e-3 throughout; the cone violation is /steps/cone_violation (sum max(0, |l_t| - mu l_n) / sum l_n).
 
 - incline 30 deg, mu 0.3 (slides): speed after 1 s = g (sin 30 - mu cos 30) = 2.3563 m/s to 4 digits and the force

@@ -1,4 +1,4 @@
-"""-contact_islands on the contact app's HDF5 output (issue #20; run by ctest: test_islands.py <contact>).
+"""-contact_islands on the contact app's HDF5 output (run by ctest: test_islands.py <contact>).
 
 - pile_grid of 6 pyramids of base 4 (60 boxes), 60 steps (0.6 s): with islands, 6 islands of 10 boxes each step
   (/steps/islands, /steps/largest_island_bodies), the same positions as the whole-scene solve to 1e-8 m and

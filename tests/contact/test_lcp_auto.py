@@ -1,4 +1,4 @@
-"""-lcp_solver auto in the contact app (issue #20; run by ctest: test_lcp_auto.py <contact>): the LCP portfolio
+"""-lcp_solver auto in the contact app (run by ctest: test_lcp_auto.py <contact>): the LCP portfolio
 (lib/lcp/portfolio, the entry point of lcpbench -solvers auto) picks the solver of each dense contact problem.
 
 - incline (30 degrees, mu 0.3, 100 steps): auto gives the positions of the default bpp to 1e-8 m (both

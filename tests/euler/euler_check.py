@@ -36,13 +36,13 @@ def sod():
 
 
 def hypar():
-    """Issue #18 item 3: L1(rho) at HyPar's settings (cell-centred grid, fixed dt, SSP-RK3; Sod dt = 1e-3, t = 0.2;
+    """L1(rho) at HyPar's settings (cell-centred grid, fixed dt, SSP-RK3; Sod dt = 1e-3, t = 0.2;
     Lax dt = 5e-4, t = 0.13; N = 200) against HyPar's figures (CRWENO5 with rf-char upwinding: Sod 1.86e-3, Lax
-    7.28e-3; WENO5: Sod 2.39e-3). Measured here (scripts/bench/euler-hypar-compare): crweno5 1.899e-3 / 7.479e-3,
-    weno5 2.458e-3 / 8.941e-3 (rf-char, their default), enopade6 2.401e-3 / 8.742e-3 (Lax-Friedrichs, its default).
-    Bounds: the measured values + ~2%. Not met: the issue's enopade6 targets (<= 1.86e-3 / 7.28e-3; rf-char makes
-    enopade6 worse on Sod: 3.09e-3), and crweno5 / weno5 stay 2-3% above HyPar's. Also asserted: rf-char beats
-    Lax-Friedrichs splitting for crweno5 and weno5 on both tubes."""
+    7.28e-3; WENO5: Sod 2.39e-3). Measured here (scripts/bench/euler-hypar-compare; rf-char, the default of every
+    scheme): crweno5 1.899e-3 / 7.478e-3, weno5 2.216e-3 / 7.809e-3, enopade6 1.765e-3 / 6.263e-3: enopade6 below
+    HyPar's CRWENO5 on both tubes, crweno5 2-3% above it. Bounds: crweno5's measured values + ~2%; those of weno5
+    (2.51e-3 / 9.12e-3) and enopade6 (2.45e-3 / 8.92e-3) lie 13-42% above their measured values. Also asserted:
+    rf-char beats Lax-Friedrichs splitting for crweno5 and weno5 on both tubes."""
     cases = [("sod", 1e-3, 0.2), ("lax", 5e-4, 0.13)]
     bounds = {("crweno5", "sod"): 1.94e-3, ("crweno5", "lax"): 7.63e-3, ("weno5", "sod"): 2.51e-3,
               ("weno5", "lax"): 9.12e-3, ("enopade6", "sod"): 2.45e-3, ("enopade6", "lax"): 8.92e-3}
@@ -121,7 +121,7 @@ def implicit():
 
 
 def restart():
-    """Checkpoint/restart (issue #8): a run stopped part-way (max_steps, SIGTERM) and restarted from its
+    """Checkpoint/restart: a run stopped part-way (max_steps, SIGTERM) and restarted from its
     latest checkpoint ends bitwise equal to an uninterrupted run at the same rank count and within 1e-12 at
     another; a checkpoint of other numerics or a corrupted one is refused with one message."""
     import signal
@@ -200,7 +200,7 @@ def restart():
             lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
             check(p.returncode != 0 and len(lines) == 1 and pattern in lines[0],
                   f"restart with {' '.join(map(str, extra))} refused once: {lines}")
-        # A checkpoint of the former 1D driver (its tag had no dim=/axis=): refused with a message that says so.
+        # A checkpoint whose tag names no dimension (no dim=/axis=): refused with a message that says so.
         import h5py
         old = os.path.join(d, "old_1d.h5")
         with open(path, "rb") as src, open(old, "wb") as dst:
@@ -214,7 +214,7 @@ def restart():
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
         lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
         check(p.returncode != 0 and len(lines) == 1 and "former 1D Euler driver" in lines[0],
-              f"checkpoint of the former 1D driver refused once, saying so: {lines}")
+              f"checkpoint whose tag names no dimension refused once, saying so: {lines}")
         data = bytearray(open(path, "rb").read())
         data[len(data) // 2] ^= 0xFF
         bad = os.path.join(d, "bad.h5")

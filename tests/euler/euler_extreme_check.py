@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Positivity at the extremes (issue #18 items 1 and 7): runs bin/euler (under mpiexec) on near-vacuum and huge
+"""Positivity at the extremes: runs bin/euler (under mpiexec) on near-vacuum and huge
 pressure-ratio problems and asserts positivity, the error against the exact solution, the retry count in the
 summary line and the HDF5 output, and the conservation line of a zero initial total.
 
@@ -35,10 +35,10 @@ def positive_finite(path):
     return ok, retries, float(fl["rho"].min()), float(fl["p"].min())
 
 
-# L1(rho) against the exact solution, LeBlanc N = 200 at t = 0.1 (measured at 1 and 2 ranks, see leblanc()).
-# Measured 2.586e-3, 2.587e-3, 2.717e-3, 2.266e-3 (the same at 1 and 2 ranks); bounds with ~15% margin. With
-# rf-char upwinding, the default of crweno5 and weno5 since issue #18 item 3, those two measure 2.919e-3 and
-# 2.985e-3 (rf-char is 10-13% less accurate than Lax-Friedrichs on this case; the bounds are kept, not loosened).
+# L1(rho) against the exact solution, LeBlanc N = 200 at t = 0.1 with -upwinding llf (measured at 1 and 2 ranks,
+# see leblanc()). Measured 2.586e-3, 2.587e-3, 2.717e-3, 2.266e-3 (the same at 1 and 2 ranks); bounds with ~15%
+# margin. With rf-char upwinding, the default of crweno5 and weno5, those two measure 2.919e-3 and 2.985e-3
+# (rf-char is 10-13% less accurate than Lax-Friedrichs on this case), within the same bounds.
 LEBLANC_L1 = {"enopade6": 3.0e-3, "crweno5": 3.0e-3, "weno5": 3.1e-3, "muscl2": 2.6e-3}
 
 
@@ -79,8 +79,8 @@ def stage_retry():
     """A stage state that is not admissible is caught inside the step (not only the final state): LeBlanc with
     MUSCL2, the limiter off and -cfl 1.8 (allowed without the limiter) retries step 1 from its first stage at
     half dt and completes positive. (The high-order schemes need the limiter on LeBlanc: without it their first
-    step stays non-positive down to 1/64 of that step, enopade6 since its shocked lines are all ENO-Pade rows,
-    weno5 since its p = 1 weights, weno5.hpp.)"""
+    step stays non-positive down to 1/64 of that step: enopade6 because its shocked lines are all ENO-Pade rows,
+    weno5 because of its p = 1 weights, weno5.hpp.)"""
     with tempfile.TemporaryDirectory() as d:
         h5 = os.path.join(d, "stage.h5")
         out = run(LEBLANC + ["-scheme", "muscl2", "-positivity", "false", "-cfl", 1.8, "-output", h5])
@@ -122,8 +122,9 @@ def sedov2d():
 
 
 def conservation_zero():
-    """Sod's total momentum starts at zero: the conservation line prints the absolute change (it printed
-    rel_change 1e+299 before), equal to |final - initial|; mass and energy keep the relative change."""
+    """Sod's total momentum starts at zero: the conservation line prints the absolute change (a relative
+    change of the zero total would read ~1e+299), equal to |final - initial|; mass and energy keep the relative
+    change."""
     out = run(["-problem", "sod", "-nx", 100, "-t_final", 0.1])
     m = re.search(r"conservation momentum: initial (\S+) final (\S+) abs_change (\S+) \(initial zero\)", out)
     check(m is not None and float(m.group(1)) == 0.0, "Sod: momentum line reports abs_change for the zero total")
@@ -134,13 +135,13 @@ def conservation_zero():
 
 
 def enopade6_vs_crweno5(ranks="1"):
-    """Issue #18 item 3: on every 1D deck of the battery (inputs/euler/extreme_*.yaml with an exact solution,
+    """On every 1D deck of the battery (inputs/euler/extreme_*.yaml with an exact solution,
     N = 200, the decks' settings) enopade6's L1(rho) is at or below crweno5's, at `ranks` ranks (the tests: 1
-    and 2). Measured (session 24): ratios 0.80-0.996, the closest the near-vacuum rarefactions (near_vacuum_left 0.9956,
-    initial_vacuum_right 0.9943), the same at 1, 2 and 3 ranks. Until session 24 it held at 1 rank only:
-    pressure_1e10's compact-scheme noise in its cold gas depended on round-off (ratio 0.90 / 1.29 / 1.38 at
-    1 / 2 / 3 ranks), gone since faces with an ill-conditioned characteristic basis are treated component-wise
-    (lib/euler/characteristic_conditioning.hpp; docs/euler_extremes.md)."""
+    and 2). Measured: ratios 0.80-0.996, the closest the near-vacuum rarefactions (near_vacuum_left 0.9956,
+    initial_vacuum_right 0.9943), the same at 1, 2 and 3 ranks. The same at every rank count because faces with an
+    ill-conditioned characteristic basis are treated component-wise (lib/euler/characteristic_conditioning.hpp;
+    docs/euler_extremes.md): projected characteristic-wise there, pressure_1e10's compact-scheme noise in its cold
+    gas depends on round-off (ratio 0.90 / 1.29 / 1.38 at 1 / 2 / 3 ranks)."""
     decks = sorted(glob.glob(os.path.join(SRC, "inputs", "euler", "extreme_*.yaml")))
     decks = [d for d in decks if re.search(r"^error: true", open(d).read(), re.M)]
     check(len(decks) == 16, f"{len(decks)} 1D battery decks with an exact solution (16)")

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regression checks of the compact filter of the Euler app (-filter_alpha, -filter_time; issue #18 item 5).
+"""Regression checks of the compact filter of the Euler app (-filter_alpha, -filter_time).
 
     euler_filter_check.py order | noise
 

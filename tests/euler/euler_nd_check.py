@@ -84,9 +84,8 @@ def ranks():
     3D explosion (ENO-Pade; also in 1 MiB block-line batches), 3D Taylor-Green (WENO5). Lines split over ranks are
     transposed (default -line_solve transpose: bitwise the 1-rank result, also for 2048-cell lines moved in
     1 MiB batches of 31 lines at 2 ranks) or solved in place (-line_solve substructured: round-off, amplified by
-    the nonlinear weights of enopade6's shocked lines: 1.0e-11 after 8 steps of the 3D explosion at 4 ranks since
-    its WENO-Z weights take p = 1 (session 23; 5.7e-13 with p = 2), 2.9e-12 after 25 steps of lax_liu_4 before:
-    bound 1e-10)."""
+    the nonlinear weights of enopade6's shocked lines: 1.0e-11 after 8 steps of the 3D explosion at 4 ranks with
+    the p = 1 WENO-Z weights (5.7e-13 with p = 2), 2.9e-12 after 25 steps of lax_liu_4 with p = 2: bound 1e-10)."""
     cases = [["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25],
              ["-dim", 2, "-problem", "lax_liu_4", "-nx", 48, "-ny", 48, "-max_steps", 25, "-line_solve",
               "substructured"],
@@ -96,8 +95,8 @@ def ranks():
              ["-dim", 2, "-problem", "isentropic_vortex", "-scheme", "crweno5", "-nx", 40, "-ny", 40, "-max_steps",
               15],
              ["-dim", 3, "-problem", "explosion", "-nx", 24, "-ny", 24, "-nz", 24, "-max_steps", 8],
-             # many small block-line batches: the batch size must agree on all ranks of a line (it did not:
-             # heap corruption at 2 ranks once a rank had more block lines than one 256 MiB batch)
+             # many small block-line batches: the batch size must agree on all ranks of a line (where it does
+             # not, a rank with more block lines than one 256 MiB batch corrupts the heap at 2 ranks)
              ["-dim", 3, "-problem", "explosion", "-nx", 24, "-ny", 24, "-nz", 24, "-max_steps", 8,
               "-line_batch_mb", 1],
              ["-dim", 3, "-problem", "taylor_green", "-scheme", "weno5", "-nx", 16, "-ny", 16, "-nz", 16,
@@ -173,7 +172,7 @@ def restart():
 def robustness():
     """Double Mach reflection (dx = 1/60, 2 ranks splitting y) and Rayleigh-Taylor (16 x 64, 2 ranks) run to their
     end times (0.2 and 1.95); the app stops with an error if density or pressure ever becomes <= 0 or non-finite,
-    so completing is the check. The issue's dx = 1/120 double Mach takes ~5 CPU-minutes (too long for the
+    so completing is the check. Double Mach at dx = 1/120 takes ~5 CPU-minutes (too long for the
     30-minute CI) and Rayleigh-Taylor at 32 x 128 (2634 steps) were run by hand, positive throughout."""
     for args in (["-dim", 2, "-problem", "double_mach", "-nx", 240, "-ny", 60, "-da_processors_y", 2],
                  ["-dim", 2, "-problem", "rayleigh_taylor", "-nx", 16, "-ny", 64]):

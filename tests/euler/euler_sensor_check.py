@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks of the ENO-Pade shock sensor (lib/euler/enopade6.hpp, issue #18 item 4): no shock rows on smooth
+"""Checks of the ENO-Pade shock sensor (lib/euler/enopade6.hpp): no shock rows on smooth
 problems, shock rows only near the discontinuities of Sod and Shu-Osher, the flag field in the snapshots and the
 XDMF sidecar, the same flags at 1 and 2 ranks. Runs bin/euler (under mpiexec), reads its printed sensor line and
 its HDF5 output.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""euler -target_error (issue #17): the chooser's achieved error against the exact solution is <= the target
+"""euler -target_error: the chooser's achieved error against the exact solution is <= the target
 on Sod, the density wave and the 2D isentropic vortex for two targets a decade apart (the vortex in 3D for one),
 the /model_choice group is complete, and a 2-rank run given the 1-rank run's cost model (-cost_model) takes the
 same choice. Each case runs in a few seconds.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""femdyn checkpoint/restart (issue #8), label reliability. Usage: test_femdyn_checkpoint.py FEMDYN NP
+"""femdyn checkpoint/restart, label reliability. Usage: test_femdyn_checkpoint.py FEMDYN NP
 
 At NP ranks, a StVK beam under a suddenly applied tip load (full Newton, Newmark):
 - periodic checkpoints, then restart from an intermediate file and from `latest`: the final displacement,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""femdyn -dt_adapt (issue #17): the time step from the Zienkiewicz-Xie estimate to meet -target_error E over
+"""femdyn -dt_adapt: the time step from the Zienkiewicz-Xie estimate to meet -target_error E over
 t_final = -steps x -dt. Error measure: max_t |tip(t) - tip_ref(t)| / max_t |tip_ref(t)|, tip = mean -u_y of the
 end face (/steps/tip_deflection), tip_ref = -material stvk at a fine fixed dt = 0.005 interpolated (linearly)
 to the adaptive run's times. Small cantilever -beam_cells 10,1,1 (L = 10, 1 x 1, E = 1000), step tip load,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""femdyn extreme inputs (issue #8), one case per ctest: each completes with a verified answer or stops with a
+"""femdyn extreme inputs, one case per ctest: each completes with a verified answer or stops with a
 clear, specific error; the case says which.
 
 Usage: test_femdyn_extreme.py FEMDYN CASE, CASE one of

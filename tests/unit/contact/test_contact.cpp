@@ -1,5 +1,5 @@
 // Unit tests of lib/contact: mass properties, contact generation, and the physics checks of the contact
-// issue (rest drift, incline stick/slide against g(sin th - mu cos th), sphere drop at rest, splitting
+// stepper (rest drift, incline stick/slide against g(sin th - mu cos th), sphere drop at rest, splitting
 // force ratio min(tan th, mu) from both starts, no energy gain in a frictional drop).
 #include "contact/scenes.hpp"
 #include "contact/stepper.hpp"

@@ -1,4 +1,4 @@
-// Unit tests of the exact contact path's speed-ups (issue #19): the body-space solver reused across free sets
+// Unit tests of the exact contact path's speed-ups: the body-space solver reused across free sets
 // gives the same answers as a fresh one (its symbolic analysis kept, its last factorisation reused only for
 // the same free set) or updated by a few rows, the deferred sparse Delassus matrix equals the eager one, and the splitting passes of
 // a resting pyramid (fixed-point residual, Aitken extrapolation, damping after a stall) converge within the

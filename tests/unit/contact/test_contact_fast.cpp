@@ -1,4 +1,4 @@
-// Unit tests of the fast end of the contact stepper (issue #19): the sparse Delassus matrix equals the dense
+// Unit tests of the fast end of the contact stepper: the sparse Delassus matrix equals the dense
 // one to round-off, the sparse exact path agrees with the dense chain and is chosen only above the
 // crossover, contacts keep their identities and impulses across steps, and the balanced / fast modes stay
 // within their stated errors on the incline and a stack without ever stopping the run, their sweep budget grows
@@ -117,9 +117,9 @@ TEST(ContactSparse, SparsePathAgreesWithDenseAboveCrossover) {
 
 // Every mass scaled by 1,000 scales every impulse by 1,000 and leaves the motion unchanged: the sparse path's
 // residual, state read and the splitting's stop rule are in velocities (A_ii-scaled), so the heavy scene takes
-// the same passes and ends where the light one does (to the solves' tolerances). Before, the stop
-// rule in impulses with an absolute 1 N s floor was 1,000 times stricter on the heavy pile (passes at their cap
-// of 50, 2.5x the time per step on pile_grid).
+// the same passes and ends where the light one does (to the solves' tolerances). A stop rule in impulses
+// with an absolute 1 N s floor is 1,000 times stricter on the heavy pile (passes at their cap of 50, 2.5x the
+// time per step on pile_grid).
 TEST(ContactSparse, SplittingIsTheSameForAnyScaleOfTheMasses) {
   SceneParams sp;
   sp.scene = "pyramid";
@@ -227,7 +227,7 @@ TEST(ContactAccuracyModes, StickingCreepWithinStatedError) {
     Stepper st(o);
     for (int k = 0; k < 200; ++k) ASSERT_FALSE(st.step(&b).failed);
     std::printf("incline 20 deg mu 0.5 (%s): creep %.2e m in 2 s\n", accuracyName(m), drift(b, b0));
-    // stated bounds (measured: exact 5.2e-9, balanced 2.0e-8, fast 2.5e-8; fast was 1.0e-5 with point PGS)
+    // stated bounds (measured: exact 5.2e-9, balanced 2.0e-8, fast 2.5e-8; fast with point PGS: 1.0e-5)
     const double bound = m == ContactAccuracy::Exact ? 1e-8 : 1e-7;
     EXPECT_LE(drift(b, b0), bound) << accuracyName(m);
   }

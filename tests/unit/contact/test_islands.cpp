@@ -1,4 +1,4 @@
-// Unit tests of contact islands (issue #20): the split of a hand-built scene (two piles and a resting box on
+// Unit tests of contact islands: the split of a hand-built scene (two piles and a resting box on
 // the ground: three islands with the expected bodies and contacts; a static slab shared by two piles does
 // not join them), the renumbered island scene, and the stepper per island: the same motion as the whole-scene
 // solve to the LCP tolerance, bitwise the same whatever order the islands are solved in (what makes 1 and 2

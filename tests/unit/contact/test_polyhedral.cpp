@@ -119,9 +119,9 @@ TEST(ContactPolyhedral, InclineForceRatio) {
 
 // Lemke with refactorisation (lemke_rf.hpp) ends, one way or the other, within a few n pivots on the first
 // step of a pyramid of base 5 (100 contacts, d = 8: a 1,000-row, highly degenerate polyhedral LCP). There the
-// pivots lose the feasibility of the basis (a basic value of -1.5e-6 after a refactorisation) and used to cycle
-// at that point to the cap of 100,000 pivots (minutes a step); the feasibility check after each
-// refactorisation now stops it so that the chain's next solver is tried. Invariant checked: solved and verified,
+// pivots lose the feasibility of the basis (a basic value of -1.5e-6 after a refactorisation); unchecked, Lemke
+// cycles from that point to the cap of 100,000 pivots (minutes a step). The feasibility check after each
+// refactorisation stops it so that the chain's next solver is tried. Invariant checked: solved and verified,
 // or a failure that is not the cap, within 5 n pivots.
 TEST(ContactPolyhedral, LemkeRefactoredEndsOnTheDegeneratePyramid) {
   SceneParams sp;

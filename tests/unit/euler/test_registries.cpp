@@ -1,4 +1,4 @@
-// The registries that document -problem and -scheme in the Euler app's -help (issue #15): every registered
+// The registries that document -problem and -scheme in the Euler app's -help: every registered
 // value has a one-line description, and the documented lists are exactly the lists the factories accept.
 #include "euler/problem.hpp"
 #include "euler/problem_nd.hpp"

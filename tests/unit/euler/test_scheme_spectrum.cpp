@@ -1,4 +1,4 @@
-// Measured modified wavenumbers: the linear Pade core against Lele's formula to 1e-10 (issue #7); every
+// Measured modified wavenumbers: the linear Pade core against Lele's formula to 1e-10; every
 // flux-split scheme consistent at small w (k'dx -> w) and, for the upwind-biased ones, dissipative (Im <= 0).
 #include "euler/scheme_spectrum.hpp"
 

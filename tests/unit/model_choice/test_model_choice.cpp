@@ -389,8 +389,8 @@ TEST(Chooser, CheckRunsAtAQuarterAndHalfTheFinalResolution) {
 }
 
 // Every pilot record carries its own family's fit at its resolution, though a family's records are not adjacent
-// (all pilots at n0 first): until 2026-11-29 the second family's fit was written over the first family's
-// finest pilot, and the second family's pilot at n0 had none. ("b" has 1.5x a's errors: with 3x, its candidate
+// (all pilots at n0 first): the second family's fit is not written over the first family's finest pilot, and
+// the second family's pilot at n0 has its own. ("b" has 1.5x a's errors: with 3x, its candidate
 // by its first two pilots costs 2.25x a's and it is left out before its third, see
 // JudgesAFamilyByItsFirstTwoPilotsOnAFlowWithJumps.)
 TEST(Chooser, PilotRecordsCarryTheirOwnFamilysEstimate) {
@@ -499,8 +499,8 @@ TEST(Chooser, EscalationStaysWithinAGrowthFactorOfTheMissedRun) {
 }
 
 // After a miss nothing within the growth cap helps: the fallback at any cost judges the families without a final
-// run by their fits raised by the worst miss (Lax-Liu 6 at 6e-3 ran enopade6 n = 512 for 5 minutes on a fit
-// from the same pilots as weno5's, which had missed 3-4x).
+// run by their fits raised by the worst miss (unraised, Lax-Liu 6 at 6e-3 runs enopade6 n = 512 for 5 minutes
+// on a fit from the same pilots as weno5's, which missed 3-4x).
 TEST(Chooser, FallbackRaisesTheFitsOfFamiliesWithoutAFinalRunByTheWorstMiss) {
   const auto feasible = [](const CandidateRow& r) { return r.error <= 1e-3; };
   const std::vector<CandidateRow> table = {
