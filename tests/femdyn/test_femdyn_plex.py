@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""femdyn -backend plex (distributed DMPlex mesh, state and output; issue #16) against the serial CHOLMOD path.
+"""femdyn -backend plex (distributed DMPlex mesh, state and output) against the serial CHOLMOD path.
 
 Usage: test_femdyn_plex.py FEMDYN
 
