@@ -18,8 +18,8 @@ struct AppOptions {
   StepperOptions step;
   PetscInt steps = 200, output_every = 10, dump_max = 1000;
   PetscReal overlap_tol = 1e-3;
-  std::string output = "contact.h5", dump; // dump: -dump_problems prefix ("": none)
-  bool phase_times = false;                // -contact_phase_times: each rank's time per phase at the end
+  std::string output, dump; // dump: -dump_problems prefix ("": none)
+  bool phase_times = false; // -contact_phase_times: each rank's time per phase at the end
 };
 
 PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o);

@@ -2,6 +2,7 @@
 #include "contact_output.hpp"
 
 #include "contact/xdmf_points.hpp"
+#include "io/xdmf.hpp"
 #include "io/h5_output.hpp"
 
 namespace suite::contact {
@@ -25,11 +26,12 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   PetscCall(out.writeAttribute("/", "steps_requested", outcome.steps_requested));
   PetscCall(out.writeAttribute("/", "steps", outcome.steps_done));
   PetscCall(out.writeAttribute("/", "status", outcome.status));
+  if (!outcome.failure.empty()) PetscCall(out.writeAttribute("/", "failure", outcome.failure));
   PetscCall(out.writeAttribute("/", "simplifications", simplifications(step, bodies)));
   PetscCall(rec.write(out, bodies));
   PetscCall(out.commit(&ctx));
   if (ctx.rank() == 0 && !rec.frame_time.empty())
-    writeXdmf(path + ".xmf", path, bodies.size(), rec.frame_time.size(), rec.frame_time);
+    writeXdmf(suite::xdmfPathFor(path), path, bodies.size(), rec.frame_time.size(), rec.frame_time);
   PetscFunctionReturn(0);
 }
 

@@ -15,7 +15,8 @@ namespace suite::contact {
 
 // The run's outcome: "completed", "failed: ..." or "stopped at step N (...)", steps asked for and done.
 struct RunOutcome {
-  std::string status;
+  std::string status;  // core/run_summary.hpp's runStatus
+  std::string failure; // a failed step's cause ("step N: why; problem dumped to FILE"), else empty
   long long steps_requested = 0, steps_done = 0;
 };
 

@@ -2,6 +2,9 @@
 // (core/time_loop.hpp) through ContactStepping, the app's side of it.
 #include "contact_run.hpp"
 
+#include "core/run_summary.hpp"
+#include "io/xdmf.hpp"
+
 #include "contact_checkpoint.hpp"
 #include "contact_options.hpp"
 #include "contact_output.hpp"
@@ -143,15 +146,20 @@ PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
   PetscFunctionBeginUser;
   PetscCall(suite::LogStages::get(&stages));
   PetscCall(PetscLogStagePush(stages.output));
-  std::string status = "completed";
-  if (sum.failed) status = "failed: " + failure_;
-  if (sum.stopped) status = "stopped at step " + std::to_string(sum.steps) + " (" + sum.stop_reason + ")";
+  const std::string status = suite::runStatus(sum);
   if (rec_.frame_step.back() != sum.steps) rec_.frame(bodies_, sum.steps, sum.t);
   PetscCall(autoSummary());
   PetscCall(phaseSummary());
-  PetscCall(writeContactOutput(ctx_, o_.output, o_.scene, o_.step, bodies_, rec_,
-                               {status, (long long)o_.steps, (long long)sum.steps}));
+  std::vector<std::string> written;
+  if (!o_.output.empty()) {
+    PetscCall(
+        writeContactOutput(ctx_, o_.output, o_.scene, o_.step, bodies_, rec_,
+                           {status, sum.failed ? failure_ : "", (long long)o_.steps, (long long)sum.steps}));
+    written = {o_.output, suite::xdmfPathFor(o_.output)};
+  }
   PetscCall(PetscLogStagePop());
+  PetscCall(suite::logRunSummary(
+      ctx_, status, suite::stepsText(sum) + " (" + std::to_string(bodies_.size()) + " bodies)", written));
   PetscFunctionReturn(0);
 }
 
@@ -237,7 +245,7 @@ PetscErrorCode run(suite::RunContext& ctx) {
     PetscCall(PetscLogStagePop());
     PetscFunctionReturn(0);
   }
-  PetscCall(suite::checkOutputWritable(ctx.comm(), o.output, "output"));
+  if (!o.output.empty()) PetscCall(suite::checkOutputWritable(ctx.comm(), o.output, "output"));
   const SceneSize size = sceneSize(o.scene); // known before the scene is built, except from a file
   if (size.bodies > 0) PetscCall(checkContactSizes(ctx.comm(), o, size));
   std::vector<Body> bodies;

@@ -15,17 +15,6 @@ using namespace suite::euler;
 
 namespace {
 const char* const kFieldNames[5] = {"rho", "u", "v", "w", "p"};
-
-// out.h5 -> out.xmf (beside it); the HDF5 name as the sidecar refers to it (relative: its file name).
-std::string xdmfPathFor(const std::string& h5_path) {
-  std::string xmf = h5_path;
-  if (xmf.size() > 3 && xmf.substr(xmf.size() - 3) == ".h5") xmf = xmf.substr(0, xmf.size() - 3);
-  return xmf + ".xmf";
-}
-std::string fileNameOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 } // namespace
 
 PetscErrorCode EulerRun::primitiveFields(Vec U, std::vector<double> fields[5]) const {
@@ -89,6 +78,7 @@ PetscErrorCode EulerRun::writeRunAttributes() {
   PetscCall(out_.writeAttribute("/", "nx", (long long)opt_.n[0]));
   PetscCall(out_.writeAttribute("/", "time", time_));
   PetscCall(out_.writeAttribute("/", "steps", (long long)step_));
+  PetscCall(out_.writeAttribute("/", "status", status_));
   PetscCall(out_.writeAttribute("/", "gamma", problem_.gamma));
   PetscCall(out_.writeAttribute("/", "cfl", opt_.cfl));
   PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
@@ -182,8 +172,8 @@ PetscErrorCode EulerRun::writeXdmf() {
     grid.origin.push_back(problem_.lo[d]);
     grid.spacing.push_back(dx_[d]);
   }
-  PetscCall(suite::writeXdmfRectSeries(ctx_.comm(), xdmfPathFor(opt_.output), fileNameOf(opt_.output), grid,
-                                       steps));
+  PetscCall(suite::writeXdmfRectSeries(ctx_.comm(), suite::xdmfPathFor(opt_.output),
+                                       suite::fileNameOf(opt_.output), grid, steps));
   PetscFunctionReturn(0);
 }
 
@@ -202,8 +192,6 @@ PetscErrorCode EulerRun::writeOutput() {
   PetscCall(writeFields("/final", U_, time_));
   PetscCall(writeXdmf());
   PetscCall(out_.commit(&ctx_));
-  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: wrote %s and %s", opt_.output.c_str(),
-                           xdmfPathFor(opt_.output).c_str()));
   PetscFunctionReturn(0);
 }
 

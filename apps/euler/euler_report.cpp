@@ -3,9 +3,12 @@
 #include "euler_run.hpp"
 
 #include "core/log.hpp"
+#include "core/run_summary.hpp"
+#include "io/xdmf.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace euler_app {
 
@@ -54,14 +57,16 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
                            rows[0], rows[1], rows[1] > 0 ? (double)rows[0] / (double)rows[1] : 0.0));
   if (dim() == 1) c.counts[0] = rows[0];
   shock_rows_[0] = rows[0], shock_rows_[1] = rows[1]; // for the output's attributes
-  const double cells = (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * sum.steps, rate = cells / wall_solve_;
+  // The rate of this run's own steps (a restart continues a history it did not time; none left: no rate).
+  const double cells = (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * sum.stepsTaken(),
+               rate = sum.stepsTaken() > 0 && wall_solve_ > 0 ? cells / wall_solve_ : 0.0;
   const char* head =
       "euler: %" PetscInt_FMT " steps to t = %.6g in %.3f s (%.3e cell-steps/s, %.3e per rank; "
       "rank 0 CPU %.3f s); steps retried %lld, shock rows %lld, limited faces %lld, component-wise faces "
       "%lld";
   if (dim() == 1) { // the line's counts are rank 0's, but for the shock rows (summed)
     const std::string fmt = std::string(head) + ", line solves %lld (exact fallbacks %lld)";
-    PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.stepsTaken(), sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
                              c.counts[3], c.solves, c.counts[2]));
   } else { // shock rows, limited faces, fallbacks and component-wise faces summed over the ranks; the solve calls
@@ -69,7 +74,7 @@ PetscErrorCode EulerRun::reportStatistics(const suite::LoopSummary& sum) {
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, c.counts, 4, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
     const std::string fmt =
         std::string(head) + "; rank 0: %lld batched line solves of %lld lines; exact fallbacks %lld";
-    PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.steps, sum.t, wall_solve_, rate,
+    PetscCall(suite::logInfo(ctx_.comm(), quiet(), fmt.c_str(), sum.stepsTaken(), sum.t, wall_solve_, rate,
                              rate / ctx_.size(), cpu_solve_, (long long)sum.retries, c.counts[0], c.counts[1],
                              c.counts[3], c.solves, c.lines, c.counts[2]));
   }
@@ -93,7 +98,18 @@ PetscErrorCode EulerRun::writeFinal(const suite::LoopSummary& sum) {
   PetscCall(reportConservation());
   PetscCall(reportStatistics(sum));
   if (opt_.error) PetscCall(computeErrors());
+  status_ = suite::runStatus(sum);
   PetscCall(writeOutput());
+  std::vector<std::string> written;
+  if (!opt_.output.empty()) written = {opt_.output, suite::xdmfPathFor(opt_.output)};
+  std::string what = suite::stepsText(sum);
+  if (sum.stepsTaken() > 0 && sum.wall > 0) {
+    char rate[64];
+    std::snprintf(rate, sizeof rate, " (%.3e cell-steps/s)",
+                  (double)opt_.n[0] * opt_.n[1] * opt_.n[2] * sum.stepsTaken() / sum.wall);
+    what += rate;
+  }
+  PetscCall(suite::logRunSummary(ctx_, status_, what, written));
   PetscFunctionReturn(0);
 }
 

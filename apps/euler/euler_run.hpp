@@ -171,6 +171,7 @@ private:
   std::vector<std::pair<PetscInt, double>> snapshots_;
   std::vector<double> spacetime_rho_, spacetime_t_; // -spacetime_every (1D)
   PetscInt step_ = 0;                // the last completed step (messages of the right-hand side)
+  std::string status_ = "completed"; // the output's status attribute (core/run_summary.hpp)
   PetscInt retries_ = 0;             // steps retried at half dt (TimeLoop's summary, for the output)
   long long shock_rows_[2] = {0, 0}; // shock rows, rows the sensor examined (all ranks; reportStatistics)
   double time_ = 0.0, wall_solve_ = 0.0, cpu_solve_ = 0.0, cpu_first_step_ = 0.0;

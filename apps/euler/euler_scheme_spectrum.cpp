@@ -6,6 +6,7 @@
 #include "euler/schemes.hpp"
 
 #include "core/log.hpp"
+#include "core/run_summary.hpp"
 #include "euler/scheme_spectrum.hpp"
 
 #include <exception>
@@ -42,6 +43,11 @@ PetscErrorCode EulerRun::schemeSpectrum() {
                                cols[0][i], cols[1][i], cols[2][i], cols[3][i], cols[4][i], cols[5][i]));
   }
   if (!opt_.output.empty()) PetscCall(writeSchemeSpectrum(n, cols));
+  std::vector<std::string> written;
+  if (!opt_.output.empty()) written.push_back(opt_.output);
+  PetscCall(suite::logRunSummary(ctx_, "completed",
+                                 "scheme spectrum of " + opt_.scheme + " at " + std::to_string(n) + " points",
+                                 written));
   PetscFunctionReturn(0);
 }
 
@@ -56,8 +62,8 @@ PetscErrorCode EulerRun::writeSchemeSpectrum(int n, const std::vector<double> co
   const char* names[6] = {"w", "smooth_re", "smooth_im", "shock_re", "shock_im", "pade_exact"};
   for (int c = 0; c < 6; ++c)
     PetscCall(out_.writeReplicated(std::string("/scheme_spectrum/") + names[c], cols[c].data(), {m}, ""));
+  PetscCall(out_.writeAttribute("/", "status", "completed"));
   PetscCall(out_.commit(&ctx_));
-  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: wrote %s", opt_.output.c_str()));
   PetscFunctionReturn(0);
 }
 

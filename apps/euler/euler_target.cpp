@@ -8,6 +8,7 @@
 #include "euler/schemes.hpp"
 #include "euler_run.hpp"
 #include "model_choice/choice_output.hpp"
+#include "io/xdmf.hpp"
 #include "model_choice/chooser.hpp"
 
 #include <algorithm>
@@ -229,7 +230,9 @@ PetscErrorCode reportChoice(MPI_Comm comm, const mc::ModelChooser& chooser, doub
   PetscFunctionBeginUser;
   if (std::isfinite(exact_l1))
     PetscCall(PetscSNPrintf(exact, sizeof exact, "; L1 error against the exact solution %.3e", exact_l1));
-  PetscCall(suite::logInfo(comm, false, "%s%s", chooser.summary().c_str(), exact));
+  const std::string wrote = output.empty() ? "; no output file (-output FILE writes one)"
+                                           : "; wrote " + output + ", " + suite::xdmfPathFor(output);
+  PetscCall(suite::logInfo(comm, false, "%s%s%s", chooser.summary().c_str(), exact, wrote.c_str()));
   PetscCheck(
       chooser.met(), comm, PETSC_ERR_NOT_CONVERGED,
       "-target_error %g missed: the final run's estimated error is %.3e after %zu escalations (%s): %s",

@@ -3,6 +3,7 @@
 #include "femdyn_dynamics.hpp"
 
 #include "core/log.hpp"
+#include "core/run_summary.hpp"
 #include "core/clocks.hpp"
 
 #include <algorithm>
@@ -156,6 +157,7 @@ PetscErrorCode FemdynDynamics::logSummary(const suite::LoopSummary& summary) con
 PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
   PetscFunctionBeginUser;
   run_.res_.loop_time = summary.wall;
+  run_.res_.status = suite::runStatus(summary);
   run_.res_.u_full = run_.model_.fullVector(s_.u);
   PetscCall(logSummary(summary));
   if (probe_) PetscCall(probe_->logSummary());
@@ -167,6 +169,8 @@ PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
     PetscCall(logTimeAdapt());
   }
   PetscCall(run_.writeOutput());
+  PetscCall(
+      suite::logRunSummary(run_.ctx_, run_.res_.status, suite::stepsText(summary), run_.writtenFiles()));
   PetscFunctionReturn(0);
 }
 

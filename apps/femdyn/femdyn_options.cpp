@@ -157,8 +157,6 @@ PetscErrorCode FemdynRun::checkOptions() const {
   PetscCheck(opt_.is_static || opt_.dt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g: time step must be > 0",
              opt_.dt);
   PetscCheck(opt_.steps >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-steps %d: must be >= 0", (int)opt_.steps);
-  PetscCheck(!opt_.output.empty() || ctx_.helpRequested(), comm, PETSC_ERR_ARG_WRONG,
-             "-output FILE.h5 is required");
   PetscCheck(opt_.load_release >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_release %g: must be >= 0",
              opt_.load_release);
   PetscCheck(opt_.rho_inf >= 0 && opt_.rho_inf <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -27,6 +27,7 @@ PetscErrorCode writeColumn(suite::H5Output& out, const std::vector<StepRecord>& 
 
 PetscErrorCode FemdynRun::writeRunAttributes(suite::H5Output& out) const {
   PetscFunctionBeginUser;
+  PetscCall(out.writeAttribute("/", "status", res_.status));
   PetscCall(out.writeAttribute("/", "mode", opt_.is_static ? "static" : "dynamic"));
   PetscCall(out.writeAttribute("/", "material", opt_.materialAuto() ? "auto" : material_->name()));
   PetscCall(out.writeAttribute("/", "ordering", opt_.ordering));
@@ -132,6 +133,7 @@ PetscErrorCode FemdynRun::writeOutput() const {
   suite::H5Output out;
   std::vector<suite::XdmfTetStep> xsteps;
   PetscFunctionBeginUser;
+  if (opt_.output.empty()) PetscFunctionReturn(0); // no -output: nothing written
   PetscCall(suite::LogStages::get(&stages));
   suite::StageScope stage(stages.output);
   PetscCall(out.open(ctx_.comm(), opt_.output));
@@ -155,7 +157,8 @@ PetscErrorCode FemdynRun::writeOutput() const {
   PetscCall(writeSnapshots(out, &xsteps));
   PetscCall(out.commit(&ctx_));
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)mesh_.numNodes(), (ull)mesh_.numElems()};
-  PetscCall(suite::writeXdmfTetSeries(ctx_.comm(), opt_.output + ".xmf", opt_.output, xm, xsteps));
+  PetscCall(suite::writeXdmfTetSeries(ctx_.comm(), suite::xdmfPathFor(opt_.output),
+                                      suite::fileNameOf(opt_.output), xm, xsteps));
   PetscFunctionReturn(0);
 }
 

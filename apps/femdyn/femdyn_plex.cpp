@@ -6,7 +6,9 @@
 #include "core/log.hpp"
 #include "fem/material.hpp"
 #include "fem/plex_beam.hpp"
+#include "core/run_summary.hpp"
 #include "io/h5_output.hpp"
+#include "io/xdmf.hpp"
 
 #include <algorithm>
 
@@ -83,7 +85,7 @@ PetscErrorCode PlexRun::setup() {
   PetscFunctionBeginUser;
   const double t0 = suite::wallSeconds();
   PetscCall(refuseUnsupported(comm, o_));
-  PetscCall(suite::checkOutputWritable(comm, o_.output, "output"));
+  if (!o_.output.empty()) PetscCall(suite::checkOutputWritable(comm, o_.output, "output"));
   PetscCall(lameFromYoung(comm, o_.young, o_.poisson, &lame));
   PetscCall(createPlexBeam(comm, o_.beam, o_.plex_rank_cap, &dm_));
   PlexElasticParams p;
@@ -118,9 +120,11 @@ PetscErrorCode PlexRun::afterStep(long long step, bool* stop) {
   PetscCall(ctx_.stopRequested(stop));
   PetscCall(policy_.due(step, &due));
   if (policy_.enabled() && (due || *stop)) PetscCall(writeCheckpoint(step));
-  if (*stop)
+  if (*stop) {
+    status_ = ctx_.stopReason() == "max_walltime" ? "stopped by walltime" : "stopped by signal";
     PetscCall(suite::logInfo(ctx_.comm(), false, "femdyn plex: stopped after step %lld (%s)", step,
                              ctx_.stopReason().c_str()));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -159,6 +163,13 @@ PetscErrorCode PlexRun::solve() {
                            "%.3f s",
                            tip_, tip_ux_, o_.is_static ? "static solve" : "time steps", solve_s_));
   PetscCall(write());
+  char what[128];
+  PetscCall(PetscSNPrintf(what, sizeof what, "%s in %.3f s (distributed, %d ranks)",
+                          o_.is_static ? "static solve" : (std::to_string(steps_.size()) + " steps").c_str(),
+                          solve_s_, ctx_.size()));
+  std::vector<std::string> written;
+  if (!o_.output.empty()) written = {o_.output, suite::xdmfPathFor(o_.output)};
+  PetscCall(suite::logRunSummary(ctx_, status_, what, written));
   PetscFunctionReturn(0);
 }
 

@@ -60,6 +60,7 @@ private:
   bool restarted_ = false;
   suite::fem::PlexStepStats stat_;
   double tip_ = 0, tip_ux_ = 0, setup_s_ = 0, solve_s_ = 0;
+  std::string status_ = "completed"; // the output's status attribute (core/run_summary.hpp)
 };
 
 } // namespace femdyn_app

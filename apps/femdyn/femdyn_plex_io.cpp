@@ -56,6 +56,7 @@ PetscErrorCode PlexRun::writeRunAttributes(suite::H5Output& out) const {
   PetscCallMPI(MPI_Allreduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, comm));
   PetscCallMPI(MPI_Allreduce(&rss, &rss_sum, 1, MPI_DOUBLE, MPI_SUM, comm));
   PetscCall(out.writeProvenance(ctx_));
+  PetscCall(out.writeAttribute("/", "status", status_));
   PetscCall(out.writeAttribute("/", "mode", o_.is_static ? "static" : "dynamic"));
   PetscCall(out.writeAttribute("/", "backend", "plex"));
   PetscCall(out.writeAttribute("/", "material", o_.material));
@@ -167,6 +168,7 @@ PetscErrorCode PlexRun::writeMesh(suite::H5Output& out) const {
 PetscErrorCode PlexRun::write() const {
   suite::H5Output out;
   PetscFunctionBeginUser;
+  if (o_.output.empty()) PetscFunctionReturn(0); // no -output: nothing written
   PetscCall(out.open(ctx_.comm(), o_.output));
   PetscCall(writeRunAttributes(out));
   if (o_.is_static)
@@ -178,7 +180,8 @@ PetscErrorCode PlexRun::write() const {
   PetscCall(out.commit(&ctx_));
   const double t = steps_.empty() ? 0.0 : steps_.back().time;
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)nv_, (ull)nc_};
-  PetscCall(suite::writeXdmfTetSeries(ctx_.comm(), o_.output + ".xmf", o_.output, xm,
+  PetscCall(suite::writeXdmfTetSeries(ctx_.comm(), suite::xdmfPathFor(o_.output),
+                                      suite::fileNameOf(o_.output), xm,
                                       {{t, {{"displacement", "/final/u", 3}}}}));
   PetscFunctionReturn(0);
 }

@@ -5,6 +5,8 @@
 
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
+#include "core/run_summary.hpp"
+#include "io/xdmf.hpp"
 #include "core/time_loop.hpp"
 #include "core/clocks.hpp"
 #include "femdyn_dynamics.hpp"
@@ -50,7 +52,13 @@ PetscErrorCode FemdynRun::solveDynamic() {
   PetscFunctionReturn(0);
 }
 
+std::vector<std::string> FemdynRun::writtenFiles() const {
+  if (opt_.output.empty()) return {};
+  return {opt_.output, suite::xdmfPathFor(opt_.output)};
+}
+
 PetscErrorCode FemdynRun::solve() {
+  char what[160];
   PetscFunctionBeginUser;
   if (!opt_.is_static && opt_.steps > 0) {
     PetscCall(solveDynamic());
@@ -61,6 +69,12 @@ PetscErrorCode FemdynRun::solve() {
   else
     res_.u_full.assign(model_.numDofs(), 0.0); // -steps 0: setup, ordering and analysis only
   PetscCall(writeOutput());
+  if (opt_.is_static)
+    PetscCall(PetscSNPrintf(what, sizeof what, "static solve, tip deflection %.6g in %.3f s",
+                            res_.tip_deflection, res_.loop_time));
+  else
+    PetscCall(PetscSNPrintf(what, sizeof what, "setup and ordering only (-steps 0)"));
+  PetscCall(suite::logRunSummary(ctx_, res_.status, what, writtenFiles()));
   PetscFunctionReturn(0);
 }
 

@@ -78,6 +78,7 @@ inline constexpr StepColumn<int> kStepCounts[] = {{"newton_iterations", &StepRec
                                                   {"converged", &StepRecord::converged, ""}};
 
 struct Results {
+  std::string status = "completed"; // the output's status attribute (core/run_summary.hpp)
   suite::fem::HapticProbeRecord probe;
   double ordering_time = 0, setup_time = 0, loop_time = 0;
   suite::fem::OrderingMetrics metrics;
@@ -134,6 +135,7 @@ private:
   PetscErrorCode solveDynamic();
   // Output (femdyn_output.cpp), in the output log stage.
   PetscErrorCode writeOutput() const;
+  std::vector<std::string> writtenFiles() const; // the output and its sidecar (none without -output)
   PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
   PetscErrorCode writeOrdering(suite::H5Output& out) const;
   PetscErrorCode writeMesh(suite::H5Output& out) const;

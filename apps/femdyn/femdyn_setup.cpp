@@ -82,7 +82,7 @@ PetscErrorCode FemdynRun::setup() {
   MPI_Comm comm = ctx_.comm();
   Lame lame;
   PetscFunctionBeginUser;
-  PetscCall(suite::checkOutputWritable(comm, opt_.output, "output"));
+  if (!opt_.output.empty()) PetscCall(suite::checkOutputWritable(comm, opt_.output, "output"));
   const double t0 = suite::wallSeconds();
   PetscCall(lameFromYoung(comm, opt_.young, opt_.poisson, &lame));
   PetscCall(createMaterial(comm, opt_.materialAuto() ? "linear" : opt_.material, lame, &material_));

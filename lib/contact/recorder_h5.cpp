@@ -12,6 +12,7 @@ PetscErrorCode writeBodies(H5Output& out, const std::vector<Body>& bodies) {
   std::vector<int> type(nb), is_static(nb);
   std::vector<double> dims(nb * 4), mass(nb);
   std::string names;
+  std::vector<std::string> name(nb);
   PetscFunctionBeginUser;
   for (U i = 0; i < nb; ++i) {
     const Body& b = bodies[i];
@@ -23,12 +24,14 @@ PetscErrorCode writeBodies(H5Output& out, const std::vector<Body>& bodies) {
     dims[4 * i + 3] = b.shape.half.y();
     mass[i] = b.mass;
     names += (i ? "," : "") + b.name;
+    name[i] = b.name;
   }
   if (nb) {
     PetscCall(out.writeReplicated("/bodies/type", type.data(), {nb}, ""));
     PetscCall(out.writeReplicated("/bodies/static", is_static.data(), {nb}, ""));
     PetscCall(out.writeReplicated("/bodies/radius_halflength_halfx_halfy", dims.data(), {nb, 4}, "m"));
     PetscCall(out.writeReplicated("/bodies/mass", mass.data(), {nb}, "kg"));
+    PetscCall(out.writeReplicatedStrings("/bodies/name", name)); // the scene's names, in body order
   }
   PetscCall(out.writeAttribute("/bodies", "names", names));
   PetscCall(out.writeAttribute("/bodies", "types", "0 plane, 1 sphere, 2 box, 3 capsule, 4 cylinder"));

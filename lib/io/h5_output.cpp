@@ -7,6 +7,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -210,6 +211,45 @@ PetscErrorCode H5Output::writeReplicated(const std::string& ds, const long long*
 PetscErrorCode H5Output::writeReplicated(const std::string& ds, const int* data, const Dims& dims,
                                          const char* units) {
   return writeArray(ds, data, dims, Dims(dims.size(), 0), dims, units, true);
+}
+
+PetscErrorCode H5Output::writeReplicatedStrings(const std::string& dataset,
+                                                const std::vector<std::string>& values) {
+  PetscFunctionBeginUser;
+  PetscCheck(file_ >= 0, comm_, PETSC_ERR_ORDER, "H5Output not open (writing %s)", dataset.c_str());
+  size_t width = 1;
+  for (const std::string& v : values) width = std::max(width, v.size() + 1);
+  std::vector<char> buf(std::max<size_t>(1, values.size()) * width, '\0');
+  for (size_t i = 0; i < values.size(); ++i) values[i].copy(buf.data() + i * width, values[i].size());
+  hsize_t n = values.size();
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, width);
+  H5Tset_strpad(type, H5T_STR_NULLTERM);
+  hid_t fspace = H5Screate_simple(1, &n, nullptr);
+  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  if (h5::exists((hid_t)file_, dataset)) H5Ldelete((hid_t)file_, dataset.c_str(), H5P_DEFAULT);
+  hid_t dset = H5Dcreate2((hid_t)file_, dataset.c_str(), type, fspace, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(lcpl);
+  hsize_t one = 1;
+  hid_t mspace = rank_ == 0 && n > 0 ? H5Screate_simple(1, &n, nullptr) : H5Screate_simple(1, &one, nullptr);
+  if (rank_ != 0 || n == 0) {
+    H5Sselect_none(mspace);
+    H5Sselect_none(fspace);
+  }
+  hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  herr_t st = dset >= 0 ? H5Dwrite(dset, type, mspace, fspace, dxpl, buf.data()) : -1;
+  H5Pclose(dxpl);
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  H5Tclose(type);
+  if (dset >= 0) H5Dclose(dset);
+  int ok = st >= 0, all_ok = 0;
+  PetscCallMPI(MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_LAND, comm_));
+  PetscCheck(all_ok, comm_, PETSC_ERR_FILE_WRITE, "writing dataset %s to %s failed (disk full?)",
+             dataset.c_str(), tmp_path_.c_str());
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode H5Output::flush() {

@@ -60,6 +60,9 @@ public:
                                  const char* units);
   PetscErrorCode writeReplicated(const std::string& dataset, const int* data, const Dims& dims,
                                  const char* units);
+  // Replicated list of strings (rank 0's), as fixed-length null-terminated strings of the longest's length
+  // (parallel HDF5 writes no variable-length data); h5py reads them as bytes.
+  PetscErrorCode writeReplicatedStrings(const std::string& dataset, const std::vector<std::string>& values);
   PetscErrorCode createGroup(const std::string& group);
   // Flushes HDF5 buffers to the temporary file (for long-lived files such as batch results).
   PetscErrorCode flush();

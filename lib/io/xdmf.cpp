@@ -7,6 +7,17 @@
 #include <sstream>
 
 namespace suite {
+
+std::string xdmfPathFor(const std::string& h5_path) {
+  std::string xmf = h5_path;
+  if (xmf.size() > 3 && xmf.compare(xmf.size() - 3, 3, ".h5") == 0) xmf.resize(xmf.size() - 3);
+  return xmf + ".xmf";
+}
+
+std::string fileNameOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
 namespace {
 
 std::string join(const std::vector<unsigned long long>& v) {

@@ -9,6 +9,12 @@
 
 namespace suite {
 
+// The sidecar of an output file, the one naming rule of every program: out.h5 -> out.xmf beside it (a name
+// without the .h5 extension gets .xmf appended: out -> out.xmf).
+std::string xdmfPathFor(const std::string& h5_path);
+// The file name of a path (what a sidecar refers to: the .h5 beside it, relative).
+std::string fileNameOf(const std::string& path);
+
 struct XdmfAttribute {
   std::string name;           // shown in ParaView
   std::string dataset;        // HDF5 path inside the file, e.g. /snapshots/000010/rho

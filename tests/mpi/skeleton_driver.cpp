@@ -118,8 +118,8 @@ PetscErrorCode writeOutput(const suite::RunContext& ctx, const DriverOptions& o,
   if (o.abort_in_output) std::abort(); // a job killed while writing: the final name must stay untouched
   PetscCall(out.commit(&ctx));
   suite::XdmfRectGrid grid{{(unsigned long long)o.n + 1}, {0.0}, {1.0 / o.n}};
-  PetscCall(suite::writeXdmfRectSeries(ctx.comm(), std::string(o.output) + ".xmf", o.output, grid,
-                                       {{t, {{"u", "/final/u", true}}}}));
+  PetscCall(suite::writeXdmfRectSeries(ctx.comm(), suite::xdmfPathFor(o.output), suite::fileNameOf(o.output),
+                                       grid, {{t, {{"u", "/final/u", true}}}}));
   PetscFunctionReturn(0);
 }
 

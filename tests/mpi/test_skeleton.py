@@ -54,7 +54,7 @@ def test_provenance():
         expect(f["/final/u"].shape == (64,), "distributed dataset has the global shape")
         x = f["/grid/x"][...]
         expect(np.allclose(x, (np.arange(64) + 0.5) / 64, rtol=0, atol=1e-15), "grid written in global order")
-    expect(os.path.exists("prov.h5.xmf"), "XDMF sidecar written")
+    expect(os.path.exists("prov.xmf"), "XDMF sidecar written")
     expect(not os.path.exists("prov.h5.tmp"), "no temporary file left after commit")
 
 
