@@ -1,11 +1,16 @@
 """Command line of the postprocess package.
 
-    python -m postprocess info FILE            root attributes and datasets (with units)
-    python -m postprocess plot FILE [--outdir]  the default figures of the program that wrote FILE
-    python -m postprocess <figure> ...          figures registered by the app modules (*_plots.py)
+    python -m postprocess info FILE                       root attributes and datasets (with units)
+    python -m postprocess plot FILE [-o FILE] [--outdir DIR]  the default figures of the program that wrote FILE
+    python -m postprocess <figure> ... [-o FILE] [--outdir DIR]  figures registered by the app modules
+
+Every figure command takes -o/--output FILE (its figure; with several figures, the main one) and --outdir DIR
+(the folder of the default-named figures: FILE's folder with -o, else the current directory), and prints
+`wrote PATH` per figure (postprocess/cli.py).
 
 Each app module ``postprocess/<app>_plots.py`` defines ``register(subparsers)`` (adds its figure commands)
-and may define ``PROGRAM = "<program>"`` with ``default_plot(path, outdir) -> list[str]`` for ``plot``.
+and may define ``PROGRAM = "<program>"`` with ``default_plot(path, outdir, output=None) -> list[str]`` for
+``plot``.
 """
 from __future__ import annotations
 
@@ -15,6 +20,7 @@ import pkgutil
 import sys
 from pathlib import Path
 
+from .cli import add_output_options, report, resolve_outdir
 from .reader import open_run
 
 
@@ -38,12 +44,12 @@ def cmd_info(args):
 
 def cmd_plot(args):
     run = open_run(args.file)
-    Path(args.outdir).mkdir(parents=True, exist_ok=True)
     for mod in app_modules():
         if getattr(mod, "PROGRAM", None) == run.program and hasattr(mod, "default_plot"):
-            for png in mod.default_plot(args.file, args.outdir):
-                print(f"wrote {png}")
-            return 0
+            written = mod.default_plot(args.file, resolve_outdir(args), args.output)
+            if not written:
+                print(f"{args.file}: no default figure applies to this {run.program} run")
+            return report(written)
     print(f"error: no plots registered for program '{run.program}' ({args.file})", file=sys.stderr)
     return 2
 
@@ -56,7 +62,7 @@ def build_parser():
     p.set_defaults(func=cmd_info)
     p = sub.add_parser("plot", help="default figures for the program that wrote the file")
     p.add_argument("file")
-    p.add_argument("--outdir", default="out")
+    add_output_options(p, None, several=True)
     p.set_defaults(func=cmd_plot)
     for mod in app_modules():
         mod.register(sub)

@@ -11,7 +11,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from .contact_plots import _report
+from .cli import add_output_options, figure_command, figure_file
 
 MARKERS = {"suite": "o", "mujoco": "s"}
 
@@ -36,7 +36,7 @@ def run_error(r):
     return r["drift"]
 
 
-def plot_front(path, outdir):
+def plot_front(path, outdir=".", output=None):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -68,8 +68,7 @@ def plot_front(path, outdir):
     for ax in list(axes.flat)[len(scenes):]:
         ax.axis("off")
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = str(Path(outdir) / "contact_front.png")
+    png = str(figure_file(outdir, "contact_front.png", output))
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [png]
@@ -79,5 +78,5 @@ def register(sub):
     p = sub.add_parser("contact-front", help="time per step against error, this suite's modes beside MuJoCo "
                        "(scripts/bench/contact-front output)")
     p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: _report(plot_front(a.file, a.outdir)))
+    add_output_options(p, "contact_front.png")
+    p.set_defaults(func=figure_command(plot_front))

@@ -9,6 +9,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from .cli import add_output_options, chain, figure_command, figure_file
+
 PROGRAM = "contact"
 
 
@@ -25,8 +27,19 @@ def _attr(v):
     return v.decode() if isinstance(v, bytes) else v
 
 
+def body_labels(path, count=None):
+    """Legend label of each body: its name from /bodies/name (one string per body, in body order) when the file
+    has that dataset, else "body <index>"."""
+    with h5py.File(path, "r") as f:
+        names = [_attr(v) for v in f["bodies/name"][...].tolist()] if "bodies/name" in f else []
+        if count is None:
+            count = len(names) or (len(f["bodies/static"]) if "bodies/static" in f else 0)
+    names = [str(n).strip() for n in names]
+    return [names[i] if i < len(names) and names[i] else f"body {i}" for i in range(count)]
+
+
 def read_run(path):
-    """(steps dict, frames dict, root attributes, static mask) of a contact run file."""
+    """(steps dict, frames dict, root attributes, static mask, splitting dict) of a contact run file."""
     with h5py.File(path, "r") as f:
         attrs = {k: _attr(v) for k, v in f.attrs.items()}
         steps = {k: f["steps"][k][...] for k in f["steps"]} if "steps" in f else {}
@@ -40,9 +53,9 @@ def read_run(path):
     return steps, frames, attrs, static, split
 
 
-def plot_history(h5path, outdir):
+def plot_history(h5path, outdir=".", output=None):
+    """Heights of up to 12 dynamic bodies (legend: body names), contacts, force ratio, iterations, energy."""
     steps, frames, attrs, static, _ = read_run(h5path)
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     if not frames:
         return []
     plt = _plt()
@@ -50,10 +63,13 @@ def plot_history(h5path, outdir):
     t = frames["time"]
     z = frames["positions"][:, :, 2]
     dyn = np.nonzero(~static)[0] if static is not None else np.arange(z.shape[1])
+    labels = body_labels(h5path, z.shape[1])
     for i in dyn[:12]:
-        ax[0, 0].plot(t, z[:, i], lw=0.8)
+        ax[0, 0].plot(t, z[:, i], lw=0.8, label=labels[i])
     ax[0, 0].set(xlabel="t (s)", ylabel="z (m)", title=f"{attrs.get('scene', '')}: heights of "
                  f"{min(len(dyn), 12)} of {len(dyn)} bodies")
+    if len(dyn):
+        ax[0, 0].legend(fontsize=6, ncol=2 if len(dyn) > 6 else 1)
     if steps:
         ts = steps["time"]
         ax[0, 1].plot(ts, steps["contacts"], "k-", lw=0.8)
@@ -71,18 +87,17 @@ def plot_history(h5path, outdir):
         ax[1, 1].set(xlabel="t (s)", title=f"solver {attrs.get('lcp_solver', '')}")
         ax[1, 1].legend(fontsize=8, loc="upper left")
     fig.tight_layout()
-    png = Path(outdir) / f"contact_{Path(h5path).stem}_history.png"
+    png = figure_file(outdir, f"contact_{Path(h5path).stem}_history.png", output)
     fig.savefig(png, dpi=110)
     plt.close(fig)
     return [str(png)]
 
 
-def plot_splitting(h5path, outdir, max_steps=40):
+def plot_splitting(h5path, outdir=".", output=None, max_steps=40):
     """Error max|delta lambda_n| between splitting iterates against the pass, one line per step."""
     steps, _, attrs, _, split = read_run(h5path)
     if not split:
         return []
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 4))
     off = split["offset"]
@@ -94,14 +109,14 @@ def plot_splitting(h5path, outdir, max_steps=40):
     ax.set(xlabel="splitting pass", ylabel="max A_nn |delta lambda_n| (m/s)",
            title=f"{attrs.get('scene', '')}: splitting convergence ({min(nsteps, max_steps)} steps)")
     fig.tight_layout()
-    png = Path(outdir) / f"contact_{Path(h5path).stem}_splitting.png"
+    png = figure_file(outdir, f"contact_{Path(h5path).stem}_splitting.png", output)
     fig.savefig(png, dpi=110)
     plt.close(fig)
     return [str(png)]
 
 
-def default_plot(h5path, outdir):
-    return plot_history(h5path, outdir) + plot_splitting(h5path, outdir)
+def default_plot(h5path, outdir=".", output=None):
+    return chain(outdir, output, lambda d, o: plot_history(h5path, d, o), lambda d, o: plot_splitting(h5path, d, o))
 
 
 def read_incline(path):
@@ -112,9 +127,8 @@ def read_incline(path):
     return d
 
 
-def plot_incline(path, outdir):
+def plot_incline(path, outdir=".", output=None):
     d = read_incline(path)
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     plt = _plt()
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
     tt = d["tan_theta"]
@@ -129,7 +143,7 @@ def plot_incline(path, outdir):
     a2.set(xlabel="tan theta", ylabel="passes to reach 1e-6", title="splitting passes")
     a2.legend(fontsize=8)
     fig.tight_layout()
-    png = Path(outdir) / f"contact_incline_{Path(path).stem}.png"
+    png = figure_file(outdir, f"contact_incline_{Path(path).stem}.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
@@ -161,11 +175,10 @@ def heap_histogram_stats(path):
     return out
 
 
-def plot_heap_histograms(path, outdir):
+def plot_heap_histograms(path, outdir=".", output=None):
     """Iteration histograms of the pivoting (pivots / n) and Newton (iterations) solvers on the log heap's
     dumped problems (an lcpbench -file result), as the paper's Figs. 5, 6."""
     st = heap_histogram_stats(path)
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     plt = _plt()
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
     for s, d in st.items():
@@ -181,7 +194,7 @@ def plot_heap_histograms(path, outdir):
     n = next(iter(st.values()))["median_n"] if st else 0
     fig.suptitle(f"log heap: {Path(path).stem}, median problem size {n:.0f}")
     fig.tight_layout()
-    png = Path(outdir) / f"contact_heap_histograms_{Path(path).stem}.png"
+    png = figure_file(outdir, f"contact_heap_histograms_{Path(path).stem}.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     for s, d in st.items():
@@ -213,11 +226,10 @@ def splitting_convergence_stats(h5path, stagnation=0.9):
             "stag_err": np.array(stag_err), "steps": len(errs), "attrs": attrs}
 
 
-def plot_splitting_convergence(h5path, outdir):
+def plot_splitting_convergence(h5path, outdir=".", output=None):
     """Error norm between splitting iterates against the iteration for every step of a run (log heap: the
     paper's Fig. 8), the median curve, and where the iteration stagnates."""
     d = splitting_convergence_stats(h5path)
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     top = max(float(d["max"].max()) if len(d["max"]) else 1.0, 1e-300)
@@ -236,7 +248,7 @@ def plot_splitting_convergence(h5path, outdir):
            title=f"{d['attrs'].get('scene', '')}: splitting convergence, {d['steps']} steps")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    png = Path(outdir) / f"contact_{Path(h5path).stem}_split_convergence.png"
+    png = figure_file(outdir, f"contact_{Path(h5path).stem}_split_convergence.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     print("pass  median_error  max_error")
@@ -259,10 +271,9 @@ def read_speed_accuracy(path):
     return rows
 
 
-def plot_speed_accuracy(path, outdir):
+def plot_speed_accuracy(path, outdir=".", output=None):
     """Wall time per step against the Coulomb-cone violation per friction model on the log heap."""
     rows = [r for r in read_speed_accuracy(path) if not int(r.get("failed", 0))]
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for r in rows:
@@ -272,7 +283,7 @@ def plot_speed_accuracy(path, outdir):
     ax.set(xlabel="time per step (ms, median)", ylabel="cone violation sum max(0,|l_t|-mu l_n) / sum l_n",
            title=f"log heap: speed against accuracy")
     fig.tight_layout()
-    png = Path(outdir) / f"contact_speed_accuracy_{Path(path).stem}.png"
+    png = figure_file(outdir, f"contact_speed_accuracy_{Path(path).stem}.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     print("case  step_ms  cone_violation")
@@ -282,33 +293,22 @@ def plot_speed_accuracy(path, outdir):
 
 
 def register(sub):
-    p = sub.add_parser("contact-incline", help="force ratio against tan(theta), splitting from zero/infinite "
-                       "friction (scripts/bench/contact-incline output)")
-    p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: _report(plot_incline(a.file, a.outdir)))
-    p = sub.add_parser("contact-splitting", help="splitting convergence of a contact run")
-    p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: _report(plot_splitting(a.file, a.outdir)))
-    p = sub.add_parser("contact-heap-histograms", help="iteration histograms of pivoting and Newton solvers on "
-                       "the log heap's dumped problems (lcpbench -file ... result file)")
-    p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: _report(plot_heap_histograms(a.file, a.outdir)))
-    p = sub.add_parser("contact-split-convergence", help="error between splitting iterates against the "
-                       "iteration over all steps of a contact run, and where it stagnates")
-    p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: _report(plot_splitting_convergence(a.file, a.outdir)))
-    p = sub.add_parser("contact-speed-accuracy", help="time per step against cone violation per friction "
-                       "model (scripts/bench/contact-logheap --h5 output)")
-    p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: _report(plot_speed_accuracy(a.file, a.outdir)))
-
-
-def _report(pngs):
-    for png in pngs:
-        print(f"wrote {png}")
-    return 0
+    for name, fn, default, text in (
+        ("contact-incline", plot_incline, "contact_incline_<stem>.png", "force ratio against tan(theta), splitting "
+         "from zero/infinite friction (scripts/bench/contact-incline output)"),
+        ("contact-history", plot_history, "contact_<stem>_history.png", "contact run: heights of the bodies "
+         "(legend: /bodies/name), contacts, force ratio, iterations, energy"),
+        ("contact-splitting", plot_splitting, "contact_<stem>_splitting.png", "splitting convergence of a contact "
+         "run"),
+        ("contact-heap-histograms", plot_heap_histograms, "contact_heap_histograms_<stem>.png", "iteration "
+         "histograms of pivoting and Newton solvers on the log heap's dumped problems (lcpbench -file ... result)"),
+        ("contact-split-convergence", plot_splitting_convergence, "contact_<stem>_split_convergence.png",
+         "error between splitting iterates against the iteration over all steps of a contact run, and where it "
+         "stagnates"),
+        ("contact-speed-accuracy", plot_speed_accuracy, "contact_speed_accuracy_<stem>.png", "time per step "
+         "against cone violation per friction model (scripts/bench/contact-logheap --h5 output)"),
+    ):
+        p = sub.add_parser(name, help=text)
+        p.add_argument("file")
+        add_output_options(p, default)
+        p.set_defaults(func=figure_command(fn))

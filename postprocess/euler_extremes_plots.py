@@ -2,7 +2,7 @@
 log10 L1(rho) per case (rows) and scheme (columns); failed runs are marked with a red cross and "FAIL", passing
 runs without an exact solution (2D/3D) are grey and marked "ok".
 
-    python -m postprocess euler-extremes table.csv [-o euler_extremes.png]
+    python -m postprocess euler-extremes table.csv [-o FILE] [--outdir DIR]    (default DIR/euler_extremes.png)
 
 The CSV is the runner's table.csv: one row per run with the columns case, scheme, outcome (ok / FAIL), l1_rho
 (nan when there is no exact solution), retries, wall_s, among others.
@@ -13,6 +13,8 @@ import csv
 import math
 
 import numpy as np
+
+from .cli import add_output_options, figure_command, figure_file
 
 
 def read_table(path):
@@ -43,7 +45,7 @@ def battery_matrix(rows):
     return cases, schemes, l1, failed
 
 
-def plot_battery(path, out):
+def plot_battery(path, outdir=".", output=None):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -70,6 +72,7 @@ def plot_battery(path, out):
     if np.isfinite(l1).any():
         fig.colorbar(im, ax=ax, label="log10 L1(rho) vs exact")
     fig.tight_layout()
+    out = str(figure_file(outdir, "euler_extremes.png", output))
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [out]
@@ -79,11 +82,5 @@ def register(sub):
     p = sub.add_parser("euler-extremes",
                        help="euler: extreme-case battery heat map (L1(rho) per case x scheme, failures marked)")
     p.add_argument("csv", help="table.csv written by scripts/euler-extremes")
-    p.add_argument("-o", "--output", default="euler_extremes.png")
-
-    def run(a):
-        for x in plot_battery(a.csv, a.output):
-            print(f"wrote {x}")
-        return 0
-
-    p.set_defaults(func=run)
+    add_output_options(p, "euler_extremes.png")
+    p.set_defaults(func=figure_command(plot_battery, inputs="csv"))

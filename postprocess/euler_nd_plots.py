@@ -1,9 +1,11 @@
 """2D/3D euler figures (``euler -dim 2|3``): field images with numerical schlieren, the isentropic-vortex
 convergence study (error vs N per scheme with observed orders) and kinetic-energy spectra.
 
-    python -m postprocess euler2d-images run.h5 [--field rho] [--schlieren] [--step N] [-o out.png]
-    python -m postprocess euler-vortex-convergence a.h5 b.h5 ... [--norm l1 l2] [-o out.png]
-    python -m postprocess euler-spectra a.h5 [b.h5 ...] [-o out.png]
+    python -m postprocess euler2d-images run.h5 [--field rho] [--schlieren] [--step N] [-o FILE] [--outdir DIR]
+    python -m postprocess euler-vortex-convergence a.h5 b.h5 ... [--norm l1 l2] [-o FILE] [--outdir DIR]
+    python -m postprocess euler-spectra a.h5 [b.h5 ...] [-o FILE] [--outdir DIR]
+
+Default names: <stem>_<field>.png, vortex_convergence.png, spectra.png.
 
 File layout (written by the app): root attributes dim, nx, ny, nz, problem, scheme, gamma, time, steps;
 /grid/x, /grid/y, /grid/z cell centres; /final/<rho|u|v|w|p> with shape (ny, nx) in 2D and (nz, ny, nx) in 3D;
@@ -18,6 +20,8 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+
+from .cli import add_output_options, figure_command, figure_file
 
 
 def _attr(f, name, default=""):
@@ -91,7 +95,7 @@ def schlieren(x, y, rho, k=15.0):
     return np.exp(-k * g / gmax)
 
 
-def plot_images(path, out, field="rho", with_schlieren=False, k=15.0, step=None, z_index=None):
+def plot_images(path, outdir=".", output=None, field="rho", with_schlieren=False, k=15.0, step=None, z_index=None):
     plt = _plt()
     x, y, v, info = read_field(path, field, step, z_index)
     dx = x[1] - x[0] if len(x) > 1 else 1.0
@@ -114,8 +118,7 @@ def plot_images(path, out, field="rho", with_schlieren=False, k=15.0, step=None,
     fig.suptitle(f"{info['problem']} / {info['scheme']}, {len(x)} x {len(y)}, t = {info['time']:.4g}{where}",
                  fontsize=10)
     fig.tight_layout()
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
+    out = figure_file(outdir, f"{Path(path).stem}_{field}.png", output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
@@ -183,7 +186,7 @@ def convergence_table(res, norms=("l1", "l2")):
     return "\n".join(lines)
 
 
-def plot_vortex_convergence(paths, out, norms=("l1", "l2")):
+def plot_vortex_convergence(paths, outdir=".", output=None, norms=("l1", "l2")):
     plt = _plt()
     res = read_errors(paths)
     table = convergence_table(res, norms)
@@ -206,8 +209,7 @@ def plot_vortex_convergence(paths, out, norms=("l1", "l2")):
         ax.legend(fontsize=8)
     fig.suptitle("isentropic vortex convergence (dotted: integer slope through the finest point)", fontsize=10)
     fig.tight_layout()
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
+    out = figure_file(outdir, "vortex_convergence.png", output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
@@ -236,7 +238,7 @@ def kolmogorov_guide(k, e):
     return kk, e[i] * (kk / k[i]) ** (-5.0 / 3.0)
 
 
-def plot_spectra(paths, out):
+def plot_spectra(paths, outdir=".", output=None, name="spectra.png"):
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 4.8))
     first, emax = None, 0.0
@@ -253,31 +255,24 @@ def plot_spectra(paths, out):
     ax.set(xlabel="k", ylabel="E(k)", title="kinetic energy spectrum")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
+    out = figure_file(outdir, name, output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
 
 
-def default_plot(h5path, outdir):
-    """Density image with schlieren, plus the spectrum when the file has one (for `plot` on 2D/3D files)."""
-    stem = Path(h5path).stem
-    out = plot_images(h5path, Path(outdir) / f"{stem}_rho.png", "rho", True)
+def default_plot(h5path, outdir=".", output=None):
+    """Density image with schlieren (<stem>_rho.png), plus the spectrum (<stem>_spectrum.png) when the file has
+    one (for `plot` on 2D/3D files); `output` names the image."""
+    out = plot_images(h5path, outdir, output, "rho", True)
     with h5py.File(h5path, "r") as f:
         has_spec = "spectrum" in f
     if has_spec:
-        out += plot_spectra([h5path], Path(outdir) / f"{stem}_spectrum.png")
+        out += plot_spectra([h5path], outdir, name=f"{Path(h5path).stem}_spectrum.png")
     return out
 
 
 # ---------------------------------------------------------------- command line
-
-
-def _print_written(files):
-    for x in files:
-        print(f"wrote {x}")
-    return 0
 
 
 def register(sub):
@@ -288,18 +283,18 @@ def register(sub):
     p.add_argument("--k", type=float, default=15.0, help="schlieren contrast (default 15)")
     p.add_argument("--step", type=int, default=None, help="snapshot step instead of /final")
     p.add_argument("--z-index", type=int, default=None, help="z slice of 3D data (default: the middle one)")
-    p.add_argument("-o", "--output", default=None, help="PNG file (default <file stem>_<field>.png)")
-    p.set_defaults(func=lambda a: _print_written(plot_images(
-        a.file, a.output or f"{Path(a.file).stem}_{a.field}.png", a.field, a.schlieren, a.k, a.step, a.z_index)))
+    add_output_options(p, "<stem>_<field>.png")
+    p.set_defaults(func=figure_command(plot_images, field="field", with_schlieren="schlieren", k="k", step="step",
+                                       z_index="z_index"))
 
     p = sub.add_parser("euler-vortex-convergence",
                        help="euler 2D/3D: density error vs N per scheme with observed orders (from /errors)")
     p.add_argument("files", nargs="+")
     p.add_argument("--norm", nargs="+", default=["l1", "l2"], choices=["l1", "l2", "linf"])
-    p.add_argument("-o", "--output", default="vortex_convergence.png")
-    p.set_defaults(func=lambda a: _print_written(plot_vortex_convergence(a.files, a.output, tuple(a.norm))))
+    add_output_options(p, "vortex_convergence.png")
+    p.set_defaults(func=figure_command(plot_vortex_convergence, inputs="files", norms=lambda a: tuple(a.norm)))
 
     p = sub.add_parser("euler-spectra", help="euler 2D/3D: kinetic energy spectra E(k) with a k^-5/3 guide")
     p.add_argument("files", nargs="+")
-    p.add_argument("-o", "--output", default="spectra.png")
-    p.set_defaults(func=lambda a: _print_written(plot_spectra(a.files, a.output)))
+    add_output_options(p, "spectra.png")
+    p.set_defaults(func=figure_command(plot_spectra, inputs="files"))

@@ -1,10 +1,10 @@
 """euler figures: final profiles against the exact (or reference) solution, the pulse density x-t image, and, from
 scripts/bench/euler-tradeoff files, error-vs-wall-time Pareto fronts and convergence (L1 error vs N).
 
-    python -m postprocess euler-profiles run.h5 [--outdir out]
-    python -m postprocess euler-pulse pulse.h5 [--outdir out]
-    python -m postprocess euler-tradeoff tradeoff.h5 [--outdir out]
-    python -m postprocess euler-convergence tradeoff.h5 [--outdir out]
+    python -m postprocess euler-profiles run.h5 [-o FILE] [--outdir DIR]      <stem>_profiles.png
+    python -m postprocess euler-pulse pulse.h5 [-o FILE] [--outdir DIR]       <stem>_xt.png
+    python -m postprocess euler-tradeoff tradeoff.h5 [-o FILE] [--outdir DIR]  <stem>_pareto.png
+    python -m postprocess euler-convergence tradeoff.h5 [-o FILE] [--outdir DIR]  <stem>_convergence.png
 """
 from __future__ import annotations
 
@@ -12,6 +12,8 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+
+from .cli import add_output_options, chain, figure_command, figure_file
 
 PROGRAM = "euler"
 
@@ -30,12 +32,13 @@ def _plt():
     return plt
 
 
-def plot_profiles(path, outdir):
+def plot_profiles(path, outdir=".", output=None):
     """rho, u, p at the final time, with the exact/reference solution when the run had -error."""
     plt = _plt()
     with h5py.File(path, "r") as f:
         x = f["grid/x"][...]
-        title = f"{_attr(f, 'problem')} / {_attr(f, 'scheme')}, nx = {_attr(f, 'nx')}, t = {float(_attr(f, 'time', 0)):.4g}"
+        title = (f"{_attr(f, 'problem')} / {_attr(f, 'scheme')}, nx = {_attr(f, 'nx')}, "
+                 f"t = {float(_attr(f, 'time', 0)):.4g}")
         fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
         for ax, var in zip(axes, ("rho", "u", "p")):
             if f"exact/{var}" in f:
@@ -46,13 +49,13 @@ def plot_profiles(path, outdir):
         axes[0].legend(fontsize=8)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    out = Path(outdir) / f"{Path(path).stem}_profiles.png"
+    out = figure_file(outdir, f"{Path(path).stem}_profiles.png", output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
 
 
-def plot_pulse(path, outdir):
+def plot_pulse(path, outdir=".", output=None):
     """Density x-t image from /spacetime/rho (written with -spacetime_every; default for -problem pulse)."""
     plt = _plt()
     with h5py.File(path, "r") as f:
@@ -69,7 +72,7 @@ def plot_pulse(path, outdir):
     ax.set_ylabel("t")
     ax.set_title(f"pulse: density x-t ({scheme})")
     fig.tight_layout()
-    out = Path(outdir) / f"{Path(path).stem}_xt.png"
+    out = figure_file(outdir, f"{Path(path).stem}_xt.png", output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
@@ -97,7 +100,7 @@ def pareto(points):
     return front
 
 
-def plot_tradeoff(path, outdir):
+def plot_tradeoff(path, outdir=".", output=None):
     plt = _plt()
     res = read_tradeoff(path)
     fig, axes = plt.subplots(1, len(res), figsize=(5 * len(res), 4.2), squeeze=False)
@@ -115,13 +118,13 @@ def plot_tradeoff(path, outdir):
         ax.set_title(prob)
         ax.legend(fontsize=6)
     fig.tight_layout()
-    out = Path(outdir) / f"{Path(path).stem}_pareto.png"
+    out = figure_file(outdir, f"{Path(path).stem}_pareto.png", output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
 
 
-def plot_convergence(path, outdir, problem="density_wave"):
+def plot_convergence(path, outdir=".", output=None, problem="density_wave"):
     plt = _plt()
     res = read_tradeoff(path)
     if problem not in res:
@@ -138,42 +141,34 @@ def plot_convergence(path, outdir, problem="density_wave"):
     ax.set_title(f"convergence: {problem}")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    out = Path(outdir) / f"{Path(path).stem}_convergence.png"
+    out = figure_file(outdir, f"{Path(path).stem}_convergence.png", output)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return [str(out)]
 
 
-def default_plot(h5path, outdir):
+def default_plot(h5path, outdir=".", output=None):
     with h5py.File(h5path, "r") as f:
         has_st = "spacetime" in f
         dim = int(f.attrs.get("dim", 1))
     if dim >= 2:  # 2D/3D runs: density and schlieren images (euler_nd_plots)
         from .euler_nd_plots import default_plot as nd_plot
 
-        return nd_plot(h5path, outdir)
-    out = plot_profiles(h5path, outdir)
+        return nd_plot(h5path, outdir, output)
+    figures = [lambda d, o: plot_profiles(h5path, d, o)]
     if has_st:
-        out += plot_pulse(h5path, outdir)
-    return out
-
-
-def _cmd(fn):
-    def run(a):
-        Path(a.outdir).mkdir(parents=True, exist_ok=True)
-        for x in fn(a.file, a.outdir):
-            print(f"wrote {x}")
-        return 0
-
-    return run
+        figures.append(lambda d, o: plot_pulse(h5path, d, o))
+    return chain(outdir, output, *figures)
 
 
 def register(sub):
-    for name, fn, text in [("euler-profiles", plot_profiles, "euler: final rho, u, p against the exact solution"),
-                           ("euler-pulse", plot_pulse, "euler: pulse density x-t image"),
-                           ("euler-tradeoff", plot_tradeoff, "euler: error vs wall time Pareto fronts"),
-                           ("euler-convergence", plot_convergence, "euler: L1 error vs N (density_wave)")]:
+    for name, fn, default, text in [
+            ("euler-profiles", plot_profiles, "<stem>_profiles.png",
+             "euler: final rho, u, p against the exact solution"),
+            ("euler-pulse", plot_pulse, "<stem>_xt.png", "euler: pulse density x-t image"),
+            ("euler-tradeoff", plot_tradeoff, "<stem>_pareto.png", "euler: error vs wall time Pareto fronts"),
+            ("euler-convergence", plot_convergence, "<stem>_convergence.png", "euler: L1 error vs N (density_wave)")]:
         p = sub.add_parser(name, help=text)
         p.add_argument("file")
-        p.add_argument("--outdir", default="out")
-        p.set_defaults(func=_cmd(fn))
+        add_output_options(p, default)
+        p.set_defaults(func=figure_command(fn))

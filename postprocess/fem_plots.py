@@ -9,6 +9,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from .cli import add_output_options, chain, figure_command, figure_file
+
 PROGRAM = "femdyn"
 
 
@@ -30,9 +32,8 @@ def read_history(path):
         return {k: f["steps"][k][...] for k in f["steps"]}, attrs
 
 
-def plot_history(h5path, outdir):
+def plot_history(h5path, outdir=".", output=None):
     s, attrs = read_history(h5path)
-    Path(outdir).mkdir(parents=True, exist_ok=True)
     stem = Path(h5path).stem
     if not s:
         return []
@@ -55,7 +56,7 @@ def plot_history(h5path, outdir):
            f"{float(attrs.get('rate_hz', 0)):.0f} Hz")
     a3.legend(fontsize=8)
     fig.tight_layout()
-    png = Path(outdir) / f"femdyn_{stem}_history.png"
+    png = figure_file(outdir, f"femdyn_{stem}_history.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
@@ -69,7 +70,7 @@ def read_probe(path):
         return {k: f["probe"][k][...] for k in f["probe"]}
 
 
-def plot_probe(h5path, outdir):
+def plot_probe(h5path, outdir=".", output=None):
     p = read_probe(h5path)
     if not p:
         return []
@@ -81,8 +82,7 @@ def plot_probe(h5path, outdir):
     ax.set(xlabel="t", ylabel="probe force", title="haptic probe force")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / f"femdyn_{Path(h5path).stem}_probe.png"
+    png = figure_file(outdir, f"femdyn_{Path(h5path).stem}_probe.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
@@ -98,7 +98,7 @@ def read_material_auto(path):
         return f["steps/time"][...], g["law"][...], g["estimate"][...], attrs
 
 
-def plot_material_auto(h5path, outdir):
+def plot_material_auto(h5path, outdir=".", output=None):
     """Estimated relative error of the linear law against time, the law per step (shaded where nonlinear),
     the switch points, the target E and the switch band (up * E, down * E); the tip deflection below."""
     m = read_material_auto(h5path)
@@ -125,8 +125,7 @@ def plot_material_auto(h5path, outdir):
     a2.plot(t[sw], s["tip_deflection"][sw], "o", color="tab:purple", ms=5)
     a2.set(xlabel="t", ylabel="tip deflection (mean -u_y)")
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / f"femdyn_{Path(h5path).stem}_material_auto.png"
+    png = figure_file(outdir, f"femdyn_{Path(h5path).stem}_material_auto.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
@@ -142,7 +141,7 @@ def read_time_adapt(path):
         return {k: g["tries"][k][...] for k in g["tries"]}, attrs
 
 
-def plot_time_adapt(h5path, outdir):
+def plot_time_adapt(h5path, outdir=".", output=None):
     """-dt_adapt: dt of every try against its start time (accepted dots, rejected crosses), the estimate over
     the tolerance of each try (accept at <= 1), and the tip deflection below."""
     m = read_time_adapt(h5path)
@@ -166,16 +165,15 @@ def plot_time_adapt(h5path, outdir):
     a3.plot(s["time"], s["tip_deflection"], "k-", lw=1)
     a3.set(xlabel="t", ylabel="tip deflection (mean -u_y)")
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / f"femdyn_{Path(h5path).stem}_time_adapt.png"
+    png = figure_file(outdir, f"femdyn_{Path(h5path).stem}_time_adapt.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
 
 
-def default_plot(h5path, outdir):
-    return (plot_history(h5path, outdir) + plot_probe(h5path, outdir) + plot_material_auto(h5path, outdir)
-            + plot_time_adapt(h5path, outdir))
+def default_plot(h5path, outdir=".", output=None):
+    return chain(outdir, output, *(lambda d, o, fn=fn: fn(h5path, d, o)
+                                   for fn in (plot_history, plot_probe, plot_material_auto, plot_time_adapt)))
 
 
 def read_csv(path):
@@ -192,7 +190,7 @@ def read_csv(path):
     return rows
 
 
-def plot_rate(csv_path, outdir):
+def plot_rate(csv_path, outdir=".", output=None):
     rows = read_csv(csv_path)
     plt = _plt()
     methods = sorted({r["method"] for r in rows})
@@ -202,19 +200,19 @@ def plot_rate(csv_path, outdir):
             sel = [r for r in rows if r["method"] == m and (r["ordering"], r["solver"]) == key]
             for case_marker, case in zip("os^v", sorted({r["case"] for r in sel})):
                 pts = [r for r in sel if r["case"] == case]
-                ax.plot([r["dofs"] for r in pts], [r["hz"] for r in pts], case_marker, label=f"{key[0]}/{key[1]} {case}")
+                ax.plot([r["dofs"] for r in pts], [r["hz"] for r in pts], case_marker,
+                        label=f"{key[0]}/{key[1]} {case}")
         ax.axhline(50, color="gray", ls=":")
         ax.set(xlabel="DOF", ylabel="steps per second (Hz)", yscale="log", title=m)
         ax.legend(fontsize=6)
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / "fem_rate.png"
+    png = figure_file(outdir, "fem_rate.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
 
 
-def plot_orderings(csv_path, outdir):
+def plot_orderings(csv_path, outdir=".", output=None):
     rows = read_csv(csv_path)
     plt = _plt()
     sources = list(dict.fromkeys(r["source"] for r in rows))
@@ -232,33 +230,26 @@ def plot_orderings(csv_path, outdir):
         ax.set(yscale="log", ylabel=lab)
     a1.legend(fontsize=7, ncol=6)
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / "fem_orderings.png"
+    png = figure_file(outdir, "fem_orderings.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
 
 
-def _cli(fn):
-    def run(args):
-        for png in fn(args.file, args.outdir):
-            print(f"wrote {png}")
-        return 0
-
-    return run
-
-
 def register(sub):
-    for name, fn, help_text in (
-        ("fem-history", plot_history, "femdyn energy, tip deflection and step timings from an output file"),
-        ("fem-material-auto", plot_material_auto,
+    for name, fn, default, help_text in (
+        ("fem-history", plot_history, "femdyn_<stem>_history.png",
+         "femdyn energy, tip deflection and step timings from an output file"),
+        ("fem-probe", plot_probe, "femdyn_<stem>_probe.png", "femdyn -probe: haptic probe force history"),
+        ("fem-material-auto", plot_material_auto, "femdyn_<stem>_material_auto.png",
          "femdyn -material auto: estimate against time with the switch points and the target"),
-        ("fem-dt-adapt", plot_time_adapt,
+        ("fem-dt-adapt", plot_time_adapt, "femdyn_<stem>_time_adapt.png",
          "femdyn -dt_adapt: dt of every try (rejections marked), estimate / tolerance, tip deflection"),
-        ("fem-rate", plot_rate, "Hz against DOF per ordering and solver (scripts/bench/fem-rate CSV)"),
-        ("fem-orderings", plot_orderings, "nnz(L) and profile per ordering (scripts/bench/fem-orderings CSV)"),
+        ("fem-rate", plot_rate, "fem_rate.png", "Hz against DOF per ordering and solver (scripts/bench/fem-rate CSV)"),
+        ("fem-orderings", plot_orderings, "fem_orderings.png",
+         "nnz(L) and profile per ordering (scripts/bench/fem-orderings CSV)"),
     ):
         p = sub.add_parser(name, help=help_text)
         p.add_argument("file")
-        p.add_argument("--outdir", default="out")
-        p.set_defaults(func=_cli(fn))
+        add_output_options(p, default)
+        p.set_defaults(func=figure_command(fn))

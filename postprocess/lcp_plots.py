@@ -1,9 +1,13 @@
 """lcpbench figures (Lacoursiere 2003, SIGRAD): iteration-count histograms (pivoting methods in units of n,
 Newton / splitting methods absolute), time and residual distributions, and Dolan-More performance profiles
-(Dolan & More 2002, Math. Prog. 91) across solvers, from the /results/<solver>/ datasets of an lcpbench file; with `-solvers auto` also the portfolio's choices
+(Dolan & More 2002, Math. Prog. 91) across solvers, from the /results/<solver>/ datasets of an lcpbench file;
+with `-solvers auto` also the portfolio's choices
 (the succeeding solver per problem class, and how many solvers were tried).
 
-    python -m postprocess lcp-histograms batch.h5 [--outdir out]
+    python -m postprocess lcp-histograms batch.h5 [-o FILE] [--outdir DIR]
+
+Figures: lcp_<stem>_iterations.png (the main one, named by -o), lcp_<stem>_time_residual.png,
+lcp_<stem>_profile.png and, with -solvers auto, lcp_<stem>_portfolio.png.
 """
 from __future__ import annotations
 
@@ -11,6 +15,8 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+
+from .cli import add_output_options, figure_command, figure_file
 
 PROGRAM = "lcpbench"
 PIVOTING = ("lemke", "keller", "cottle_dantzig", "murty")  # histogram of pivots / n
@@ -66,7 +72,7 @@ def portfolio_table(pf):
     return dict(sorted(table.items()))
 
 
-def plot_portfolio(pf, out, stem, plt):
+def plot_portfolio(pf, outdir, stem, plt):
     """Stacked bars: per class, the solver whose answer auto accepted; and the number of solvers tried."""
     table = portfolio_table(pf)
     classes = list(table)
@@ -84,7 +90,7 @@ def plot_portfolio(pf, out, stem, plt):
     a2.bar(*np.unique(ntried, return_counts=True), color="C0")
     a2.set(xlabel="solvers tried", ylabel="problems", title="auto: attempts per problem")
     fig.tight_layout()
-    png = out / f"lcp_{stem}_portfolio.png"
+    png = figure_file(outdir, f"lcp_{stem}_portfolio.png")
     fig.savefig(png, dpi=110)
     plt.close(fig)
     return str(png)
@@ -106,15 +112,14 @@ def performance_profile(times, taus=None):
     return np.asarray(taus), rho
 
 
-def plot_histograms(path, outdir):
+def plot_histograms(path, outdir=".", output=None):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     solvers, sizes, res = read_batch(path)
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
+    out = outdir
     stem = Path(path).stem
     written = []
     # 1. iteration-count histograms
@@ -135,7 +140,7 @@ def plot_histograms(path, outdir):
     for ax in axes.ravel()[len(solvers):]:
         ax.axis("off")
     fig.tight_layout()
-    png = out / f"lcp_{stem}_iterations.png"
+    png = figure_file(out, f"lcp_{stem}_iterations.png", output)
     fig.savefig(png, dpi=110)
     plt.close(fig)
     written.append(str(png))
@@ -150,7 +155,7 @@ def plot_histograms(path, outdir):
     for a in (a1, a2):
         a.tick_params(axis="x", rotation=45)
     fig.tight_layout()
-    png = out / f"lcp_{stem}_time_residual.png"
+    png = figure_file(out, f"lcp_{stem}_time_residual.png")
     fig.savefig(png, dpi=110)
     plt.close(fig)
     written.append(str(png))
@@ -164,7 +169,7 @@ def plot_histograms(path, outdir):
            title="performance profile (Dolan-More)")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    png = out / f"lcp_{stem}_profile.png"
+    png = figure_file(out, f"lcp_{stem}_profile.png")
     fig.savefig(png, dpi=110)
     plt.close(fig)
     written.append(str(png))
@@ -175,12 +180,12 @@ def plot_histograms(path, outdir):
     return written
 
 
-def default_plot(path, outdir):
-    return plot_histograms(path, outdir)
+def default_plot(path, outdir=".", output=None):
+    return plot_histograms(path, outdir, output)
 
 
 def register(sub):
     p = sub.add_parser("lcp-histograms", help="lcpbench: iteration histograms, time/residual, performance profiles")
     p.add_argument("file")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: [print(f"wrote {x}") for x in plot_histograms(a.file, a.outdir)] and 0)
+    add_output_options(p, "lcp_<stem>_iterations.png", several=True)
+    p.set_defaults(func=figure_command(plot_histograms))

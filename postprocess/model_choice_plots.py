@@ -1,9 +1,11 @@
-"""The accuracy-target run's choice (issue #17): ``python -m postprocess model-choice run.h5`` draws every
+"""The accuracy-target run's choice: ``python -m postprocess model-choice run.h5`` draws every
 candidate of /model_choice (lib/model_choice/choice_output.hpp) as predicted L1 error against predicted cost,
-one line per family (scheme; a family whose run failed is named as left out), the target, the chosen candidate, the final run's estimated error (at its measured
-cost) and, when the run had -error, the error against the exact solution.
+one line per family (scheme; a family whose run failed is named as left out), the target, the chosen candidate,
+the final run's estimated error (at its measured cost) and, when the run had -error, the error against the exact
+solution (default figure model_choice.png).
 ``python -m postprocess model-choice-bench targets.csv`` draws scripts/bench/euler-target-error's table: the
-achieved error against the target per problem, with the lines E and E/4.
+achieved error against the target per problem, with the lines E and E/4 (default figure target_error.png).
+Both take -o FILE and --outdir DIR (postprocess/cli.py).
 """
 from __future__ import annotations
 
@@ -13,6 +15,8 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+
+from .cli import add_output_options, figure_command, figure_file
 
 
 def read_choice(path):
@@ -38,7 +42,7 @@ def front(choice, family):
     return c["predicted_cost"][sel][order], c["predicted_error"][sel][order]
 
 
-def plot_choice(path, output):
+def plot_choice(path, outdir=".", output=None):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -50,7 +54,8 @@ def plot_choice(path, output):
     for i, name in enumerate(ch["families"]):
         cost, err = front(ch, i)
         why = str(a.get(f"failure_{name}", ""))
-        ax.loglog(cost, err, "o-", ms=3, lw=1, label=f"{name} (failed at {why.split(':')[0]}: left out)" if why else name)
+        label = f"{name} (failed at {why.split(':')[0]}: left out)" if why else name
+        ax.loglog(cost, err, "o-", ms=3, lw=1, label=label)
     if a["target_error"] > 0:
         ax.axhline(a["target_error"], color="k", ls="--", lw=1, label=f"target {a['target_error']:.3g}")
     ax.loglog([a["chosen_predicted_cost"]], [a["chosen_predicted_error"]], "k*", ms=14,
@@ -64,7 +69,7 @@ def plot_choice(path, output):
     ax.set_xlabel("predicted cost [s] (final: measured)")
     ax.set_ylabel("L1 density error (predicted)")
     ax.set_title(f"model choice: pilots {a['pilot_seconds']:.3g} s, total {a['total_seconds']:.3g} s", fontsize=10)
-    return _finish(plt, fig, ax, output)
+    return _finish(plt, fig, ax, figure_file(outdir, "model_choice.png", output))
 
 
 def _finish(plt, fig, ax, output):
@@ -74,7 +79,7 @@ def _finish(plt, fig, ax, output):
     fig.tight_layout()
     fig.savefig(output, dpi=120)
     plt.close(fig)
-    return [output]
+    return [str(output)]
 
 
 def read_bench(paths):
@@ -99,7 +104,7 @@ def read_bench(paths):
     return out
 
 
-def plot_bench(paths, output):
+def plot_bench(paths, outdir=".", output=None):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -117,28 +122,16 @@ def plot_bench(paths, output):
         ax.loglog(x, x / 4, "k:", lw=1, label="E / 4")
     ax.set_xlabel("target E (L1 density)")
     ax.set_ylabel("achieved L1 error (vs exact or reference)")
-    return _finish(plt, fig, ax, output)
+    return _finish(plt, fig, ax, figure_file(outdir, "target_error.png", output))
 
 
 def register(sub):
     p = sub.add_parser("model-choice",
                        help="accuracy-target run: candidates' predicted error vs cost, the choice, its estimate")
     p.add_argument("file", help="HDF5 output of a -target_error / -target_walltime run")
-    p.add_argument("-o", "--output", default="model_choice.png")
-
-    def run(a):
-        for x in plot_choice(a.file, a.output):
-            print(f"wrote {x}")
-        return 0
-
-    p.set_defaults(func=run)
+    add_output_options(p, "model_choice.png")
+    p.set_defaults(func=figure_command(plot_choice))
     q = sub.add_parser("model-choice-bench", help="euler-target-error benchmark: achieved error vs target")
     q.add_argument("csv", nargs="+", help="targets.csv file(s) written by scripts/bench/euler-target-error")
-    q.add_argument("-o", "--output", default="target_error.png")
-
-    def run_bench(a):
-        for x in plot_bench(a.csv, a.output):
-            print(f"wrote {x}")
-        return 0
-
-    q.set_defaults(func=run_bench)
+    add_output_options(q, "target_error.png")
+    q.set_defaults(func=figure_command(plot_bench, inputs="csv"))

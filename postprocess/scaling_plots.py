@@ -5,6 +5,8 @@ from __future__ import annotations
 import csv
 from pathlib import Path
 
+from .cli import add_output_options, figure_command, figure_file
+
 
 def read_scaling(path):
     with open(path, newline="") as f:
@@ -30,7 +32,7 @@ def speedup(rows, key="wall_seconds"):
     return out
 
 
-def plot_scaling(csv_path, outdir):
+def plot_scaling(csv_path, outdir=".", output=None):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -47,18 +49,18 @@ def plot_scaling(csv_path, outdir):
         a2.plot(n, [d[2] for d in data], "o-", label=label)
     a1.plot(n, [x / n[0] for x in n], "k--", label="ideal")
     a2.axhline(1.0, color="k", ls="--", label="ideal")
-    a1.set(xlabel="MPI ranks", ylabel="speed-up", xscale="log", yscale="log", title=f"{rows[0]['app']} ({rows[0]['mode']})")
+    a1.set(xlabel="MPI ranks", ylabel="speed-up", xscale="log", yscale="log",
+           title=f"{rows[0]['app']} ({rows[0]['mode']})")
     a2.set(xlabel="MPI ranks", ylabel="parallel efficiency", xscale="log", ylim=(0, 1.2))
     a1.legend(fontsize=8)
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / f"scaling_{rows[0]['app']}_{rows[0]['mode']}.png"
+    png = figure_file(outdir, f"scaling_{rows[0]['app']}_{rows[0]['mode']}.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
 
 
-def plot_fem_scale(scale_csv, outdir):
+def plot_fem_scale(scale_csv, outdir=".", output=None):
     """femdyn -backend plex (scripts/bench/fem-scale): peak memory per rank, and time per DOF and step against
     the rank count, measured and (model.csv beside the table) projected in weak scaling."""
     import matplotlib
@@ -92,8 +94,7 @@ def plot_fem_scale(scale_csv, outdir):
     a1.legend(fontsize=8)
     a2.legend(fontsize=8)
     fig.tight_layout()
-    Path(outdir).mkdir(parents=True, exist_ok=True)
-    png = Path(outdir) / "fem_scale.png"
+    png = figure_file(outdir, "fem_scale.png", output)
     fig.savefig(png, dpi=120)
     plt.close(fig)
     return [str(png)]
@@ -102,9 +103,9 @@ def plot_fem_scale(scale_csv, outdir):
 def register(sub):
     q = sub.add_parser("fem-scale", help="femdyn -backend plex memory and time per step (scripts/bench/fem-scale)")
     q.add_argument("csv")
-    q.add_argument("--outdir", default="out")
-    q.set_defaults(func=lambda a: [print(f"wrote {x}") for x in plot_fem_scale(a.csv, a.outdir)] and 0)
+    add_output_options(q, "fem_scale.png")
+    q.set_defaults(func=figure_command(plot_fem_scale, inputs="csv"))
     p = sub.add_parser("scaling", help="speed-up and efficiency from scripts/scaling-study's scaling.csv")
     p.add_argument("csv")
-    p.add_argument("--outdir", default="out")
-    p.set_defaults(func=lambda a: [print(f"wrote {x}") for x in plot_scaling(a.csv, a.outdir)] and 0)
+    add_output_options(p, "scaling_<app>_<mode>.png")
+    p.set_defaults(func=figure_command(plot_scaling, inputs="csv"))

@@ -17,7 +17,7 @@ def test_femdyn_history_plot(tmp_path, run_suite):
         assert f["mesh/tets"].shape[1] == 4 and f["final/u"].shape == f["mesh/coordinates"].shape
     assert main(["plot", str(out), "--outdir", str(tmp_path)]) == 0
     assert (tmp_path / "femdyn_dyn_history.png").stat().st_size > 1000
-    assert (tmp_path / "dyn.h5.xmf").exists()
+    assert (tmp_path / "dyn.xmf").exists()  # the XDMF sidecar: FILE.h5 -> FILE.xmf
 
 
 def test_rate_and_orderings_figures(tmp_path):
