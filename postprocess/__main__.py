@@ -74,7 +74,8 @@ def main(argv=None):
     try:
         return args.func(args)
     except (OSError, KeyError, ValueError) as e:
-        print(f"error: {e}", file=sys.stderr)
+        text = e.args[0] if isinstance(e, KeyError) and e.args else e  # str(KeyError) would add quotes
+        print(f"error: {text}", file=sys.stderr)
         return 2
 
 

@@ -6,7 +6,6 @@ penetration (the log heap, which falls and has no rest position)."""
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import h5py
 import numpy as np

@@ -205,7 +205,7 @@ def plot_heap_histograms(path, outdir=".", output=None):
 
 def splitting_convergence_stats(h5path, stagnation=0.9):
     """Splitting error between iterates per pass over all steps of a run: median/max error per pass, and
-    per step the pass where it stagnates (error no longer shrinks by the factor `stagnation`) and the error
+    per step the pass where it stagnates (the error stops shrinking by the factor `stagnation`) and the error
     there."""
     steps, _, attrs, _, split = read_run(h5path)
     if not split:
