@@ -1,9 +1,9 @@
-// Euler checkpoint/restart for -dim 1|2|3 (issue #8), the TimeLoop's saveState/loadState: the conserved state
+// Euler checkpoint/restart for -dim 1|2|3, the TimeLoop's saveState/loadState: the conserved state
 // as one global array ((z,) (y,) x, NV), so a restart may use another rank count or process grid, the initial
 // totals of the conservation report, step and time. The header's tag names problem, dimension, axis, scheme,
 // time integrator, gamma and the line options, its grid the cell counts: a restart with other physics or
-// numerics is refused with one clear message (so are checkpoints of the former 1D driver, whose tag had no
-// dimension). Single-step integrators restart bitwise; BDF2 keeps no history in the checkpoint and restarts
+// numerics is refused with one clear message (so is a checkpoint whose tag names no dimension: another
+// layout). Single-step integrators restart bitwise; BDF2 keeps no history in the checkpoint and restarts
 // with its BDF1 start-up step (a difference of the order of the local truncation error, reported at restart).
 #include "euler_run.hpp"
 
@@ -71,8 +71,8 @@ PetscErrorCode EulerRun::loadState(const std::string& path, PetscInt* step, doub
   PetscCall(suite::readCheckpointHeader(ctx_.comm(), path, &h));
   PetscCheck(h.app != "euler" || h.scheme.find(":dim=") != std::string::npos, ctx_.comm(),
              PETSC_ERR_FILE_UNEXPECTED,
-             "restart %s: a checkpoint of the former 1D Euler driver (its tag '%s' names no dimension); this "
-             "version restarts only from checkpoints of the one driver for -dim 1|2|3: run the case again",
+             "restart %s: the checkpoint's tag '%s' names no dimension (dim=1|2|3): not a checkpoint of this "
+             "euler's layout; run the case again",
              path.c_str(), h.scheme.c_str());
   PetscCall(checkpointIo(false, path, step, t));
   PetscCall(TSSetStepNumber(ts_, *step));

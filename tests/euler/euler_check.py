@@ -213,7 +213,7 @@ def restart():
                            [str(a) for a in base + ["-restart", old]],
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
         lines = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
-        check(p.returncode != 0 and len(lines) == 1 and "former 1D Euler driver" in lines[0],
+        check(p.returncode != 0 and len(lines) == 1 and "names no dimension" in lines[0],
               f"checkpoint whose tag names no dimension refused once, saying so: {lines}")
         data = bytearray(open(path, "rb").read())
         data[len(data) // 2] ^= 0xFF
