@@ -35,12 +35,7 @@ struct Reader {
     PetscFunctionReturn(0);
   }
   PetscErrorCode string(const char* name, const char* text, std::string* v) const {
-    char buf[PETSC_MAX_PATH_LEN];
-    PetscFunctionBeginUser;
-    PetscCall(PetscStrncpy(buf, v->c_str(), sizeof buf));
-    PetscCall(PetscOptionsString_Private(po, name, text, nullptr, buf, buf, sizeof buf, nullptr));
-    *v = buf;
-    PetscFunctionReturn(0);
+    return suite::optionsString(po, name, text, v);
   }
   // A list of solvers (contactSolverChoices); 'none' entries are dropped ('none' alone: the empty list).
   PetscErrorCode solvers(const char* name, const char* text, bool none, std::vector<std::string>* v) const {

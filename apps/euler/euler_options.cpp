@@ -194,12 +194,9 @@ PetscErrorCode readNumerics(PetscOptionItems* PetscOptionsObject, Options* o) {
 }
 
 PetscErrorCode readOutput(PetscOptionItems* PetscOptionsObject, Options* o) {
-  char buf[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsString("-output", "HDF5 output file (XDMF sidecar beside it)", "", buf, buf,
-                               sizeof(buf), &set));
-  if (set) o->output = buf;
+  PetscCall(suite::optionsString(PetscOptionsObject, "-output", "HDF5 output file (XDMF sidecar beside it)",
+                                 &o->output));
   PetscCall(suite::optionsInt(PetscOptionsObject, "-snapshot_every",
                               "Write a snapshot every N steps (0: none)", "", o->snapshot_every,
                               &o->snapshot_every, nullptr));
@@ -212,10 +209,9 @@ PetscErrorCode readOutput(PetscOptionItems* PetscOptionsObject, Options* o) {
                                            : "Density errors (L1, L2, Linf) against the exact solution",
                                "", o->error, &o->error, nullptr));
   if (o->dim == 1) {
-    buf[0] = 0;
-    PetscCall(PetscOptionsString("-reference", "HDF5 file of a finer (or equal) grid run to compare with", "",
-                                 buf, buf, sizeof(buf), &set));
-    if (set) o->reference = buf;
+    PetscCall(suite::optionsString(PetscOptionsObject, "-reference",
+                                   "HDF5 file of a finer (or equal) grid run to compare with",
+                                   &o->reference));
   } else {
     PetscCall(
         suite::optionsBool(PetscOptionsObject, "-spectrum",

@@ -4,6 +4,7 @@
 
 #include "core/comma_list.hpp"
 #include "core/named_choice.hpp"
+#include "core/option_text.hpp"
 #include "core/option_value.hpp"
 #include "core/resource_checks.hpp"
 
@@ -32,7 +33,6 @@ const FclibModelInfo kFclibModels[] = {
 PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options* o, PetscBool* family_set) {
   PetscOptionItems* const po = PetscOptionsObject; // the raw PETSc macros below name PetscOptionsObject
   std::vector<Choice> families = suite::choicesOf(suite::lcp::familyRegistry());
-  char files[8192] = "";
   PetscFunctionBeginUser;
   families.push_back({"file", "problems read from -file (Siconos .dat, suite .h5, FCLib HDF5)"});
   PetscCall(suite::optionsChoice(po, "-family", "Problem family", families, &o->family, family_set));
@@ -48,10 +48,10 @@ PetscErrorCode readProblemOptions(PetscOptionItems* PetscOptionsObject, Options*
                          &o->lower, nullptr, suite::Real::or_inf));
   PetscCall(optionsValue(po, "-upper", "Upper bound of random_box problems (default qrange; inf allowed)",
                          &o->upper, nullptr, suite::Real::or_inf));
-  PetscCall(PetscOptionsString(
-      "-file", "Problem files for -family file (comma-separated; .dat Siconos, .h5 suite, FCLib HDF5)", "",
-      files, files, sizeof files, nullptr));
-  o->files = suite::splitCommaList(files);
+  PetscCall(suite::optionsFileList(po, "-file",
+                                   "Problem files for -family file (comma-separated, @LIST or a glob "
+                                   "pattern; .dat Siconos, .h5 suite, FCLib HDF5)",
+                                   &o->files));
   PetscCall(suite::optionsChoice(po, "-fclib_model", "FCLib frictional-contact files read as",
                                  suite::choicesOf(kFclibModels), &o->fclib_model));
   PetscFunctionReturn(0);

@@ -8,7 +8,10 @@
 //   PetscOptionsBegin(comm, "", "Euler options", "");
 //   PetscCall(suite::optionsChoice(PetscOptionsObject, "-scheme", "Spatial scheme", kSchemes, &scheme));
 //   PetscOptionsEnd();
-// A list option (-solvers a,b,c) takes optionsChoiceList: every element must be registered.
+// A list option (-solvers a,b,c) takes optionsChoiceList: every element must be registered. Values are read
+// at any length (core/option_text.hpp); -help shows the value in effect whole (`  -solvers <lemke,bpp>: ...`).
+// Each list of values is printed once per -help: a later option whose list mostly repeats it (several options
+// sharing one registry) prints one line `(as -lcp_solver, except auto)`, then only the values it adds.
 #pragma once
 
 #include <petscsys.h>

@@ -10,7 +10,10 @@
 //   - a real must be finite (nan, inf, 1e400 are refused) unless the option accepts infinity (Real::or_inf:
 //     then +-inf are accepted, never nan);
 //   - a flag must be true/false, yes/no, on/off or 1/0 (no value: true).
-// The same rules hold for each entry of a comma-separated array (optionsArray).
+// The same rules hold for each entry of a comma-separated array (optionsRealArray, optionsIntArray), and an
+// array given more entries than it holds is refused (PETSc would drop the rest without a word).
+// -help prints `  -name <value>: text` with the value in effect, arrays in full (option_text.hpp); `man` is not
+// printed.
 #pragma once
 
 #include <petscsys.h>
@@ -28,7 +31,8 @@ PetscErrorCode optionsInt(PetscOptionItems* PetscOptionsObject, const char* name
                           const char* man, PetscInt dflt, PetscInt* value, PetscBool* set);
 PetscErrorCode optionsBool(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
                            const char* man, PetscBool dflt, PetscBool* value, PetscBool* set);
-// Up to *n values; on return *n is the number given (0 if the option is not given, as in PETSc).
+// Up to *n values (more is an error); on return *n is the number given (0 if the option is not given, as in
+// PETSc).
 PetscErrorCode optionsRealArray(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
                                 const char* man, PetscReal* values, PetscInt* n, PetscBool* set);
 PetscErrorCode optionsIntArray(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
@@ -49,15 +53,9 @@ inline PetscErrorCode optionsValue(PetscOptionItems* PetscOptionsObject, const c
   return optionsBool(PetscOptionsObject, name, text, "", *value, value, set);
 }
 
-// A string without a fixed set of values (a path, a plane), read into a std::string.
-inline PetscErrorCode optionsString(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
-                                    std::string* value) {
-  char buf[PETSC_MAX_PATH_LEN];
-  PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(buf, value->c_str(), sizeof buf));
-  PetscCall(PetscOptionsString(name, text, "", buf, buf, sizeof buf, nullptr));
-  *value = buf;
-  PetscFunctionReturn(0);
-}
+// A string without a fixed set of values (a path, a plane), read whole into a std::string (any length; see
+// option_text.hpp). *value on entry is the default; *set (if given): whether the option was given.
+PetscErrorCode optionsString(PetscOptionItems* PetscOptionsObject, const char* name, const char* text,
+                             std::string* value, PetscBool* set = nullptr);
 
 } // namespace suite

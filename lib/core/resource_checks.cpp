@@ -1,6 +1,8 @@
 // Option range and memory estimate checks (see resource_checks.hpp).
 #include "core/resource_checks.hpp"
 
+#include "core/option_text.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -12,27 +14,29 @@
 namespace suite {
 
 PetscErrorCode checkIntOptionRange(MPI_Comm comm, const char* name, long long lo) {
-  char text[256] = "";
-  PetscBool set = PETSC_FALSE;
+  std::string s;
+  bool set = false;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, name, text, sizeof text, &set));
+  PetscCall(findOptionText(name, &s, &set));
   if (!set) PetscFunctionReturn(0);
+  const char* text = s.c_str();
   errno = 0;
   char* end = nullptr;
   const long long v = std::strtoll(text, &end, 10);
   const bool ok = errno == 0 && end != text && *end == '\0' && v >= lo && v <= (long long)PETSC_MAX_INT;
   PetscCheck(ok, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "%s %s: must be an integer in [%lld, %lld] (PetscInt is %d-bit)", name, text, lo,
-             (long long)PETSC_MAX_INT, (int)(8 * sizeof(PetscInt)));
+             "%s %s: must be an integer in [%lld, %lld] (PetscInt is %d-bit)", name, shownValue(s).c_str(),
+             lo, (long long)PETSC_MAX_INT, (int)(8 * sizeof(PetscInt)));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode checkIntListOptionRange(MPI_Comm comm, const char* name, long long lo) {
-  char text[1024] = "";
-  PetscBool set = PETSC_FALSE;
+  std::string s;
+  bool set = false;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, name, text, sizeof text, &set));
+  PetscCall(findOptionText(name, &s, &set));
   if (!set) PetscFunctionReturn(0);
+  const char* text = s.c_str();
   bool ok = true;
   for (const char* p = text; ok;) {
     errno = 0;
@@ -43,8 +47,8 @@ PetscErrorCode checkIntListOptionRange(MPI_Comm comm, const char* name, long lon
     p = end + 1;
   }
   PetscCheck(ok, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "%s %s: every entry must be an integer in [%lld, %lld] (PetscInt is %d-bit)", name, text, lo,
-             (long long)PETSC_MAX_INT, (int)(8 * sizeof(PetscInt)));
+             "%s %s: every entry must be an integer in [%lld, %lld] (PetscInt is %d-bit)", name,
+             shownValue(s).c_str(), lo, (long long)PETSC_MAX_INT, (int)(8 * sizeof(PetscInt)));
   PetscFunctionReturn(0);
 }
 

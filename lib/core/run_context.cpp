@@ -48,12 +48,18 @@ PetscErrorCode bufferHelp(MPI_Comm comm, const char format[], ...) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (rank != 0) return 0;
-  va_list ap;
+  va_list ap, again;
   va_start(ap, format);
-  char buf[8192];
-  std::vsnprintf(buf, sizeof buf, format, ap);
+  va_copy(again, ap);
+  const int n = std::vsnprintf(nullptr, 0, format, ap); // whole, at any length
   va_end(ap);
-  g_generic_help += buf;
+  if (n > 0) {
+    std::string text(static_cast<size_t>(n) + 1, '\0');
+    std::vsnprintf(&text[0], text.size(), format, again);
+    text.resize(static_cast<size_t>(n));
+    g_generic_help += text;
+  }
+  va_end(again);
   return 0;
 }
 

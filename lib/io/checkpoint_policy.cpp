@@ -1,6 +1,7 @@
 // Periodic checkpoint policy and restart-file selection (see checkpoint_policy.hpp).
 #include "io/checkpoint_policy.hpp"
 
+#include "core/option_text.hpp"
 #include "core/option_value.hpp"
 #include "io/h5_output.hpp"
 
@@ -45,15 +46,15 @@ std::string ensureDirectory(const std::string& dir) {
 } // namespace
 
 PetscErrorCode CheckpointPolicy::setFromOptions(MPI_Comm comm, const std::string& app) {
-  char dir[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "";
+  std::string dir, restart;
   PetscInt every = 0, keep = 2;
   PetscReal wall = 0.0;
   PetscFunctionBeginUser;
   comm_ = comm;
   app_ = app;
   PetscOptionsBegin(comm, nullptr, "Checkpoint/restart options", nullptr);
-  PetscCall(PetscOptionsString("-checkpoint_dir", "Directory for periodic and final checkpoints", nullptr,
-                               dir, dir, sizeof dir, nullptr));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-checkpoint_dir",
+                                 "Directory for periodic and final checkpoints", &dir));
   PetscCall(suite::optionsInt(PetscOptionsObject, "-checkpoint_every", "Checkpoint every N steps (0: off)",
                               nullptr, every, &every, nullptr));
   PetscCall(suite::optionsReal(PetscOptionsObject, "-checkpoint_wall",
@@ -61,15 +62,16 @@ PetscErrorCode CheckpointPolicy::setFromOptions(MPI_Comm comm, const std::string
                                nullptr));
   PetscCall(suite::optionsInt(PetscOptionsObject, "-checkpoint_keep",
                               "Number of newest checkpoint files kept", nullptr, keep, &keep, nullptr));
-  PetscCall(PetscOptionsString("-restart", "Checkpoint file to restart from, or 'latest' in -checkpoint_dir",
-                               nullptr, restart, restart, sizeof restart, nullptr));
+  PetscCall(suite::optionsString(PetscOptionsObject, "-restart",
+                                 "Checkpoint file to restart from, or 'latest' in -checkpoint_dir",
+                                 &restart));
   PetscOptionsEnd();
   PetscCheck(every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %d: must be >= 0", (int)every);
   PetscCheck(wall >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_wall %g: must be >= 0", (double)wall);
   PetscCheck(keep >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_keep %d: must be >= 1", (int)keep);
-  PetscCheck(dir[0] || (every == 0 && wall == 0), comm, PETSC_ERR_ARG_WRONG,
+  PetscCheck(!dir.empty() || (every == 0 && wall == 0), comm, PETSC_ERR_ARG_WRONG,
              "-checkpoint_every/-checkpoint_wall need -checkpoint_dir");
-  PetscCheck(std::strcmp(restart, "latest") != 0 || dir[0], comm, PETSC_ERR_ARG_WRONG,
+  PetscCheck(restart != "latest" || !dir.empty(), comm, PETSC_ERR_ARG_WRONG,
              "-restart latest needs -checkpoint_dir");
   dir_ = dir;
   restart_ = restart;
@@ -82,7 +84,7 @@ PetscErrorCode CheckpointPolicy::setFromOptions(MPI_Comm comm, const std::string
     PetscCallMPI(MPI_Comm_rank(comm, &rank));
     if (rank == 0) std::snprintf(msg, sizeof msg, "%s", ensureDirectory(dir_).c_str());
     PetscCallMPI(MPI_Bcast(msg, sizeof msg, MPI_CHAR, 0, comm));
-    PetscCheck(!msg[0], comm, PETSC_ERR_FILE_OPEN, "-checkpoint_dir %s: %s", dir_.c_str(), msg);
+    PetscCheck(!msg[0], comm, PETSC_ERR_FILE_OPEN, "-checkpoint_dir %s: %s", shownValue(dir_).c_str(), msg);
     PetscCall(checkOutputWritable(comm, pathForStep(0), "checkpoint_dir"));
   }
   last_wall_ = MPI_Wtime();
@@ -124,23 +126,23 @@ PetscErrorCode CheckpointPolicy::written(long long step) {
 PetscErrorCode CheckpointPolicy::restartPath(std::string* path) const {
   PetscFunctionBeginUser;
   PetscCheck(restartRequested(), comm_, PETSC_ERR_ARG_WRONG, "no -restart given");
-  char buf[PETSC_MAX_PATH_LEN] = "";
+  std::string p; // rank 0's answer, whole
   int rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   if (rank == 0) {
-    std::string p = restart_;
+    p = restart_;
     if (restart_ == "latest") {
       const std::vector<long long> steps = listCheckpointSteps(dir_, app_);
       p = steps.empty() ? "" : pathForStep(steps.back());
     }
     struct stat st;
     if (!p.empty() && stat(p.c_str(), &st) != 0) p.clear();
-    std::snprintf(buf, sizeof buf, "%s", p.c_str());
   }
-  PetscCallMPI(MPI_Bcast(buf, sizeof buf, MPI_CHAR, 0, comm_));
-  PetscCheck(buf[0], comm_, PETSC_ERR_FILE_OPEN, "-restart %s: %s", restart_.c_str(),
-             restart_ == "latest" ? ("no checkpoint " + app_ + "_*.h5 in " + dir_).c_str() : "no such file");
-  *path = buf;
+  PetscCall(broadcastString(comm_, &p));
+  PetscCheck(!p.empty(), comm_, PETSC_ERR_FILE_OPEN, "-restart %s: %s", shownValue(restart_).c_str(),
+             restart_ == "latest" ? ("no checkpoint " + app_ + "_*.h5 in " + shownValue(dir_)).c_str()
+                                  : "no such file");
+  *path = p;
   PetscFunctionReturn(0);
 }
 

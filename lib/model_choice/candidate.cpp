@@ -2,6 +2,8 @@
 // candidate.hpp).
 #include "model_choice/candidate.hpp"
 
+#include "core/option_text.hpp"
+
 #include <algorithm>
 
 namespace suite::model_choice {
@@ -13,15 +15,16 @@ std::string optionsText(const OptionValues& options) {
 }
 
 PetscErrorCode ScopedOptions::remember(const std::string& name) {
-  char buf[PETSC_MAX_PATH_LEN] = "";
-  PetscBool had = PETSC_FALSE, used = PETSC_FALSE;
+  std::string value; // whole, at any length
+  bool had = false;
+  PetscBool used = PETSC_FALSE;
   PetscFunctionBeginUser;
   for (const Saved& s : saved_)
     if (s.name == name) PetscFunctionReturn(0); // the first value is the one to restore
   // whether it was read before the read below marks it (PetscOptionsUsed takes the name without its '-')
   PetscCall(PetscOptionsUsed(nullptr, name.c_str() + (name[0] == '-'), &used));
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, name.c_str(), buf, sizeof buf, &had));
-  saved_.push_back({name, buf, had == PETSC_TRUE, used == PETSC_TRUE});
+  PetscCall(suite::findOptionText(name.c_str(), &value, &had));
+  saved_.push_back({name, value, had, used == PETSC_TRUE});
   PetscFunctionReturn(0);
 }
 
