@@ -62,7 +62,8 @@ def test_several_figures_output_names_the_main_one(tmp_path, capsys):
     assert main(["lcp-histograms", str(h5), "-o", str(out)]) == 0
     lines = capsys.readouterr().out.splitlines()
     d = tmp_path / "figs"  # the others beside FILE under their default names
-    assert lines == [f"wrote {out}", f"wrote {d / 'lcp_batch_time_residual.png'}", f"wrote {d / 'lcp_batch_profile.png'}"]
+    assert lines == [f"wrote {out}", f"wrote {d / 'lcp_batch_time_residual.png'}",
+                     f"wrote {d / 'lcp_batch_profile.png'}"]
     other = tmp_path / "other"
     assert main(["lcp-histograms", str(h5), "-o", str(out), "--outdir", str(other)]) == 0
     lines = capsys.readouterr().out.splitlines()
