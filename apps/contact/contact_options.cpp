@@ -51,7 +51,8 @@ struct Reader {
 PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoice(r.po, "-scene", "Scene", sceneChoices(), &s->scene));
-  PetscCall(r.string("-scene_file", "Scene file for -scene file (format: lib/contact/scenes.hpp)", &s->file));
+  PetscCall(r.string("-scene_file", "Scene file for -scene file (format: docs/contact.md#scene-file-format)",
+                     &s->file));
   PetscCall(r.real("-theta", "Incline angle (degrees)", &s->theta_deg));
   PetscCall(r.real("-size", "Box edge / sphere diameter (m)", &s->size));
   PetscCall(r.real("-density", "Density (kg/m^3)", &s->density));

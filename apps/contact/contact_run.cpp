@@ -126,10 +126,12 @@ PetscErrorCode ContactStepping::dumpProblems(PetscInt step) {
   PetscFunctionReturn(0);
 }
 
-// A failed step: the bodies are unchanged; its (last) problem is dumped next to the output.
+// A failed step: the bodies are unchanged; its (last) problem is dumped next to the output (without -output:
+// contact.failed_stepN.h5 in the working directory).
 PetscErrorCode ContactStepping::failed(PetscInt step, const StepStats& st, suite::StepOutcome* out) {
   PetscFunctionBeginUser;
-  std::string dump = o_.output + ".failed_step" + std::to_string(step) + ".h5";
+  const std::string stem = o_.output.empty() ? std::string("contact") : o_.output;
+  std::string dump = stem + ".failed_step" + std::to_string(step) + ".h5";
   if (!stepper_.lastProblems().empty())
     PetscCall(suite::lcp::writeProblemH5(ctx_.comm(), dump, stepper_.lastProblems().back()));
   else

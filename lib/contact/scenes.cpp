@@ -185,7 +185,7 @@ const std::vector<SceneEntry>& registry() {
       {"pyramid", "a pyramid of boxes, -pyramid_base in the bottom row", pyramidScene},
       {"pile_grid", "-piles pyramids of base -pyramid_base on a grid (independent piles)", pileGridScene},
       {"log_heap", "-n_logs capsule logs dropped between four walls (Lacoursiere 2003)", logHeapScene},
-      {"file", "the bodies of -scene_file (format: lib/contact/scenes.hpp)", fileScene},
+      {"file", "the bodies of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
   };
   return r;
 }

@@ -1,6 +1,6 @@
 // Scenes of the contact app: incline (box on a plane of angle theta), drop (one body dropped on a plane),
 // box_stack, pyramid, pile_grid (a grid of pyramids), log_heap (capsule logs dropped between walls), and a
-// scene file format for arbitrary bodies. Every scene is built identically on every rank (replicated, deterministic, seeded).
+// scene file format for arbitrary bodies (described for users in docs/contact.md). Every scene is built identically on every rank (replicated, deterministic, seeded).
 //
 // Scene file (one body per line, '#' starts a comment, key=value tokens, vectors comma-separated):
 //   plane    name=ground normal=0,0,1 point=0,0,0
