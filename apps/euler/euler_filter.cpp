@@ -11,7 +11,7 @@
 // -filter_time tau > 0 the step blends the filtered state in with weight theta = min(1, dt / tau), a relaxation
 // dU/dt = -(U - F U) / tau at a rate independent of the grid: the filter's error stays O(t dx^6 / tau) whatever
 // dt, so the Pade core keeps its sixth order, and the 2-dx mode (T(pi) = 0) still decays like exp(-t / tau).
-// Issue #18 item 5: it removes the 2-dx noise of the Pade rows (scripts/bench/euler-checkerboard,
+// It removes the 2-dx noise of the Pade rows (scripts/bench/euler-checkerboard,
 // docs/euler_nd.md).
 #include "euler_run.hpp"
 

@@ -2,7 +2,7 @@
 // `density_wave` rho = 1 + A sin(pi x) on [-1, 1] (Jiang & Shu 1996 sec. 4.1-style accuracy test);
 // `pulse`: a rectangular density block moving left at high speed (u = -3, Mach 2.5 in the ambient gas)
 // through a uniform medium with sine-shaped oscillations ahead of it, 560 cells and 2000 fixed steps by
-// default (our reconstruction of the seed code's 2003 pulse case; the exact solution is known, so -error
+// default (a reconstruction of the original ENO-Pade code's pulse case; the exact solution is known, so -error
 // works).
 #include "core/option_value.hpp"
 #include "euler/problem.hpp"
