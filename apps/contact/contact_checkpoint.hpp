@@ -1,4 +1,4 @@
-// Checkpoint/restart of the contact app (issue #8) with lib/io/checkpoint.hpp: the state the next step
+// Checkpoint/restart of the contact app with lib/io/checkpoint.hpp: the state the next step
 // depends on: every body's position, orientation, linear and angular velocity (nb x 13), the sleeping
 // counters (nb x 2) and the last step's contacts with their impulses (warm start and the scaled_box /
 // splitting estimates; (nc + 1) x 8, row 0 holds nc), plus step and time in the header. The state is

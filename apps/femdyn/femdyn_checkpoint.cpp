@@ -1,4 +1,4 @@
-// femdyn checkpoint/restart (issue #8): the time-integration state u, v, a (free DOFs) at the end of a step,
+// femdyn checkpoint/restart: the time-integration state u, v, a (free DOFs) at the end of a step,
 // the time and step in the header, and the history of the run so far (per-step records, snapshots, probe
 // histories), so that a restarted run continues bitwise identically and writes the same output as an
 // uninterrupted one. The FEM state is replicated on all ranks: rank 0 writes the arrays, rank 0 reads them and

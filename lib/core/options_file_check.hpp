@@ -1,4 +1,4 @@
-// Options files (run decks) are checked before PETSc reads them (issue #21). PETSc 3.18 stops reading a line at
+// Options files (run decks) are checked before PETSc reads them. PETSc 3.18 stops reading a line at
 // a NUL byte (a binary file is silently ignored), prints the raw bytes of a binary line, reports a YAML syntax
 // error without its line, and recurses until the stack overflows on a file that includes itself. The check
 // reads every file named by -options_file / -options_file_yaml on the command line or in PETSC_OPTIONS (and the
