@@ -42,6 +42,7 @@ struct Options {
   // timing (lcpbench_timing.cpp): 0 = one timed run per (solver, problem)
   PetscReal time_repeat = 0.0;
   PetscInt time_batches = 3;
+  PetscInt warmup = 1; // untimed solves of the batch's first problems by every solver, on every rank
 
   bool fromFiles() const { return family == "file"; }
   bool hasAuto() const { return std::find(solvers.begin(), solvers.end(), "auto") != solvers.end(); }
@@ -87,6 +88,7 @@ struct Batch {
   int auto_index = -1;             // position of "auto" in solver_names, -1 if absent
   double delay = 0.0;              // testing: seconds of sleep after each problem
   Timing timing;                   // -time_repeat, -time_batches
+  long long warmup = 1;            // -warmup: problems solved untimed by every solver before timing
 
   bool fromFiles() const { return family == "file"; }
   // index, n, kFields per solver, then (with auto) class, succeeding solver, tried count, kAutoMaxTried tried
@@ -100,6 +102,10 @@ struct Batch {
 PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b);
 // Problem k solved by every solver: rec = k, n, then kFields values per solver. Depends on k alone.
 void solveOne(const Batch& b, long long k, double* rec);
+// The untimed warm-up of this rank (lcpbench_batch.cpp): every solver solves the first b.warmup valid problems
+// of the batch once, results discarded, before any timed solve. Returns the solves per solver (the same for
+// every solver and rank: min(b.warmup, valid problems among the first b.warmup + 1000)).
+long long warmUp(const Batch& b);
 
 constexpr unsigned long long kBlock = 65536;  // problems per block of the streamed passes over the file
 constexpr unsigned long long kMaxRuns = 4096; // runs (start + resumes) whose wall time is recorded
@@ -169,6 +175,8 @@ struct RunState {
   long long ndone = 0;             // every rank: problems done, this run and before
   int stopped = 0;                 // 0: no stop, 1: signal, 2: -max_walltime
   double wall = 0;                 // seconds spent dealing
+  long long warmup_solves = 0;     // every rank: untimed warm-up solves per solver in this run (warmUp)
+  double warmup_wall = 0;          // rank 0: seconds they took
 };
 // Collective: rank 0 resumes OUT.partial (under -resume, if it exists) or creates it.
 PetscErrorCode startBatchFile(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,

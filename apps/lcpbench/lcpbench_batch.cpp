@@ -53,6 +53,7 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
             o.refine == PETSC_TRUE};
   b->delay = o.delay;
   b->timing = {o.time_repeat, static_cast<int>(o.time_batches)};
+  b->warmup = o.warmup;
   b->count = o.count;
   if (!b->fromFiles()) PetscFunctionReturn(0);
   b->file_problems.resize(o.files.size());
@@ -74,7 +75,7 @@ double registryIndex(const std::string& name) {
 }
 
 // The portfolio on p; its choices into rec[0, kAutoFields).
-Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec) {
+Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec, const Timing& t) {
   std::fill(rec, rec + kAutoFields, -1.0);
   rec[2] = 0;
   if (!p) {
@@ -92,7 +93,7 @@ Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec) {
         ao.timed = timed;
         return solveAuto(*p, ao, timed ? &info : nullptr);
       },
-      b.timing);
+      t);
   rec[0] = problemClassIndex(info.features.name());
   rec[1] = r.ok() ? registryIndex(info.solver) : -1.0;
   rec[2] = static_cast<double>(info.attempts.size());
@@ -101,35 +102,47 @@ Result solveAutoRecorded(const Batch& b, const Problem* p, double* rec) {
   return r;
 }
 
-} // namespace
-
-void solveOne(const Batch& b, long long k, double* rec) {
-  Problem gen; // problem k: the k-th file, or generated (p: nullptr when invalid, err says why)
-  std::string err;
-  const Problem* p = nullptr;
+// Problem k: the k-th file, or generated into *gen; *err: "" or why it is invalid (then no solver runs it).
+// nullptr when there is no problem at all (an invalid file, a failed generation).
+const Problem* problemOf(const Batch& b, long long k, Problem* gen, std::string* err) {
   if (b.fromFiles()) {
-    err = b.file_errors[k];
-    p = err.empty() ? &b.file_problems[k] : nullptr;
-  } else {
-    err = suite::messageOf([&] { gen = generate(b.family, b.gp, static_cast<std::uint64_t>(k)); });
-    if (err.empty()) p = &gen;
-    if (p) err = validate(gen);
+    *err = b.file_errors[k];
+    return err->empty() ? &b.file_problems[k] : nullptr;
   }
-  rec[0] = static_cast<double>(k);
-  rec[1] = p ? p->size() : 0;
-  for (size_t s = 0; s < b.solvers.size(); ++s) {
+  *err = suite::messageOf([&] { *gen = generate(b.family, b.gp, static_cast<std::uint64_t>(k)); });
+  if (!err->empty()) return nullptr;
+  *err = validate(*gen);
+  return gen;
+}
+
+// The solver run j-th on problem k. A solve is faster right after the solves of some solvers than of others
+// (their code and data still in the caches: auto runs bpp first, and listed after bpp it took 0.65 times its
+// time listed first), so a fixed order would time each solver by its place in -solvers. Problem k runs the
+// listed order rotated by k/2 (k even) or the reversed order rotated by k/2 (k odd): over the batch every
+// solver runs in every place and after every other solver alike, and listing the solvers in another order
+// only permutes which problem gets which arrangement.
+size_t solverAt(size_t solvers, long long k, size_t j) {
+  const size_t i = (j + static_cast<size_t>((k / 2) % static_cast<long long>(solvers))) % solvers;
+  return k % 2 == 0 ? i : solvers - 1 - i;
+}
+
+// Problem k (p; nullptr: invalid input) solved by every solver with timing t, into rec[2, ...).
+void solveAll(const Batch& b, long long k, const Problem* p, const Timing& t, double* rec) {
+  for (size_t j = 0; j < b.solvers.size(); ++j) {
+    const size_t s = solverAt(b.solvers.size(), k, j);
     Result r; // invalid input: no solver runs (zero counts and times, infinite residual)
     r.status = Status::InvalidInput;
-    if (static_cast<int>(s) == b.auto_index)
-      r = solveAutoRecorded(b, err.empty() ? p : nullptr, rec + b.autoBase());
-    else if (err.empty() && p)
+    if (static_cast<int>(s) == b.auto_index) {
+      r = solveAutoRecorded(b, p, rec + b.autoBase(), t);
+    } else if (p) {
       r = timedRun(
           [&](bool timed) {
             SolverOptions so = b.opt;
             so.timed = timed;
             return solve(*b.solvers[s], *p, so);
           },
-          b.timing);
+          t);
+    }
     const double v[kFields] = {static_cast<double>(r.status),
                                static_cast<double>(r.iterations),
                                static_cast<double>(r.pivots),
@@ -138,7 +151,37 @@ void solveOne(const Batch& b, long long k, double* rec) {
                                r.cpu_time};
     std::copy(v, v + kFields, rec + 2 + s * kFields);
   }
+}
+
+} // namespace
+
+void solveOne(const Batch& b, long long k, double* rec) {
+  Problem gen;
+  std::string err;
+  const Problem* p = problemOf(b, k, &gen, &err);
+  rec[0] = static_cast<double>(k);
+  rec[1] = p ? p->size() : 0;
+  solveAll(b, k, err.empty() ? p : nullptr, b.timing, rec);
   if (b.delay > 0) usleep(static_cast<useconds_t>(b.delay * 1e6));
+}
+
+// The first touch of a solver's code and memory (page faults, caches, branch predictors, lazy initialisation)
+// is paid by whichever solve comes first: timed, it makes the first solver of -solvers look slower than the
+// same solver listed later. Every solver solves the same problems here, in the same way as timed (one run, the
+// timer read, no -time_repeat batches), before any timed solve.
+long long warmUp(const Batch& b) {
+  std::vector<double> rec(static_cast<size_t>(b.recordLength()));
+  const Timing once; // one run, as a timed solve without -time_repeat
+  long long solves = 0;
+  for (long long k = 0; k < b.count && k < b.warmup + 1000 && solves < b.warmup; ++k) {
+    Problem gen;
+    std::string err;
+    const Problem* p = problemOf(b, k, &gen, &err);
+    if (!p || !err.empty()) continue; // an invalid problem runs no solver: not a warm-up
+    solveAll(b, k, p, once, rec.data());
+    ++solves;
+  }
+  return solves;
 }
 
 } // namespace lcpbench_app

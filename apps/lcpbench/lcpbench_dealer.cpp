@@ -147,8 +147,12 @@ PetscErrorCode work(MPI_Comm comm, const Batch& b) {
 
 PetscErrorCode dealProblems(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
                             RunState* st) {
-  const double t_start = MPI_Wtime();
   PetscFunctionBeginUser;
+  // Every rank warms every solver up before any timed solve (problems are dealt to any rank).
+  const double t_warm = MPI_Wtime();
+  if (st->ndone0 < b.count) st->warmup_solves = warmUp(b);
+  st->warmup_wall = MPI_Wtime() - t_warm;
+  const double t_start = MPI_Wtime();
   if (ctx.rank() == 0)
     PetscCall(Dealer(ctx, o, b, store, st).run());
   else

@@ -50,15 +50,22 @@ void writeRunAttributes(suite::H5AppendFile& f, const suite::RunContext& ctx, co
 }
 
 // Rank 0 (throws): OUT.partial copied to OUT.tmp, completed, renamed to OUT; OUT.partial removed last.
-void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b, Store* store,
-                  std::vector<SolverSummary>* S, std::string* auto_line) {
+void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b, const RunState& st,
+                  Store* store, std::vector<SolverSummary>* S, std::string* auto_line) {
   const std::string partial = o.output + ".partial";
   suite::H5AppendFile& f = store->file;
   f.close();
   const std::string tmp = o.output + ".tmp";
   std::filesystem::copy_file(partial, tmp, std::filesystem::copy_options::overwrite_existing);
   f.open(tmp, true);
-  for (size_t s = 0; s < b.solver_names.size(); ++s) (*S)[s] = summarise(f, b.solver_names[s], b.count);
+  for (size_t s = 0; s < b.solver_names.size(); ++s) {
+    (*S)[s] = summarise(f, b.solver_names[s], b.count);
+    f.setAttribute("/results/" + b.solver_names[s], "warmup_solves", st.warmup_solves);
+  }
+  f.setAttribute(
+      "/", "timing",
+      "every solver timed after the same untimed warm-up: warmup_solves solves of the batch's first "
+      "valid problems on every rank, this run (/results/<solver> attribute warmup_solves)");
   if (b.auto_index >= 0) *auto_line = summariseAuto(f, b.count);
   writeRunAttributes(f, ctx, o, b, store);
   f.setAttribute("/", "wall_seconds", ctx.wallSeconds());
@@ -75,13 +82,14 @@ PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, cons
   MPI_Comm comm = ctx.comm();
   const long long solved_now = b.count - st.ndone0;
   PetscFunctionBeginUser;
-  PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-16s %8s %8s %10s %10s %12s %12s %12s", "solver", "solved",
-                           "failed", "med.iter", "med.piv/n", "time [s]", "problems/s", "prob/cpu-s"));
+  PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-16s %8s %8s %10s %10s %12s %12s %12s %8s", "solver",
+                           "solved", "failed", "med.iter", "med.piv/n", "time [s]", "problems/s",
+                           "prob/cpu-s", "warm-up"));
   for (size_t s = 0; s < b.solver_names.size(); ++s)
-    PetscCall(suite::logInfo(comm, ctx.quiet(), "  %-16s %8lld %8lld %10.1f %10.2f %12.4g %12.1f %12.1f",
-                             b.solver_names[s].c_str(), b.count - (long long)S[s].failed,
-                             (long long)S[s].failed, S[s].med_it, S[s].med_pvn, S[s].tsum, S[s].rate(b.count),
-                             S[s].cpuRate(b.count)));
+    PetscCall(suite::logInfo(
+        comm, ctx.quiet(), "  %-16s %8lld %8lld %10.1f %10.2f %12.4g %12.1f %12.1f %8lld",
+        b.solver_names[s].c_str(), b.count - (long long)S[s].failed, (long long)S[s].failed, S[s].med_it,
+        S[s].med_pvn, S[s].tsum, S[s].rate(b.count), S[s].cpuRate(b.count), st.warmup_solves));
   if (b.auto_index >= 0) // rank 0's line (PetscPrintf prints rank 0's arguments)
     PetscCall(suite::logInfo(comm, ctx.quiet(), "  %s", auto_line.c_str()));
   PetscCall(suite::logInfo(comm, ctx.quiet(),
@@ -139,7 +147,7 @@ PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const B
     PetscFunctionReturn(0);
   }
   PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_WRITE, "lcpbench: writing the results failed: ", [&] {
-    completeFile(ctx, o, b, store, &S, &auto_line);
+    completeFile(ctx, o, b, st, store, &S, &auto_line);
   }));
   PetscCallMPI(
       MPI_Bcast(S.data(), static_cast<int>(S.size() * sizeof(SolverSummary)), MPI_BYTE, 0, ctx.comm()));

@@ -101,6 +101,11 @@ PetscErrorCode readRunOptions(PetscOptionItems* po, Options* o, PetscBool* stric
   PetscCall(optionsValue(po, "-time_batches",
                          "With -time_repeat: batches timed, the fastest one's time per run recorded",
                          &o->time_batches));
+  PetscCall(
+      optionsValue(po, "-warmup",
+                   "Untimed solves of the batch's first problems by every solver, on every rank, before "
+                   "timing (the same count for every solver)",
+                   &o->warmup));
   PetscCall(optionsValue(po, "-delay_per_problem", "Testing: sleep this many seconds after each problem",
                          &o->delay));
   PetscFunctionReturn(0);
@@ -132,6 +137,7 @@ PetscErrorCode finishOptions(MPI_Comm comm, PetscBool family_set, PetscBool stri
              PETSC_ERR_ARG_OUTOFRANGE, "-max_it must be >= 0, -block_size in [1, 4], -chunk >= 0");
   PetscCheck(o->flush_every >= 1 && o->flush_seconds > 0 && o->delay >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-flush_every must be >= 1, -flush_seconds > 0, -delay_per_problem >= 0");
+  PetscCheck(o->warmup >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-warmup %d: must be >= 0", (int)o->warmup);
   PetscCheck(o->time_repeat >= 0 && o->time_repeat <= 10 && o->time_batches >= 1 && o->time_batches <= 100,
              comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-time_repeat %g must be in [0, 10] s, -time_batches %d in [1, 100]", (double)o->time_repeat,
@@ -178,8 +184,8 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
   *help_only = ctx.helpRequested();
   if (*help_only) PetscFunctionReturn(0);
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-max_walltime", &o->max_walltime, nullptr));
-  for (const char* name :
-       {"-n", "-count", "-seed", "-max_it", "-block_size", "-chunk", "-flush_every", "-time_batches"})
+  for (const char* name : {"-n", "-count", "-seed", "-max_it", "-block_size", "-chunk", "-flush_every",
+                           "-time_batches", "-warmup"})
     PetscCall(suite::checkIntOptionRange(ctx.comm(), name, 0));
   PetscCall(finishOptions(ctx.comm(), family_set, strict_set, o));
   PetscCall(checkSizes(ctx.comm(), *o));

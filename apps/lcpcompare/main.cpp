@@ -72,12 +72,13 @@ struct Entry {
   std::function<Outcome(const Problem&)> run;
   std::vector<int> status = {}; // per problem, filled by runAll
   std::vector<double> cpu = {}, resid = {};
+  long long warmup_solves = 0; // untimed solves before the timed ones (runAll)
 };
 
 struct Options {
   std::string family = "random_box", output;
   std::vector<std::string> ours = {"bpp", "lemke", "keller", "pgs", "fb_newton"};
-  PetscInt n = 100, count = 200, seed = 1, max_it = 0;
+  PetscInt n = 100, count = 200, seed = 1, max_it = 0, warmup = 1;
   PetscReal cond = 1e4, qrange = 1e2, rel_tol = 1e-10;
 };
 
@@ -114,13 +115,18 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
       suite::optionsValue(po, "-max_it", "Iteration cap of the iterative solvers (0: defaults)", &o->max_it));
   PetscCall(
       suite::optionsValue(po, "-rel_tol", "Acceptance: residual <= rel_tol (1 + |q|_inf)", &o->rel_tol));
+  PetscCall(
+      suite::optionsValue(po, "-warmup",
+                          "Untimed solves of the first problems by every solver before timing (the same "
+                          "count for every solver)",
+                          &o->warmup));
   PetscCall(suite::optionsString(po, "-output", "HDF5 results file", &o->output));
   PetscOptionsEnd();
   PetscCall(ctx.checkUnusedOptions());
   *help_only = ctx.helpRequested();
   if (*help_only) PetscFunctionReturn(0);
   PetscCheck(ctx.size() == 1, comm, PETSC_ERR_ARG_WRONG, "lcpcompare times one core: run it on one rank");
-  for (const char* name : {"-n", "-count", "-seed", "-max_it"})
+  for (const char* name : {"-n", "-count", "-seed", "-max_it", "-warmup"})
     PetscCall(suite::checkIntOptionRange(comm, name, 0));
   PetscCheck(o->n >= 1 && o->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-n and -count must be >= 1");
   PetscCall(checkSizes(comm, *o));
@@ -128,6 +134,7 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, bool* help_
   PetscCheck(o->cond >= 1.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-cond %g: must be >= 1", (double)o->cond);
   PetscCheck(o->qrange >= 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-qrange %g: must be >= 0", (double)o->qrange);
   PetscCheck(o->max_it >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-max_it %d: must be >= 0", (int)o->max_it);
+  PetscCheck(o->warmup >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-warmup %d: must be >= 0", (int)o->warmup);
   PetscCheck(o->rel_tol > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-rel_tol %g: must be > 0",
              (double)o->rel_tol);
   PetscCheck(!o->output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output FILE.h5 is required");
@@ -216,13 +223,34 @@ std::vector<Entry> makeEntries(const Options& o) {
   return entries;
 }
 
-// Every problem, solved by every entry in turn.
+// The entry run j-th on problem k: the listed order rotated by k/2 (k even) or the reversed order rotated by k/2
+// (k odd). A solve is faster right after some solvers' solves than after others' (their code and data still in
+// the caches), so a fixed order would time each entry by its place in the list; this way every entry runs in
+// every place and after every other entry alike (as lcpbench, lcpbench_batch.cpp).
+size_t entryAt(size_t entries, PetscInt k, size_t j) {
+  const size_t i = (j + static_cast<size_t>((k / 2) % static_cast<PetscInt>(entries))) % entries;
+  return k % 2 == 0 ? i : entries - 1 - i;
+}
+
+// Every problem, solved by every entry, after the same untimed warm-up of every entry: the first -warmup
+// problems solved once each, results discarded (the first touch of a solver's code and memory, paid by
+// whichever solve comes first, would otherwise make the first entry look slower than when listed later).
 void runAll(const Options& o, std::vector<Entry>* entries) {
   const GeneratorParams gp{
       static_cast<int>(o.n), o.cond, o.qrange, -o.qrange, o.qrange, static_cast<std::uint64_t>(o.seed)};
+  const size_t E = entries->size();
+  for (PetscInt k = 0; k < std::min(o.warmup, o.count); ++k) {
+    const Problem p = generate(o.family, gp, static_cast<std::uint64_t>(k));
+    for (size_t j = 0; j < E; ++j) {
+      Entry& e = (*entries)[entryAt(E, k, j)];
+      e.run(p);
+      ++e.warmup_solves;
+    }
+  }
   for (PetscInt k = 0; k < o.count; ++k) {
     const Problem p = generate(o.family, gp, static_cast<std::uint64_t>(k));
-    for (Entry& e : *entries) {
+    for (size_t j = 0; j < E; ++j) {
+      Entry& e = (*entries)[entryAt(E, k, j)];
       const Outcome r = e.run(p);
       e.status.push_back(r.status);
       e.cpu.push_back(r.cpu);
@@ -241,7 +269,11 @@ PetscErrorCode writeHeader(const suite::RunContext& ctx, const Options& o, suite
   PetscCall(out->writeAttribute("/", "cond", (double)o.cond));
   PetscCall(out->writeAttribute("/", "qrange", (double)o.qrange));
   PetscCall(out->writeAttribute("/", "seed", (long long)o.seed));
-  PetscCall(out->writeAttribute("/", "timing", "CPU seconds of the calling thread around the solver call"));
+  PetscCall(
+      out->writeAttribute("/", "timing",
+                          "CPU seconds of the calling thread around the solver call, every solver after the "
+                          "same untimed warm-up (/results/<solver> attribute warmup_solves)"));
+  PetscCall(out->writeAttribute("/", "warmup", (long long)o.warmup));
   PetscFunctionReturn(0);
 }
 
@@ -271,9 +303,10 @@ PetscErrorCode writeEntry(const suite::RunContext& ctx, const Options& o, const 
   PetscCall(out->writeAttribute(g, "total_cpu_time", tot));
   PetscCall(out->writeAttribute(g, "problems_per_cpu_second", rate));
   PetscCall(out->writeAttribute(g, "cpu_time_over_bullet_dantzig", ratio));
-  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7lld %7lld %7lld %14.4g %14.1f %12.2f",
+  PetscCall(out->writeAttribute(g, "warmup_solves", e.warmup_solves));
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7lld %7lld %7lld %14.4g %14.1f %12.2f %8lld",
                            e.name.c_str(), solved, o.count - solved - unsupported, unsupported, med, rate,
-                           ratio));
+                           ratio, e.warmup_solves));
   PetscFunctionReturn(0);
 }
 
@@ -295,8 +328,9 @@ static PetscErrorCode runCompare(const suite::RunContext& ctx) {
     if (e.name == "bullet_dantzig") ref = &e;
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "lcpcompare: family %s, n = %d, %d problems, one core",
                            o.family.c_str(), (int)o.n, (int)o.count));
-  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s", "solver", "solved",
-                           "failed", "unsupp", "median cpu [s]", "prob/cpu-s", "time/bullet"));
+  PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(), "  %-18s %7s %7s %7s %14s %14s %12s %8s", "solver",
+                           "solved", "failed", "unsupp", "median cpu [s]", "prob/cpu-s", "time/bullet",
+                           "warm-up"));
   for (const Entry& e : entries) PetscCall(writeEntry(ctx, o, e, ref, &out));
   PetscCall(out.commit(&ctx));
   PetscFunctionReturn(0);
