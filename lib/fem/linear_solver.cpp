@@ -10,7 +10,8 @@ struct Entry {
 };
 const Entry kSolvers[] = {
     {"skyline", makeSkylineSolver, "envelope (skyline) Cholesky"},
-    {"banded", makeBandedSolver, "banded Cholesky (LAPACK dpbtrf)"},
+    {"banded", makeBandedSolver,
+     "banded Cholesky by blocks of 32 columns cut at the envelope (LAPACK/BLAS kernels)"},
     {"cholmod", makeCholmodSolver, "supernodal Cholesky (CHOLMOD)"},
     {"petsc", makePetscSolver, "distributed MPIAIJ matrix + KSP (-ksp_type, -pc_type)"}};
 } // namespace
