@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Hostile option values (issue #21): every option a program lists in -help, tried with nan, inf, -inf, -1, 0,
-1e308, 2^31, an empty value and a missing value (and, for file options, a binary file and a truncated HDF5 file),
-one option at a time, appended last to a small base run (PETSc takes the last occurrence).
+"""Hostile option values: every option a program lists in -help, tried with nan, inf, -inf, -1, 0, 1e308, 2^31,
+an empty value, a missing value and a 100,000-character value; list options (a choice list, a numeric array, a
+comma-separated string or file list) also with a list of 10,000 valid entries (the first entry of the default,
+else the first listed choice; a problem file for lcpbench -file); file options also with a binary file and a
+truncated HDF5 file. One option at a time, appended last to a small base run (PETSc takes the last occurrence).
 
 Usage: hostile_values.py PROGRAM NP
 
@@ -12,17 +14,23 @@ Each run must end within the per-run timeout (RUN_TIMEOUT s times $SUITE_TIMEOUT
     MPI_ABORT, no crash or sanitizer text;
 and
   - nan given to a numeric option and 2^31 given to an integer option (PetscInt is 32-bit) are refused;
+  - the 100,000-character value is never shown cut to more than 2,048 characters (a message quotes it whole,
+    abbreviated, or cut by PETSc's 2,048-character error message: an option read into a fixed buffer would be cut
+    at the buffer's size, 4,096 or more, without a word);
   - a failed run leaves the good output file of the base run (every hostile run would overwrite it) bitwise
     unchanged, unless its ERROR line names that file (the suite's documented "output up to step N in OUT") and
     the file is a valid HDF5 file; no run leaves a partial file (*.tmp, *.partial, *.probe) behind.
 The options are parsed from `PROGRAM BASE -help` up to the line "PETSc's generic options" for every base
 configuration of the program, so a new option is covered without editing this test; an option listed by several
-bases is tried with the first base that lists it.
+bases is tried with the first base that lists it. The suite prints `  -name <value>: text` (value in effect,
+lists whole; core/option_text.hpp); the kind is read off the value (true/false: flag, digits: integer, a number
+with '.', an exponent or inf: real, numbers with commas: array) and the lines below it (indented: choices);
+PETSc's own forms (`-name: <A : B>`, `<now A : formerly B>`) are still recognised.
 Cost: a run takes ~0.1 s of CPU but ~0.5 s of wall time (MPI start-up waits), so HOSTILE_JOBS (default 4) runs go
 at a time, each in its own scratch folder with its own good file. Open MPI is told to use its shared-memory
 transport (pml ob1, btl self,vader: no network probing) and to kill the other ranks of a failed job at once
 (odls_base_sigkill_timeout 0; the default 1 s wait was most of the cost of a failing run).
-Prints every failing case (command line and output tail) and a summary:
+Prints every failing case (command line, long values abbreviated, and output tail) and a summary:
   hostile PROGRAM np=N: R runs, F failures, T s (C s CPU; ...)
 """
 import hashlib
@@ -48,6 +56,18 @@ JOBS = int(os.environ.get("HOSTILE_JOBS", "4"))
 
 VALUES = ["nan", "inf", "-inf", "-1", "0", "1e308", str(2**31), ""]
 MISSING = None  # the option last on the command line, without a value
+LONG = "x" * 100000  # within Linux's 128 KiB limit on one argument
+LIST_ENTRIES = 10000
+# The long value shown cut: a run of its x's longer than 2,048 but not all of them (a value read into a fixed
+# buffer, as PETSc's PETSC_MAX_PATH_LEN of 4,096, is cut at the buffer's size; PETSc itself cuts an error message
+# at 2,048 characters, and a message may abbreviate the value).
+CUT = re.compile(r"x{2049,}")
+# A valid entry of list options whose default is empty (generic rule: the default's first entry); a file is
+# linked into each scratch folder under a short name (10,000 entries of a long path pass Linux's 128 KiB limit
+# on one argument). A list that takes @LIST is also given LIST_FILE, 10,000 lines of the entry.
+LINKS = {"p.dat": SRC / "inputs" / "lcpbench" / "lcp_4.dat"}
+LIST_ENTRY = {"-file": "p.dat"}
+LIST_FILE = "entries.txt"
 OUT = "out.h5"
 
 # Base configurations: small and fast, output OUT in the scratch folder. Several per program where -help lists
@@ -93,30 +113,63 @@ def mpi(np_, prog, args):
     return ["mpiexec", "--oversubscribe", "-n", str(np_), str(BIN / prog)] + args
 
 
+NUMBER = re.compile(r"[-+]?(\d+\.?\d*([eE][-+]?\d+)?|\.\d+([eE][-+]?\d+)?|inf)", re.I)
+
+
+def kind_of_value(value):
+    """The kind an option's value in the suite's -help line shows (bool, int, real, array or string)."""
+    if value in ("true", "false"):
+        return "bool"
+    if re.fullmatch(r"-?\d+", value):
+        return "int"
+    if NUMBER.fullmatch(value):
+        return "real"
+    entries = value.split(",")
+    if len(entries) > 1 and all(NUMBER.fullmatch(e) for e in entries):
+        return "array"
+    return "string"
+
+
 def parse_help(text):
-    """[(name, kind, help line)] of the program's own options; kind: bool, int, real, array, choice, string."""
+    """[(name, kind, help line, valid list entry or None)] of the program's own options; kind: bool, int, real,
+    array, choice, string. A list option (choice list, array, comma-separated string) has a valid entry: the first
+    of its default, else its first listed choice (LIST_ENTRY for some with an empty default)."""
     text = text.split("PETSc's generic options")[0]
     lines = text.splitlines()
     opts = []
     for i, line in enumerate(lines):
-        m = re.match(r"^  (-[A-Za-z0-9_]+)(:?) <([^>]*)>", line)
-        if not m:
-            continue
-        name, colon, dflt = m.groups()
         choice = i + 1 < len(lines) and lines[i + 1].startswith("      ")
-        now = re.match(r"now (.*) : formerly", dflt)
-        pair = re.match(r"(.*) : (.*)", dflt)
-        if colon:
-            kind = "bool"
-        elif choice:
-            kind = "choice"
-        elif now:
-            kind = "int" if re.fullmatch(r"-?\d+", now.group(1).strip()) else "string"
-        elif pair:
-            kind = "real"
-        else:
-            kind = "array"
-        opts.append((name, kind, line))
+        m = re.match(r"^  (-[A-Za-z0-9_]+) <(.*?)>: (.*)$", line)
+        if m:  # the suite's own line
+            name, value, help_text = m.groups()
+            kind = "choice" if choice else kind_of_value(value)
+        else:  # PETSc's forms
+            m = re.match(r"^  (-[A-Za-z0-9_]+)(:?) <([^>]*)>", line)
+            if not m:
+                continue
+            name, colon, value = m.groups()
+            help_text = line
+            now = re.match(r"now (.*) : formerly", value)
+            pair = re.match(r"(.*) : (.*)", value)
+            if colon:
+                kind = "bool"
+            elif choice:
+                kind = "choice"
+            elif now:
+                value = now.group(1).strip()
+                kind = "int" if re.fullmatch(r"-?\d+", value) else "string"
+            elif pair:
+                value, kind = pair.group(1).strip(), "real"
+            else:
+                kind = "array"
+        listed = kind == "array" or (kind in ("choice", "string") and re.search(r"comma", help_text, re.I))
+        entry = None
+        if listed:
+            entry = value.split(",")[0] or LIST_ENTRY.get(name)
+            first_choice = re.match(r"^      (\S+)  ", lines[i + 1]) if choice else None
+            if not entry and first_choice:
+                entry = first_choice.group(1)
+        opts.append((name, kind, line, entry))
     return opts
 
 
@@ -141,6 +194,10 @@ def judge(rc, out, name, kind, value):
     errors = [ln for ln in out.splitlines() if ln.startswith("ERROR")]
     if CRASH.search(out):
         return f"crash/abort text: {CRASH.search(out).group(0)!r}"
+    if value == LONG:
+        cut = [len(m.group(0)) for m in CUT.finditer(out) if len(m.group(0)) != len(LONG)]
+        if cut:
+            return f"the {len(LONG)}-character value shown cut to {cut[0]} characters"
     if rc == 0:
         if errors:
             return "exit 0 but an ERROR line"
@@ -160,11 +217,14 @@ def run(np_, prog, args, cwd):
     a timeout is retried once, with 3 times the limit."""
     for attempt in range(3):
         try:
+            # stdout, then stderr: merged, mpiexec's forwarding of a long line can interleave the other stream
+            # inside it (an ERROR line in the middle of a long stdout line)
             p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT * (3 if attempt else 1))
-            rc, out = p.returncode, MPIEXEC_NOTICE.sub("", p.stdout.decode(errors="replace"))
+                               stderr=subprocess.PIPE, timeout=RUN_TIMEOUT * (3 if attempt else 1))
+            text = p.stdout.decode(errors="replace") + p.stderr.decode(errors="replace")
+            rc, out = p.returncode, MPIEXEC_NOTICE.sub("", text)
         except subprocess.TimeoutExpired as e:
-            rc, out = None, (e.stdout or b"").decode(errors="replace")
+            rc, out = None, ((e.stdout or b"") + (e.stderr or b"")).decode(errors="replace")
         # A timeout is tried once more with 3 times the limit (on an overloaded machine the runs in flight stalled
         # together for over 30 s, each fine alone): a real hang hangs again.
         if not ((rc is None and attempt == 0) or (rc != 0 and MPI_START_FAILED.search(out))):
@@ -204,6 +264,8 @@ class Worker:
     def __init__(self, prog, np_, base, root, k):
         self.prog, self.np, self.base = prog, np_, base + ["-quiet"]
         self.work = Path(tempfile.mkdtemp(prefix=f"w{k}_", dir=root))
+        for name, target in LINKS.items():
+            (self.work / name).symlink_to(target)
         rc, out = run(np_, prog, self.base, self.work)
         if rc != 0:
             sys.exit(f"base run failed (exit {rc}): {prog} {' '.join(self.base)}\n{out}")
@@ -214,10 +276,13 @@ class Worker:
         """(command line, None or why the run is not acceptable, output)"""
         if digest(self.work / OUT) != self.pristine:
             (self.work / OUT).write_bytes(self.pristine_bytes)
+        if value == "@" + LIST_FILE:
+            (self.work / LIST_FILE).write_text("# hostile list\n" + f"{LIST_ENTRY.get(name, 'x')}\n" * LIST_ENTRIES)
         args = self.base + list(mode) + [name] + ([] if value is MISSING else [value])
         rc, out = run(self.np, self.prog, args, self.work)
         why = judge(rc, out, name, kind, value) or check_output(self.work, rc, out, self.pristine)
-        shown = " ".join(repr(a) if a == "" or " " in a else a for a in mpi(self.np, self.prog, args))
+        shown = " ".join(f"<{len(a)} characters: {a[:40]}...>" if len(a) > 200 else repr(a) if a == "" or " " in a
+                         else a for a in mpi(self.np, self.prog, args))
         return shown, why, out
 
 
@@ -238,12 +303,16 @@ def options_of(np_, prog, base, cwd):
 
 
 def cases_of(opts, seen, files):
-    for name, kind, line in opts:
+    for name, kind, line, entry in opts:
         if name in seen:
             continue
         seen.add(name)
-        for value in VALUES + [MISSING]:
+        for value in VALUES + [MISSING, LONG]:
             yield name, kind, value, ()
+        if entry:
+            yield name, kind, ",".join([entry] * LIST_ENTRIES), FILE_MODES.get(name, ())
+            if "@LIST" in line:
+                yield name, kind, "@" + LIST_FILE, FILE_MODES.get(name, ())
         if is_file_option(kind, line):
             for f in files:
                 yield name, kind, f, FILE_MODES.get(name, ())
@@ -280,7 +349,8 @@ def main(prog, np_):
         sys.exit(f"no options parsed from {prog} -help")
     failures = [(shown, why, out) for shown, why, out in results if why]
     for shown, why, out in failures:
-        print(f"FAIL [{why}] {shown}\n    " + "\n    ".join(out.strip().splitlines()[-8:]))
+        tail = [ln if len(ln) <= 300 else f"{ln[:200]}... ({len(ln)} characters)" for ln in out.strip().splitlines()[-8:]]
+        print(f"FAIL [{why}] {shown}\n    " + "\n    ".join(tail))
     cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = cpu1.ru_utime + cpu1.ru_stime - cpu0.ru_utime - cpu0.ru_stime
     print(f"hostile {prog} np={np_}: {len(results)} runs, {len(failures)} failures, {time.time() - t0:.0f} s "
