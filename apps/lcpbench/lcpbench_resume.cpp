@@ -28,7 +28,7 @@ void checkResumable(suite::H5AppendFile& f, const std::string& partial, const Ba
                                " (not an lcpbench batch?)" + kHint);
     if (have != kv.second)
       throw std::runtime_error(partial + " holds an interrupted batch with other parameters (" + kv.first +
-                               ": '" + have + "' there, '" + kv.second + "' now)" + kHint);
+                               ": '" + have + "' in the file, '" + kv.second + "' given)" + kHint);
   }
   if (f.size("/batch/done") != count)
     throw std::runtime_error(partial + ": /batch/done has the wrong size" + kHint);

@@ -2,7 +2,7 @@
 // dealt to ranks by dynamic load balancing, results (status, iterations, pivots, time, residual per solver
 // and problem, plus histograms) in one HDF5 file (Lacoursiere 2003, SIGRAD: iteration-count histograms).
 //
-// Streaming and resume (issue #8). Rank 0 owns the results file and never holds the whole table:
+// Streaming and resume. Rank 0 owns the results file and never holds the whole table:
 //   - OUT.partial (single-process HDF5, lib/io/h5_append.hpp) is created with every per-problem dataset
 //     preallocated at its final size and the batch header (/batch attributes: the options that fix results).
 //   - Every -flush_every records (or -flush_seconds) the buffered results are written in place and flushed,

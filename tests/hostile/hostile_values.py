@@ -25,11 +25,11 @@ configuration of the program, so a new option is covered without editing this te
 bases is tried with the first base that lists it. The suite prints `  -name <value>: text` (value in effect,
 lists whole; core/option_text.hpp); the kind is read off the value (true/false: flag, digits: integer, a number
 with '.', an exponent or inf: real, numbers with commas: array) and the lines below it (indented: choices);
-PETSc's own forms (`-name: <A : B>`, `<now A : formerly B>`) are still recognised.
+Lines in PETSc's own forms (`-name: <A : B>` and `<now A : formerly B>`, its wording) are read too.
 Cost: a run takes ~0.1 s of CPU but ~0.5 s of wall time (MPI start-up waits), so HOSTILE_JOBS (default 4) runs go
 at a time, each in its own scratch folder with its own good file. Open MPI is told to use its shared-memory
 transport (pml ob1, btl self,vader: no network probing) and to kill the other ranks of a failed job at once
-(odls_base_sigkill_timeout 0; the default 1 s wait was most of the cost of a failing run).
+(odls_base_sigkill_timeout 0; the default 1 s wait would be most of the cost of a failing run).
 Prints every failing case (command line, long values abbreviated, and output tail) and a summary:
   hostile PROGRAM np=N: R runs, F failures, T s (C s CPU; ...)
 """

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""lcpbench extreme inputs (issue #8), one case per ctest. Every case states its outcome:
+"""lcpbench extreme inputs, one case per ctest. Every case states its outcome:
   cond1e12        random box LCPs with cond(M) = 1e12: solved by every solver listed, residual verified
   zero_matrix     M = 0, q >= 0: solved (z = 0 family), residual verified; PGS reports 'unsupported' (M_ii = 0)
   zero_infeasible M = 0 with q_2 < 0 (no solution): every solver reports a failure status, the CLI exits

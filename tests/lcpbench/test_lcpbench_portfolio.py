@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""lcpbench -solvers auto (the solver portfolio, issue #20) against its per-solver results from the same run.
+"""lcpbench -solvers auto (the solver portfolio) against its per-solver results from the same run.
 
 - Siconos files (../shared/data/lcp): auto solves every problem that some single solver solves; per problem the
   succeeding solver is the last one tried, the class index names a known class, at most 4 solvers tried.

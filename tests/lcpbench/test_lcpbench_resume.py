@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""lcpbench batch resilience (issue #8): a killed batch resumes from its last flushed results and never
+"""lcpbench batch resilience: a killed batch resumes from its last flushed results and never
 recomputes or loses finished problems.
 
 - Reference: an uninterrupted 2-rank batch.
