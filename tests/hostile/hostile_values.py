@@ -349,7 +349,8 @@ def main(prog, np_):
         sys.exit(f"no options parsed from {prog} -help")
     failures = [(shown, why, out) for shown, why, out in results if why]
     for shown, why, out in failures:
-        tail = [ln if len(ln) <= 300 else f"{ln[:200]}... ({len(ln)} characters)" for ln in out.strip().splitlines()[-8:]]
+        tail = [ln if len(ln) <= 300 else f"{ln[:200]}... ({len(ln)} characters)"
+                for ln in out.strip().splitlines()[-8:]]
         print(f"FAIL [{why}] {shown}\n    " + "\n    ".join(tail))
     cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = cpu1.ru_utime + cpu1.ru_stime - cpu0.ru_utime - cpu0.ru_stime
