@@ -4,7 +4,9 @@
 // The usual remedy of micro-benchmark harnesses (e.g. Google Benchmark, Python's timeit): repeat the same
 // call in batches of R runs, R grown until one batch takes >= T CPU seconds, then time B batches of R runs
 // and keep the fastest batch's time per run. Every solver and auto are timed by the same rule; the record's
-// status, counts and residual come from a first, separately timed run (the solvers are deterministic).
+// status, counts and residual come from a first, separately timed run (the solvers are deterministic). With or
+// without repetition, every solver is timed after the same untimed warm-up (-warmup) and in an order per
+// problem that does not favour any place in -solvers (warmUp and solverAt, lcpbench_batch.cpp).
 #include "lcpbench.hpp"
 
 #include <algorithm>
