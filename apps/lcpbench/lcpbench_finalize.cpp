@@ -5,6 +5,7 @@
 #include "core/comma_list.hpp"
 #include "core/log.hpp"
 #include "core/rank0_work.hpp"
+#include "core/run_summary.hpp"
 #include "core/version.hpp"
 
 #include <algorithm>
@@ -70,6 +71,7 @@ void completeFile(const suite::RunContext& ctx, const Options& o, const Batch& b
   writeRunAttributes(f, ctx, o, b, store);
   f.setAttribute("/", "wall_seconds", ctx.wallSeconds());
   f.setAttribute("/batch", "complete", 1LL);
+  f.setAttribute("/", "status", "completed"); // the status every output file carries (core/run_summary.hpp)
   f.close();
   if (std::rename(tmp.c_str(), o.output.c_str()) != 0)
     throw std::runtime_error("cannot rename " + tmp + " to " + o.output);
@@ -92,11 +94,11 @@ PetscErrorCode printSummary(const suite::RunContext& ctx, const Options& o, cons
         S[s].med_pvn, S[s].tsum, S[s].rate(b.count), S[s].cpuRate(b.count), st.warmup_solves));
   if (b.auto_index >= 0) // rank 0's line (PetscPrintf prints rank 0's arguments)
     PetscCall(suite::logInfo(comm, ctx.quiet(), "  %s", auto_line.c_str()));
-  PetscCall(suite::logInfo(comm, ctx.quiet(),
-                           "lcpbench: %lld problems (%lld in this run) in %.3f s wall (%.1f problems/s), "
-                           "results in %s",
-                           b.count, solved_now, st.wall, solved_now / std::max(st.wall, 1e-12),
-                           o.output.c_str()));
+  char what[192];
+  PetscCall(PetscSNPrintf(what, sizeof what,
+                          "%lld problems (%lld in this run) in %.3f s wall (%.1f problems/s)", b.count,
+                          solved_now, st.wall, solved_now / std::max(st.wall, 1e-12)));
+  PetscCall(suite::logRunSummary(ctx, "completed", what, {o.output}));
   PetscFunctionReturn(0);
 }
 
@@ -135,8 +137,12 @@ PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const B
   std::string auto_line;                               // rank 0's
   PetscFunctionBeginUser;
   if (st.stopped != 0 || st.ndone < b.count) { // interrupted: OUT.partial stays
+    const char* status = st.stopped == 2 ? "stopped by walltime" : "stopped by signal";
     if (ctx.rank() == 0) {
-      const std::string err = suite::messageOf([&] { store->file.close(); });
+      const std::string err = suite::messageOf([&] {
+        store->file.setAttribute("/", "status", status);
+        store->file.close();
+      });
       PetscCheck(err.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "lcpbench: %s", err.c_str());
     }
     PetscCall(suite::logInfo(ctx.comm(), false,
@@ -144,6 +150,10 @@ PetscErrorCode finishRun(const suite::RunContext& ctx, const Options& o, const B
                              "%.3f s), flushed to %s; run the same command again to resume",
                              st.stopped == 2 ? "max_walltime" : "signal", st.ndone, b.count,
                              st.ndone - st.ndone0, st.wall, (o.output + ".partial").c_str()));
+    char what[160];
+    PetscCall(PetscSNPrintf(what, sizeof what, "%lld of %lld problems done (%lld in this run, %.3f s)",
+                            st.ndone, b.count, st.ndone - st.ndone0, st.wall));
+    PetscCall(suite::logRunSummary(ctx, status, what, {o.output + ".partial"}));
     PetscFunctionReturn(0);
   }
   PetscCall(suite::onRank0(ctx.comm(), PETSC_ERR_FILE_WRITE, "lcpbench: writing the results failed: ", [&] {

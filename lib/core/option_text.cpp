@@ -190,6 +190,9 @@ PetscErrorCode optionsFileList(PetscOptionItems* po, const char* name, const cha
   PetscCall(printOptionHelp(po, name, found ? value : s, text));
   if (set) *set = found ? PETSC_TRUE : PETSC_FALSE;
   if (!found) PetscFunctionReturn(0);
+  if (value.find_first_not_of(", \t") ==
+      std::string::npos) // "-file" followed by another option, or "-file ''"
+    PetscCall(failInOptionsBlock(po, PETSC_ERR_ARG_WRONG, std::string(name) + " is given without a file"));
   std::vector<std::string> expanded;
   PetscCall(expandOnRankZero(po->comm, name, value, &expanded, &why));
   if (!why.empty()) PetscCall(failInOptionsBlock(po, PETSC_ERR_FILE_OPEN, why));

@@ -188,6 +188,9 @@ PetscErrorCode optionsString(PetscOptionItems* po, const char* name, const char*
   bool found = false;
   PetscFunctionBeginUser;
   PetscCall(findOptionText(po, name, &given, &found));
+  // "-output" followed by another option (or -output ""): a forgotten value, never a silent default
+  if (found && given.empty())
+    PetscCall(failInOptionsBlock(po, PETSC_ERR_ARG_WRONG, std::string(name) + " is given without a value"));
   if (found) *value = given;
   if (set) *set = found ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(printOptionHelp(po, name, *value, text));
