@@ -3,7 +3,7 @@
 #       runs `mpiexec -n p --oversubscribe exe args...` (run-as-root variables set).
 #   suite_add_failure_test(NAME n NP p EXPECT "regex" COMMAND exe args... [LABELS l...])
 #       passes when the command exits non-zero AND the regex matches exactly one line of its output
-#       (one clear message, not one per rank) AND it finishes before the timeout (no hang).
+#       (one clear message, not one per rank) AND it finishes before the timeout (no hang). Label bad_input.
 #   suite_add_python_test(NAME n SCRIPT file.py [ARGS ...] [LABELS ...])
 find_program(MPIEXEC_EXECUTABLE NAMES mpiexec mpirun REQUIRED)
 set(SUITE_MPIEXEC ${MPIEXEC_EXECUTABLE} --oversubscribe)
@@ -32,8 +32,10 @@ function(suite_add_failure_test)
            COMMAND ${SUITE_PYTHON} ${CMAKE_SOURCE_DIR}/tests/expect_failure.py --expect "${T_EXPECT}"
                    --timeout ${T_TIMEOUT} -- ${SUITE_MPIEXEC} -n ${T_NP} ${T_COMMAND}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  # Label bad_input: scripts/test-asan runs a bad-input check that exists at 1 and 2 ranks (..._np1 beside
+  # ..._np2) at 2 ranks only, where the same checking code runs on each rank.
   set_tests_properties(${T_NAME} PROPERTIES ENVIRONMENT "${SUITE_TEST_ENV}" TIMEOUT ${T_TIMEOUT}
-                       LABELS "${T_LABELS}" PROCESSORS ${T_NP})
+                       LABELS "${T_LABELS};bad_input" PROCESSORS ${T_NP})
 endfunction()
 
 function(suite_add_python_test)
