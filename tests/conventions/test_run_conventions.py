@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""The conventions every program shares (docs/architecture.md, "Conventions every program shares"), checked on
+each program's own output at 1 and 2 ranks:
+  - the last line is `<program>: <status>: ...; wrote FILE[, FILE.xmf]`, or `...; no output file (...)` without
+    -output, in which case no file is written;
+  - the XDMF sidecar of out.h5 is out.xmf beside it (never out.h5.xmf);
+  - the root attribute `status` is `completed`, `stopped by walltime` (-max_walltime) or `stopped by signal`
+    (SIGTERM, at 1 rank), the same word as the summary line;
+  - a restart from a checkpoint at the end says that no step was left (no rate of zero steps in zero seconds);
+  - contact writes the scene's body names as /bodies/name.
+
+Usage: test_run_conventions.py NRANKS
+"""
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+import h5py
+
+BIN = os.environ.get("SUITE_BIN", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
+NP = int(sys.argv[1]) if len(sys.argv) > 1 else 1
+failures = 0
+
+
+def check(ok, what):
+    global failures
+    print(("ok   " if ok else "FAIL ") + what)
+    failures += not ok
+
+
+def mpi(prog, *args):
+    return ["mpiexec", "--oversubscribe", "-n", str(NP), os.path.join(BIN, prog)] + [str(a) for a in args]
+
+
+def run(prog, *args):
+    p = subprocess.run(mpi(prog, *args), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
+    lines = [ln for ln in p.stdout.splitlines() if ln.strip()]
+    check(p.returncode == 0, f"{prog} {' '.join(map(str, args))}: exit 0")
+    if p.returncode != 0:
+        print(p.stdout[-2000:])
+    return lines[-1] if lines else ""
+
+
+def status_of(path):
+    with h5py.File(path, "r") as f:
+        v = f.attrs["status"]
+        return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def wrote(prog, last, status, files):
+    pattern = rf"^{prog}: {status}: .*; wrote {re.escape(', '.join(files))}$"
+    check(re.match(pattern, last) is not None,
+          f"{prog}: last line says '{status}' and 'wrote {', '.join(files)}': {last!r}")
+
+
+def with_output(prog, args, sidecar=True):
+    wrote(prog, run(prog, *args, "-output", "o.h5"), "completed", ["o.h5", "o.xmf"] if sidecar else ["o.h5"])
+    check(status_of("o.h5") == "completed", f"{prog}: status attribute 'completed'")
+    if sidecar:
+        check(os.path.exists("o.xmf") and not os.path.exists("o.h5.xmf"), f"{prog}: sidecar o.xmf beside o.h5")
+        check("o.h5:" in open("o.xmf").read(), f"{prog}: o.xmf refers to o.h5 by its name")
+    for f in ("o.h5", "o.xmf"):
+        if os.path.exists(f):
+            os.remove(f)
+
+
+def without_output(prog, args):
+    before = set(os.listdir("."))
+    last = run(prog, *args)
+    check(re.match(rf"^{prog}: completed: .*; no output file \(-output FILE writes one\)$", last) is not None,
+          f"{prog} without -output: last line says no output file: {last!r}")
+    check(set(os.listdir(".")) == before, f"{prog} without -output: no file written")
+
+
+def euler_stops():
+    last = run("euler", "-problem", "sod", "-nx", 2000, "-max_walltime", 1e-6, "-output", "w.h5")
+    check(last.startswith("euler: stopped by walltime: ") and status_of("w.h5") == "stopped by walltime",
+          f"-max_walltime: 'stopped by walltime' on the last line and in the file: {last!r}")
+    if NP != 1:  # the signal goes to a singleton run (mpiexec itself exits non-zero when it is signalled)
+        return
+    cmd = [os.path.join(BIN, "euler"), "-problem", "sod", "-nx", "40000", "-progress_interval", "0.05",
+           "-output", "s.h5"]
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    head = ""  # signal once the run is stepping (the handlers are installed), not after a fixed sleep
+    while " step " not in head:
+        line = p.stdout.readline()
+        head += line
+        if not line:
+            break
+    time.sleep(0.2)
+    p.send_signal(signal.SIGTERM)
+    out, _ = p.communicate(timeout=120)
+    last = [ln for ln in (head + out).splitlines() if ln.strip()][-1]
+    check(p.returncode == 0 and last.startswith("euler: stopped by signal: ") and status_of("s.h5") ==
+          "stopped by signal", f"SIGTERM: exit {p.returncode}, 'stopped by signal' on the last line and in the file")
+
+
+def euler_restart_at_end():
+    base = ["-problem", "sod", "-nx", 100, "-checkpoint_dir", "ck"]
+    run("euler", *base)
+    last = run("euler", *base, "-restart", "latest")
+    check("no step left after the restart at step" in last and "cell-steps/s" not in last,
+          f"restart from the final checkpoint: no step left, no rate: {last!r}")
+
+
+def reorder_matrix():
+    with open("tri.mtx", "w") as f:  # 6 x 6 tridiagonal (lower triangle, symmetric)
+        f.write("%%MatrixMarket matrix coordinate real symmetric\n6 6 11\n")
+        for i in range(1, 7):
+            f.write(f"{i} {i} 2\n")
+        for i in range(1, 6):
+            f.write(f"{i + 1} {i} -1\n")
+    return "tri.mtx"
+
+
+def main():
+    with tempfile.TemporaryDirectory() as d:
+        os.chdir(d)
+        euler = ["-problem", "sod", "-nx", 100]
+        with_output("euler", euler)
+        without_output("euler", euler)
+        euler_stops()
+        euler_restart_at_end()
+        femdyn = ["-beam_cells", "4,1,1", "-steps", 3]
+        with_output("femdyn", femdyn)
+        without_output("femdyn", femdyn)
+        contact = ["-scene", "incline", "-steps", 5]
+        with_output("contact", contact)
+        without_output("contact", contact)
+        run("contact", *contact, "-output", "c.h5")
+        with h5py.File("c.h5", "r") as f:
+            names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["/bodies/name"][...]]
+            joined = f["/bodies"].attrs["names"]
+            joined = joined.decode() if isinstance(joined, bytes) else str(joined)
+        check(len(names) == 2 and names == joined.split(","), f"contact: /bodies/name {names} are the scene's bodies")
+        lcp = ["-family", "random_box", "-n", 10, "-count", 20, "-solvers", "bpp,lemke"]
+        with_output("lcpbench", lcp, sidecar=False)
+        mtx = reorder_matrix()
+        with_output("reorder", ["-matrix", mtx], sidecar=False)
+        without_output("reorder", ["-matrix", mtx])
+        if NP == 1 and os.path.exists(os.path.join(BIN, "lcpcompare")):  # lcpcompare times one core
+            without_output("lcpcompare", ["-family", "random_box", "-n", 10, "-count", 10])
+        os.chdir("/")
+    print(f"{'FAILED' if failures else 'passed'}: {failures} failure(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
