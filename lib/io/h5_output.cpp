@@ -89,6 +89,35 @@ PetscErrorCode putAttribute(MPI_Comm comm, hid_t file, const std::string& object
              object.c_str());
   PetscFunctionReturn(0);
 }
+
+// A dataset created with its intermediate groups, replacing one of the same name.
+hid_t createDataset(hid_t file, const std::string& dataset, hid_t type, hid_t fspace) {
+  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  if (h5::exists(file, dataset)) H5Ldelete(file, dataset.c_str(), H5P_DEFAULT);
+  hid_t dset = H5Dcreate2(file, dataset.c_str(), type, fspace, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(lcpl);
+  return dset;
+}
+
+// The collective write of a created dataset (dset < 0: its creation failed), its handles closed, and one
+// error for the whole job when any rank failed.
+PetscErrorCode writeCollectively(MPI_Comm comm, hid_t dset, hid_t type, hid_t mspace, hid_t fspace,
+                                 const void* data, const std::string& dataset, const std::string& file) {
+  PetscFunctionBeginUser;
+  hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  herr_t st = dset >= 0 ? H5Dwrite(dset, type, mspace, fspace, dxpl, data) : -1;
+  H5Pclose(dxpl);
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  if (dset >= 0) H5Dclose(dset);
+  int ok = st >= 0, all_ok = 0;
+  PetscCallMPI(MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_LAND, comm));
+  PetscCheck(all_ok, comm, PETSC_ERR_FILE_WRITE, "writing dataset %s to %s failed (disk full?)",
+             dataset.c_str(), file.c_str());
+  PetscFunctionReturn(0);
+}
 } // namespace
 
 PetscErrorCode H5Output::writeAttribute(const std::string& object, const std::string& name,
@@ -157,12 +186,7 @@ PetscErrorCode H5Output::writeArray(const std::string& dataset, const T* local, 
   for (hsize_t ci : c) empty = empty || ci == 0;
 
   hid_t fspace = H5Screate_simple(rank, d.data(), nullptr);
-  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
-  H5Pset_create_intermediate_group(lcpl, 1);
-  if (h5::exists((hid_t)file_, dataset)) H5Ldelete((hid_t)file_, dataset.c_str(), H5P_DEFAULT);
-  hid_t dset =
-      H5Dcreate2((hid_t)file_, dataset.c_str(), h5::nativeType<T>(), fspace, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  H5Pclose(lcpl);
+  hid_t dset = createDataset((hid_t)file_, dataset, h5::nativeType<T>(), fspace);
   hid_t mspace;
   if (empty) {
     hsize_t one = 1;
@@ -173,17 +197,7 @@ PetscErrorCode H5Output::writeArray(const std::string& dataset, const T* local, 
     mspace = H5Screate_simple(rank, c.data(), nullptr);
     H5Sselect_hyperslab(fspace, H5S_SELECT_SET, s.data(), nullptr, c.data(), nullptr);
   }
-  hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  herr_t st = dset >= 0 ? H5Dwrite(dset, h5::nativeType<T>(), mspace, fspace, dxpl, local) : -1;
-  H5Pclose(dxpl);
-  H5Sclose(mspace);
-  H5Sclose(fspace);
-  if (dset >= 0) H5Dclose(dset);
-  int ok = st >= 0, all_ok = 0;
-  PetscCallMPI(MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_LAND, comm_));
-  PetscCheck(all_ok, comm_, PETSC_ERR_FILE_WRITE, "writing dataset %s to %s failed (disk full?)",
-             dataset.c_str(), tmp_path_.c_str());
+  PetscCall(writeCollectively(comm_, dset, h5::nativeType<T>(), mspace, fspace, local, dataset, tmp_path_));
   PetscCall(writeAttribute(dataset, "units", units ? units : ""));
   PetscFunctionReturn(0);
 }
@@ -226,29 +240,17 @@ PetscErrorCode H5Output::writeReplicatedStrings(const std::string& dataset,
   H5Tset_size(type, width);
   H5Tset_strpad(type, H5T_STR_NULLTERM);
   hid_t fspace = H5Screate_simple(1, &n, nullptr);
-  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
-  H5Pset_create_intermediate_group(lcpl, 1);
-  if (h5::exists((hid_t)file_, dataset)) H5Ldelete((hid_t)file_, dataset.c_str(), H5P_DEFAULT);
-  hid_t dset = H5Dcreate2((hid_t)file_, dataset.c_str(), type, fspace, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  H5Pclose(lcpl);
+  hid_t dset = createDataset((hid_t)file_, dataset, type, fspace);
   hsize_t one = 1;
   hid_t mspace = rank_ == 0 && n > 0 ? H5Screate_simple(1, &n, nullptr) : H5Screate_simple(1, &one, nullptr);
   if (rank_ != 0 || n == 0) {
     H5Sselect_none(mspace);
     H5Sselect_none(fspace);
   }
-  hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  herr_t st = dset >= 0 ? H5Dwrite(dset, type, mspace, fspace, dxpl, buf.data()) : -1;
-  H5Pclose(dxpl);
-  H5Sclose(mspace);
-  H5Sclose(fspace);
+  const PetscErrorCode ierr =
+      writeCollectively(comm_, dset, type, mspace, fspace, buf.data(), dataset, tmp_path_);
   H5Tclose(type);
-  if (dset >= 0) H5Dclose(dset);
-  int ok = st >= 0, all_ok = 0;
-  PetscCallMPI(MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_LAND, comm_));
-  PetscCheck(all_ok, comm_, PETSC_ERR_FILE_WRITE, "writing dataset %s to %s failed (disk full?)",
-             dataset.c_str(), tmp_path_.c_str());
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
