@@ -93,7 +93,7 @@ PetscErrorCode validateOptions(const suite::RunContext& ctx, const Options& o, c
   MPI_Comm comm = ctx.comm();
   PetscFunctionBeginUser;
   PetscCall(suite::checkIntOptionRange(comm, "-spacetime_every", 0));
-  if (!o.output.empty()) PetscCall(suite::checkOutputWritable(comm, o.output, "-output"));
+  if (!o.output.empty()) PetscCall(suite::checkOutputWritable(comm, o.output, "output"));
   PetscCall(o.dim == 1 ? checkLine(ctx, o, line) : checkGrid(ctx, o, pr));
   PetscCheck(o.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", o.cfl);
   // The positivity limiter's bound (lib/euler/direction_sweep.hpp): a CFL number above it is refused, not reduced.

@@ -1,6 +1,7 @@
 // HDF5 output of one run: temporary name + rename, provenance, attributes, parallel datasets.
 #include "io/h5_output.hpp"
 
+#include "core/option_text.hpp"
 #include "core/run_context.hpp"
 #include "core/version.hpp"
 #include "io/h5_util.hpp"
@@ -296,21 +297,23 @@ PetscErrorCode checkOutputWritable(MPI_Comm comm, const std::string& path, const
     struct stat st {};
     struct statvfs vfs {};
     const std::string probe = path + ".tmp.probe";
+    // a path in a message: whole up to 160 characters, else abbreviated saying so (core/option_text.hpp), so
+    // that the message fits its buffer and is never cut without a word
+    const std::string p = shownValue(path), d = shownValue(dir);
     if (path.empty() || path.back() == '/')
-      std::snprintf(msg, sizeof msg, "-%s '%s': not a file name", option, path.c_str());
+      std::snprintf(msg, sizeof msg, "-%s '%s': not a file name", option, p.c_str());
     else if (stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-      std::snprintf(msg, sizeof msg, "-%s %s: directory '%s' does not exist", option, path.c_str(),
-                    dir.c_str());
+      std::snprintf(msg, sizeof msg, "-%s %s: directory '%s' does not exist", option, p.c_str(), d.c_str());
     else if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-      std::snprintf(msg, sizeof msg, "-%s %s: is a directory", option, path.c_str());
+      std::snprintf(msg, sizeof msg, "-%s %s: is a directory", option, p.c_str());
     else if (statvfs(dir.c_str(), &vfs) == 0 && (double)vfs.f_bavail * vfs.f_frsize < 1 << 20)
-      std::snprintf(msg, sizeof msg, "-%s %s: less than 1 MiB free in '%s' (disk full?)", option,
-                    path.c_str(), dir.c_str());
+      std::snprintf(msg, sizeof msg, "-%s %s: less than 1 MiB free in '%s' (disk full?)", option, p.c_str(),
+                    d.c_str());
     else {
       FILE* f = std::fopen(probe.c_str(), "w");
       if (!f)
-        std::snprintf(msg, sizeof msg, "-%s %s: cannot create files in '%s': %s", option, path.c_str(),
-                      dir.c_str(), std::strerror(errno));
+        std::snprintf(msg, sizeof msg, "-%s %s: cannot create files in '%s': %s", option, p.c_str(),
+                      d.c_str(), std::strerror(errno));
       else {
         std::fclose(f);
         std::remove(probe.c_str());
