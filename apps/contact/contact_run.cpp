@@ -157,7 +157,7 @@ PetscErrorCode ContactStepping::writeFinal(const suite::LoopSummary& sum) {
     PetscCall(
         writeContactOutput(ctx_, o_.output, o_.scene, o_.step, bodies_, rec_,
                            {status, sum.failed ? failure_ : "", (long long)o_.steps, (long long)sum.steps}));
-    written = {o_.output, suite::xdmfPathFor(o_.output)};
+    written = suite::outputWithSidecar(o_.output);
   }
   PetscCall(PetscLogStagePop());
   PetscCall(suite::logRunSummary(

@@ -100,8 +100,7 @@ PetscErrorCode EulerRun::writeFinal(const suite::LoopSummary& sum) {
   if (opt_.error) PetscCall(computeErrors());
   status_ = suite::runStatus(sum);
   PetscCall(writeOutput());
-  std::vector<std::string> written;
-  if (!opt_.output.empty()) written = {opt_.output, suite::xdmfPathFor(opt_.output)};
+  const std::vector<std::string> written = suite::outputWithSidecar(opt_.output);
   std::string what = suite::stepsText(sum);
   if (sum.stepsTaken() > 0 && sum.wall > 0) {
     char rate[64];

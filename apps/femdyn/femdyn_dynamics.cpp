@@ -4,6 +4,7 @@
 
 #include "core/log.hpp"
 #include "core/run_summary.hpp"
+#include "io/xdmf.hpp"
 #include "core/clocks.hpp"
 
 #include <algorithm>
@@ -169,8 +170,8 @@ PetscErrorCode FemdynDynamics::writeFinal(const suite::LoopSummary& summary) {
     PetscCall(logTimeAdapt());
   }
   PetscCall(run_.writeOutput());
-  PetscCall(
-      suite::logRunSummary(run_.ctx_, run_.res_.status, suite::stepsText(summary), run_.writtenFiles()));
+  PetscCall(suite::logRunSummary(run_.ctx_, run_.res_.status, suite::stepsText(summary),
+                                 suite::outputWithSidecar(run_.opt_.output)));
   PetscFunctionReturn(0);
 }
 

@@ -167,9 +167,7 @@ PetscErrorCode PlexRun::solve() {
   PetscCall(PetscSNPrintf(what, sizeof what, "%s in %.3f s (distributed, %d ranks)",
                           o_.is_static ? "static solve" : (std::to_string(steps_.size()) + " steps").c_str(),
                           solve_s_, ctx_.size()));
-  std::vector<std::string> written;
-  if (!o_.output.empty()) written = {o_.output, suite::xdmfPathFor(o_.output)};
-  PetscCall(suite::logRunSummary(ctx_, status_, what, written));
+  PetscCall(suite::logRunSummary(ctx_, status_, what, suite::outputWithSidecar(o_.output)));
   PetscFunctionReturn(0);
 }
 

@@ -52,11 +52,6 @@ PetscErrorCode FemdynRun::solveDynamic() {
   PetscFunctionReturn(0);
 }
 
-std::vector<std::string> FemdynRun::writtenFiles() const {
-  if (opt_.output.empty()) return {};
-  return {opt_.output, suite::xdmfPathFor(opt_.output)};
-}
-
 PetscErrorCode FemdynRun::solve() {
   char what[160];
   PetscFunctionBeginUser;
@@ -74,7 +69,7 @@ PetscErrorCode FemdynRun::solve() {
                             res_.tip_deflection, res_.loop_time));
   else
     PetscCall(PetscSNPrintf(what, sizeof what, "setup and ordering only (-steps 0)"));
-  PetscCall(suite::logRunSummary(ctx_, res_.status, what, writtenFiles()));
+  PetscCall(suite::logRunSummary(ctx_, res_.status, what, suite::outputWithSidecar(opt_.output)));
   PetscFunctionReturn(0);
 }
 

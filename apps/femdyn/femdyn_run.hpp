@@ -135,7 +135,6 @@ private:
   PetscErrorCode solveDynamic();
   // Output (femdyn_output.cpp), in the output log stage.
   PetscErrorCode writeOutput() const;
-  std::vector<std::string> writtenFiles() const; // the output and its sidecar (none without -output)
   PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
   PetscErrorCode writeOrdering(suite::H5Output& out) const;
   PetscErrorCode writeMesh(suite::H5Output& out) const;

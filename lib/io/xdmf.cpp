@@ -14,6 +14,11 @@ std::string xdmfPathFor(const std::string& h5_path) {
   return xmf + ".xmf";
 }
 
+std::vector<std::string> outputWithSidecar(const std::string& h5_path) {
+  if (h5_path.empty()) return {};
+  return {h5_path, xdmfPathFor(h5_path)};
+}
+
 std::string fileNameOf(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);

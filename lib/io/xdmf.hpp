@@ -12,6 +12,8 @@ namespace suite {
 // The sidecar of an output file, the one naming rule of every program: out.h5 -> out.xmf beside it (a name
 // without the .h5 extension gets .xmf appended: out -> out.xmf).
 std::string xdmfPathFor(const std::string& h5_path);
+// What a run with output file h5_path writes: the file and its sidecar ({} without an output file).
+std::vector<std::string> outputWithSidecar(const std::string& h5_path);
 // The file name of a path (what a sidecar refers to: the .h5 beside it, relative).
 std::string fileNameOf(const std::string& path);
 

@@ -21,6 +21,9 @@ import time
 
 import h5py
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from process_wait import read_until_stepping  # noqa: E402 (tests/process_wait.py)
+
 BIN = os.environ.get("SUITE_BIN", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
 NP = int(sys.argv[1]) if len(sys.argv) > 1 else 1
 failures = 0
@@ -85,12 +88,7 @@ def euler_stops():
     cmd = [os.path.join(BIN, "euler"), "-problem", "sod", "-nx", "40000", "-progress_interval", "0.05",
            "-output", "s.h5"]
     p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    head = ""  # signal once the run is stepping (the handlers are installed), not after a fixed sleep
-    while " step " not in head:
-        line = p.stdout.readline()
-        head += line
-        if not line:
-            break
+    head = read_until_stepping(p)  # signal once the run is stepping, not after a fixed sleep
     time.sleep(0.2)
     p.send_signal(signal.SIGTERM)
     out, _ = p.communicate(timeout=120)

@@ -12,6 +12,9 @@ import tempfile
 
 from euler_harness import BIN, MPIEXEC, check, error, run
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from process_wait import read_until_stepping  # noqa: E402 (tests/process_wait.py)
+
 
 
 def density_wave_order():
@@ -152,12 +155,7 @@ def restart():
         cmd = [os.path.join(BIN, "euler")] + [str(a) for a in big + ["-checkpoint_dir", ck2]]  # singleton MPI
         p = subprocess.Popen(cmd + ["-progress_interval", "0.05"], stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True)
-        head = ""  # signal once the run is stepping (handlers installed), not after a fixed sleep
-        while " step " not in head:
-            line = p.stdout.readline()
-            head += line
-            if not line:
-                break
+        head = read_until_stepping(p)  # signal once the run is stepping, not after a fixed sleep
         time.sleep(0.3)
         p.send_signal(signal.SIGTERM)
         out, _ = p.communicate(timeout=120)
