@@ -6,9 +6,17 @@ Passes when the command exits non-zero within the timeout and REGEX matches exac
 lines of its combined stdout+stderr: one clear message for the whole job, not one per rank.
 """
 import argparse
+import os
 import re
 import subprocess
 import sys
+
+
+# When a rank exits non-zero, mpiexec ends the job and waits odls_base_sigkill_timeout (1 s) before killing what is
+# left, twice: 2 s of every refused run (also `mpiexec -n 2 sh -c 'exit 1'`). The message is printed before any
+# rank exits (the ranks pass MPI_Finalize together), so 0 loses nothing here; tests that signal mpiexec keep the
+# default.
+ENV = dict(os.environ, OMPI_MCA_odls_base_sigkill_timeout="0")
 
 
 def main():
@@ -20,7 +28,7 @@ def main():
     a = ap.parse_args()
     cmd = a.cmd[1:] if a.cmd and a.cmd[0] == "--" else a.cmd
     try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=a.timeout)
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=a.timeout, env=ENV)
     except subprocess.TimeoutExpired as e:
         print(f"FAIL: command hung (> {a.timeout} s): {' '.join(cmd)}")
         print((e.stdout or b"").decode(errors="replace"))

@@ -9,6 +9,9 @@ from pathlib import Path
 import h5py
 
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+# scripts/test-asan sets SUITE_TIMEOUT_SCALE > 1 for its instrumented build (3-10x slower): a check then runs
+# fewer steps of the same scenes, with the same bounds.
+SLOW_BUILD = float(os.environ.get("SUITE_TIMEOUT_SCALE", "1")) > 1
 
 
 class Harness:

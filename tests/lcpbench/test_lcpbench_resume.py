@@ -25,7 +25,10 @@ os.environ["HDF5_USE_FILE_LOCKING"] = "FALSE"  # the test peeks at OUT.partial w
 import h5py  # noqa: E402
 import numpy as np  # noqa: E402
 
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+# SIGTERM reaches the ranks through mpiexec, as a scheduler sends it: with Open MPI's default grace before it
+# kills them (1 s; the test command sets 0 for its refused runs), which the ranks' clean stop needs.
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_odls_base_sigkill_timeout="1")
 COUNT = 400
 ARGS = ["-family", "random_box", "-n", "30", "-count", str(COUNT), "-cond", "1e4", "-solvers",
         "lemke,bpp,pgs,fb_newton", "-flush_every", "20", "-chunk", "4"]
