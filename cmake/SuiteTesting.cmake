@@ -4,6 +4,9 @@
 #   suite_add_failure_test(NAME n NP p EXPECT "regex" COMMAND exe args... [LABELS l...])
 #       passes when the command exits non-zero AND the regex matches exactly one line of its output
 #       (one clear message, not one per rank) AND it finishes before the timeout (no hang). Label bad_input.
+#   suite_add_output_test(NAME n NP p EXPECT "regex"... [REJECT "regex"...] COMMAND exe args... [LABELS l...])
+#       passes when the command exits 0 AND every EXPECT regex is found in its output AND no REJECT regex is
+#       (Python regexes over the whole output, `.` spanning lines; tests/expect_output.py).
 #   suite_add_python_test(NAME n SCRIPT file.py [ARGS ...] [LABELS ...])
 find_program(MPIEXEC_EXECUTABLE NAMES mpiexec mpirun REQUIRED)
 set(SUITE_MPIEXEC ${MPIEXEC_EXECUTABLE} --oversubscribe)
@@ -44,6 +47,26 @@ function(suite_add_failure_test)
   # ..._np2) at 2 ranks only, where the same checking code runs on each rank.
   set_tests_properties(${T_NAME} PROPERTIES ENVIRONMENT "${SUITE_TEST_ENV}" TIMEOUT ${T_TIMEOUT}
                        LABELS "${T_LABELS};bad_input" PROCESSORS ${T_NP})
+endfunction()
+
+function(suite_add_output_test)
+  cmake_parse_arguments(T "" "NAME;NP;TIMEOUT" "EXPECT;REJECT;COMMAND;LABELS" ${ARGN})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 60)
+  endif()
+  set(_patterns)
+  foreach(_rx IN LISTS T_EXPECT)
+    list(APPEND _patterns "--expect=${_rx}")
+  endforeach()
+  foreach(_rx IN LISTS T_REJECT)
+    list(APPEND _patterns "--reject=${_rx}")
+  endforeach()
+  add_test(NAME ${T_NAME}
+           COMMAND ${SUITE_PYTHON} ${CMAKE_SOURCE_DIR}/tests/expect_output.py ${_patterns} --timeout ${T_TIMEOUT}
+                   -- ${SUITE_MPIEXEC} -n ${T_NP} ${T_COMMAND}
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(${T_NAME} PROPERTIES ENVIRONMENT "${SUITE_TEST_ENV}" TIMEOUT ${T_TIMEOUT}
+                       LABELS "${T_LABELS}" PROCESSORS ${T_NP})
 endfunction()
 
 function(suite_add_python_test)

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""Run a command that must succeed and print what it promises: exit 0, no hang, every --expect regex found in its
+output (stdout and stderr together) and no --reject regex. Unlike ctest's PASS_REGULAR_EXPRESSION, a crash or a
+non-zero exit after the expected text fails.
+
+Usage: expect_output.py --expect=REGEX [--expect=REGEX ...] [--reject=REGEX ...] [--timeout S] -- command args...
+The regexes are Python regexes searched over the whole output with re.DOTALL (`.` spans lines), so
+`A.*B` asserts that B comes after A.
+"""
+import argparse
+import re
+import subprocess
+import sys
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--expect", action="append", default=[], required=True)
+    ap.add_argument("--reject", action="append", default=[])
+    ap.add_argument("--timeout", type=float, default=60.0)
+    ap.add_argument("cmd", nargs=argparse.REMAINDER)
+    a = ap.parse_args()
+    cmd = a.cmd[1:] if a.cmd and a.cmd[0] == "--" else a.cmd
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=a.timeout)
+    except subprocess.TimeoutExpired as e:
+        print(f"FAIL: command hung (> {a.timeout} s): {' '.join(cmd)}")
+        print((e.stdout or b"").decode(errors="replace"))
+        return 1
+    out = p.stdout.decode(errors="replace")
+    print(out)
+    ok = True
+    if p.returncode != 0:
+        print(f"FAIL: command exited {p.returncode}, expected 0")
+        ok = False
+    for rx in a.expect:
+        if not re.search(rx, out, re.DOTALL):
+            print(f"FAIL: /{rx}/ not found in the output")
+            ok = False
+    for rx in a.reject:
+        m = re.search(rx, out, re.DOTALL)
+        if m:
+            print(f"FAIL: /{rx}/ found in the output: {m.group(0)[:200]!r}")
+            ok = False
+    if ok:
+        print(f"OK: exit 0, {len(a.expect)} expected pattern(s) found, {len(a.reject)} rejected one(s) absent")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
