@@ -2,7 +2,6 @@
 import csv
 
 import h5py
-import numpy as np
 
 from postprocess.__main__ import main
 from postprocess.fem_plots import read_history
@@ -35,7 +34,7 @@ def test_rate_and_orderings_figures(tmp_path):
         for o, v in zip(["natural", "rcm", "amd"], [100, 50, 40]):
             w.writerow(["can_24", o, v, 2 * v])
     assert main(["fem-orderings", str(orders), "--outdir", str(tmp_path)]) == 0
-    assert (tmp_path / "fem_orderings.png").stat().st_size > 1000 and np.isfinite(1.0)
+    assert (tmp_path / "fem_orderings.png").stat().st_size > 1000
 
 
 def test_femdyn_probe_plot(tmp_path, run_suite):
