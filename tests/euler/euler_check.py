@@ -60,8 +60,9 @@ def hypar():
 
 
 def shu_osher():
-    """Shu-Osher N=400 (enopade6) against an N=6400 WENO5 reference. The reference is data, not the code under
-    test: with SUITE_REFERENCE_DIR set (scripts/test sets it, emptied, for both of its stages) it is computed once
+    """Shu-Osher N=400 (enopade6) against an N=6400 WENO5 reference, a self-generated reference: the same app's
+    WENO5 (`mpiexec -n 2 build/bin/euler -problem shu_osher -nx 6400 -scheme weno5 -output ref.h5` regenerates
+    it; the problem has no exact solution). With SUITE_REFERENCE_DIR set (scripts/test sets it, emptied, for both of its stages) it is computed once
     per test run and reused, so the ASan+UBSan stage checks its own N=400 run against the Release stage's
     reference instead of recomputing it under the sanitizers (> 10 CPU-minutes). The app writes the file under a
     temporary name and renames it when complete, so a partial reference is never taken for a finished one."""

@@ -2,7 +2,9 @@
 """femdyn -dt_adapt: the time step from the Zienkiewicz-Xie estimate to meet -target_error E over
 t_final = -steps x -dt. Error measure: max_t |tip(t) - tip_ref(t)| / max_t |tip_ref(t)|, tip = mean -u_y of the
 end face (/steps/tip_deflection), tip_ref = -material stvk at a fine fixed dt = 0.005 interpolated (linearly)
-to the adaptive run's times. Small cantilever -beam_cells 10,1,1 (L = 10, 1 x 1, E = 1000), step tip load,
+to the adaptive run's times: a self-generated reference (the same app, `femdyn -material stvk -beam_cells 10,1,1
+-dt 0.005 -steps 1000` with the case's load), which checks the step control against the same discretisation in
+space, not the discretisation itself. Small cantilever -beam_cells 10,1,1 (L = 10, 1 x 1, E = 1000), step tip load,
 -dt 0.2 (the first try) -steps 25: t_final = 5.
 
 Usage: test_femdyn_dt_adapt.py FEMDYN [case]   case: target, release, ranks, auto (default: all)

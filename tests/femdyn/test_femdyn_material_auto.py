@@ -2,7 +2,8 @@
 """femdyn -material auto: the linear law while its estimated error is below -target_error, else
 St. Venant-Kirchhoff. Error measure (the one -target_error bounds): max_t |tip(t) - tip_stvk(t)| /
 max_t |tip_stvk(t)|, tip = mean -u_y of the end face (/steps/tip_deflection), tip_stvk = -material stvk at the
-same -dt. Cantilever -beam_cells 20,2,2 (L = 10, 1 x 1, E = 1000), a step tip load P, dt = 0.2, 100 steps.
+same -dt: a self-generated reference (the same app and mesh, `femdyn -material stvk` with the case's load), so
+the error is the law's (linear against StVK), not the discretisation's. Cantilever -beam_cells 20,2,2 (L = 10, 1 x 1, E = 1000), a step tip load P, dt = 0.2, 100 steps.
 
 Usage: test_femdyn_material_auto.py FEMDYN [case]   case: small, large, sweep, ranks (default: all)
 
