@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """femdyn regression: runs the executable and asserts numbers from its HDF5 output.
 
-- Cantilever L=10, 1x1, E=1000, nu=0.3, P=1 (Timoshenko 4.0306): P2 on 20x2x2 within 2%; P1 increases with
-  refinement and stays below the reference (shear locking). StVK elastica (P L^2/EI = 1) tip w/L and u/L.
+- Cantilever L=10, 1x1, E=1000, nu=0.3, P=1 (Timoshenko 4.0306): P2 on 20x2x2 within 1.2% (measured 1.10%); P1
+  increases with refinement, stays below the reference (shear locking) and equals its committed values. StVK elastica (P L^2/EI = 1) tip w/L and u/L.
 - Undamped linear Newmark (beta=1/4, gamma=1/2) under a suddenly applied tip load: the total energy
   T + U - f.u is conserved to 1e-10 (relative).
 - Orderings and solvers give the same StVK dynamic solution (rcm/skyline vs amd/cholmod vs metis/cholmod).
@@ -40,13 +40,19 @@ def main(exe):
         # Cantilever, P2.
         with run(exe, p("p2.h5"), "-static", "-tip_load", 1, "-beam_cells", "20,2,2", "-order", 2) as f:
             w = f.attrs["tip_deflection"]
-            check(abs(w - TIMOSHENKO) / TIMOSHENKO < 0.02, f"P2 20x2x2 tip deflection {w:.5f} within 2% of 4.0306")
-        # Cantilever, P1 refinement (locking: monotone increase, below the reference).
+            # measured 3.98643, 1.10% below (the mesh's discretisation error plus 3D elasticity against beam
+            # theory); the 1.2% bound fails a change of 0.1% of the tip deflection
+            check(abs(w - TIMOSHENKO) / TIMOSHENKO < 0.012, f"P2 20x2x2 tip deflection {w:.5f} within 1.2% of 4.0306")
+        # Cantilever, P1 refinement (locking: monotone increase, below the reference), each value pinned to the
+        # committed figure of its mesh (a regression pin of this discretisation, not a reference: a direct solve,
+        # so 1e-9 relative leaves room for round-off only).
         prev = 0.0
-        for cells in ("10,1,1", "20,2,2", "40,4,4"):
+        for cells, pinned in (("10,1,1", 0.8843414682990418), ("20,2,2", 2.030518975025689),
+                              ("40,4,4", 3.1731018203092187)):
             with run(exe, p("p1.h5"), "-static", "-tip_load", 1, "-beam_cells", cells) as f:
                 w = f.attrs["tip_deflection"]
             check(prev < w < TIMOSHENKO, f"P1 {cells} tip deflection {w:.5f} increases toward 4.0306")
+            check(abs(w - pinned) <= 1e-9 * pinned, f"P1 {cells} tip deflection {w:.16g} = committed {pinned:.16g}")
             prev = w
         # Large-deflection StVK cantilever, P L^2/EI = 1 (dead load): elastica w/L = 0.30172, u/L = 0.05643.
         with run(exe, p("el.h5"), "-static", "-material", "stvk", "-tip_load", 1000 / 12 / 100, "-load_steps", 5,
