@@ -27,10 +27,8 @@ def downhill(theta):
 
 
 # incline sliding: acceleration and force ratio, per model at its measured accuracy (relative error of a, max
-# |ratio - mu|): splitting 2.2e-8 and 1.1e-16 (its iteration stops at the LCP tolerance), scaled_box 4.9e-13 and
-# 3.6e-7 (box bounds from the previous step's normal force), polyhedral 2.8e-7 and 1.4e-7 (Lemke on the cone's
-# LCP); the bounds sit within 10x of those; a 5% friction loss moves a by mu cos th / (sin th - mu cos th) x 5% =
-# 5.4%.
+# |ratio - mu|): splitting 2.2e-8 and 1.1e-16, scaled_box 4.9e-13 and 3.6e-7, polyhedral 2.8e-7 and 1.4e-7; the
+# bounds sit within 10x of those. A 5% friction loss moves a by mu cos th / (sin th - mu cos th) x 5% = 5.4%.
 BOUNDS = {"splitting": (1e-7, 1e-12), "scaled_box": (5e-12, 1e-6), "polyhedral": (1e-6, 1e-6)}
 for model in ("splitting", "scaled_box", "polyhedral"):
     th, mu = 30.0, 0.3
