@@ -32,7 +32,12 @@ const ToroTest kTests[] = {
     {"test 2 (123)", {1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, "0.00189", "0.00000", "0.02185", "0.02185"},
     {"test 3", {1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, "460.894", "19.5975", "0.57506", "5.99924"},
     {"test 4", {1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, "46.0950", "-6.19633", "5.99242", "0.57511"},
-    {"test 5", {5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, "1691.64", "8.68975", "14.2823",
+    {"test 5",
+     {5.99924, 19.5975, 460.894},
+     {5.99242, -6.19633, 46.0950},
+     "1691.64",
+     "8.68975",
+     "14.2823",
      "31.0426"},
 };
 
@@ -46,7 +51,9 @@ void expectTableValue(double v, const char* printed, double rel, const std::stri
   EXPECT_NEAR(v, std::stod(t), tol) << what << " (Toro: " << t << ")";
 }
 
-double sound(const Prim& w) { return std::sqrt(g * w.p / w.rho); }
+double sound(const Prim& w) {
+  return std::sqrt(g * w.p / w.rho);
+}
 
 // Toro (4.56): inside the left fan.
 Prim leftFan(const Prim& w, double s) {
@@ -94,7 +101,8 @@ double checkWave(const ExactRiemann& rp, const Prim& w, bool left, const std::st
     expectState(rp.sample(s), want, 1e-12, side + " fan at fraction " + std::to_string(f));
   }
   expectState(rp.sample(head + sgn * eps(head)), w, 0.0, side + " ahead of the fan");
-  expectState(rp.sample(tail - sgn * eps(tail)), {rho_star, us, ps}, 1e-12, side + " star state behind the fan");
+  expectState(rp.sample(tail - sgn * eps(tail)), {rho_star, us, ps}, 1e-12,
+              side + " star state behind the fan");
   return rho_star;
 }
 } // namespace

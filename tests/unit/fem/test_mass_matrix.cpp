@@ -59,7 +59,9 @@ Poly times(const Poly& a, const Poly& b) {
   return r;
 }
 
-double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+double factorial(int n) {
+  return n <= 1 ? 1.0 : n * factorial(n - 1);
+}
 
 // Integral over a tetrahedron of volume V (Eisenberg & Malvern 1973).
 double integrate(const Poly& p, double V) {
@@ -97,7 +99,8 @@ Poly shapeFunction(const std::array<double, 4>& lam, int order) {
 }
 
 // Barycentric coordinates of x in the tetrahedron v[0..3].
-std::array<double, 4> barycentric(const std::array<std::array<double, 3>, 4>& v, const std::array<double, 3>& x) {
+std::array<double, 4> barycentric(const std::array<std::array<double, 3>, 4>& v,
+                                  const std::array<double, 3>& x) {
   Eigen::Matrix3d T;
   for (int c = 0; c < 3; ++c)
     for (int i = 0; i < 3; ++i) T(i, c) = v[c + 1][i] - v[0][i];
@@ -107,8 +110,8 @@ std::array<double, 4> barycentric(const std::array<std::array<double, 3>, 4>& v,
 
 // The element mass (3 nen x 3 nen, DOF 3 a + c) of the one-element mesh m from the exact integrals.
 Eigen::MatrixXd exactElementMass(const TetMesh& m) {
-  const std::array<std::array<double, 3>, 4> v = {m.nodes[m.elems[0]], m.nodes[m.elems[1]], m.nodes[m.elems[2]],
-                                                  m.nodes[m.elems[3]]};
+  const std::array<std::array<double, 3>, 4> v = {m.nodes[m.elems[0]], m.nodes[m.elems[1]],
+                                                  m.nodes[m.elems[2]], m.nodes[m.elems[3]]};
   const double V = tetSignedVolume(v[0], v[1], v[2], v[3]);
   const int n = m.numNodes();
   std::vector<Poly> N(n);
@@ -134,8 +137,10 @@ Eigen::VectorXd rigid(const TetMesh& m, int c) {
   Eigen::VectorXd v = Eigen::VectorXd::Zero(3 * m.numNodes());
   for (int a = 0; a < m.numNodes(); ++a) {
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
-    if (c < 3) u[c] = 1;
-    else u = Eigen::Vector3d::Unit(c - 3).cross(Eigen::Vector3d(m.nodes[a][0], m.nodes[a][1], m.nodes[a][2]));
+    if (c < 3)
+      u[c] = 1;
+    else
+      u = Eigen::Vector3d::Unit(c - 3).cross(Eigen::Vector3d(m.nodes[a][0], m.nodes[a][1], m.nodes[a][2]));
     v.segment<3>(3 * a) = u;
   }
   return v;
@@ -145,9 +150,9 @@ Eigen::VectorXd rigid(const TetMesh& m, int c) {
 // inertia tensor rho int (|x|^2 I - x x^T) dV.
 Eigen::Matrix<double, 6, 6> boxRigidMass(double L, double a, double b) {
   const double m = kRho * L * a * b;
-  const Eigen::Vector3d c(L / 2, a / 2, b / 2);                 // centre of mass
-  const Eigen::Vector3d sq(L * L / 3, a * a / 3, b * b / 3);     // <x^2>, <y^2>, <z^2>
-  Eigen::Matrix3d second;                                        // <x_i x_j>
+  const Eigen::Vector3d c(L / 2, a / 2, b / 2);              // centre of mass
+  const Eigen::Vector3d sq(L * L / 3, a * a / 3, b * b / 3); // <x^2>, <y^2>, <z^2>
+  Eigen::Matrix3d second;                                    // <x_i x_j>
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) second(i, j) = i == j ? sq[i] : c[i] * c[j];
   const Eigen::Matrix3d I = m * (second.trace() * Eigen::Matrix3d::Identity() - second);
