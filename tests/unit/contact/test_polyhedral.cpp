@@ -84,12 +84,11 @@ TEST(ContactPolyhedral, SmallLogHeapEveryStepVerified) {
   EXPECT_LE(worst_cone, 1e-6);
 }
 
-// Force ratio on the incline against min(tan th, mu): sticking is exact (the polygon contains the needed
-// force), sliding lies between the inscribed polygon's mu cos(pi / d) and mu.
+// Force ratio on the incline against min(tan th, mu), to 1e-6, sticking and sliding (along a generator of the
+// cone, d = 4 and 8).
 TEST(ContactPolyhedral, InclineForceRatio) {
   const double mu = 0.5;
   for (int d : {4, 8}) {
-    const double err = mu * (1 - std::cos(kPi / d));
     for (double th : {10.0, 20.0, 25.0, 30.0, 40.0}) {
       SceneParams sp;
       sp.scene = "incline";
@@ -106,13 +105,11 @@ TEST(ContactPolyhedral, InclineForceRatio) {
         ASSERT_FALSE(st.failed) << st.message;
       }
       const double exact = std::min(std::tan(th * kPi / 180), mu);
-      std::printf("polyhedral d=%d theta %4.1f: ratio %.8f exact %.8f (bound %.4f)\n", d, th, st.force_ratio,
-                  exact, err);
-      if (std::tan(th * kPi / 180) <= mu * std::cos(kPi / d))
-        EXPECT_NEAR(st.force_ratio, exact, 1e-6) << "stick, d " << d << " theta " << th;
-      else
-        EXPECT_NEAR(st.force_ratio, exact, err + 1e-6) << "slide, d " << d << " theta " << th;
-      EXPECT_LE(st.force_ratio, mu + 1e-6);
+      std::printf("polyhedral d=%d theta %4.1f: ratio %.8f exact %.8f\n", d, th, st.force_ratio, exact);
+      // The box slides along x, one of the cone's generators for d = 4 and 8, where the polyhedral cone meets the
+      // circular one: the sliding force ratio is mu itself, not mu cos(pi/d). Measured: at most 1.7e-7 from
+      // min(tan th, mu) (sliding at 40 deg), 4e-8 at 30 deg, below 1e-8 sticking.
+      EXPECT_NEAR(st.force_ratio, exact, 1e-6) << "d " << d << " theta " << th;
     }
   }
 }
