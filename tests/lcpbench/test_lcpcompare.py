@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """lcpcompare (built when Siconos numerics / Bullet are installed): on 20 random box LCPs and 20 random SPD
 LCPs of size 30, every external solver wrapper returns answers that pass the suite's acceptance test (so the
-wrappers pass the problems correctly: b = -q for Bullet, column-major M for Siconos, relay bounds), and the
-suite's bpp and lemke solve every problem. Timings are printed, never asserted.
+wrappers pass the problems correctly: b = -q for Bullet, column-major M for Siconos, relay bounds), every solver
+solves at least its committed count of problems (SOLVED), and a wrapper that does not take a family says so for
+every problem. Timings are printed, never asserted.
 Usage: test_lcpcompare.py LCPCOMPARE
 """
 import os
@@ -14,6 +15,11 @@ import h5py
 import numpy as np
 
 failures = []
+STATUS_UNSUPPORTED = 4
+# Problems of 20 each wrapper solves (committed figures; a wrapper not named solves all 20): Siconos' Fischer-
+# Burmeister Newton is an LCP solver that reports box problems unsupported; PGS stops at its iteration limit on 5
+# of the SPD problems.
+SOLVED = {("random_box", "siconos_fb_newton"): "unsupported", ("random_spd", "pgs"): 15}
 
 
 def check(cond, msg):
@@ -37,9 +43,14 @@ def main(exe):
                 st = f[f"results/{s}/status"][...]
                 res = f[f"results/{s}/residual"][...]
                 ok = st == 0
+                want = SOLVED.get((fam, s), 20)
+                if want == "unsupported":  # recorded as such for every problem, none attempted
+                    n = int(f[f"results/{s}"].attrs["unsupported"])
+                    check(n == 20 and bool(np.all(st == STATUS_UNSUPPORTED)), f"{fam}: {s} reports all 20 "
+                          f"problems unsupported ({n})")
+                    continue
+                check(int(ok.sum()) >= want, f"{fam}: {s} solves {int(ok.sum())} of 20 problems (committed: {want})")
                 check(bool(np.all(res[ok] <= tol)), f"{fam}: {s}: every accepted answer has residual <= tol")
-                if s in ("bpp", "lemke", "bullet_dantzig", "siconos_lemke"):
-                    check(bool(np.all(ok)), f"{fam}: {s} solves all 20 problems ({int(ok.sum())})")
     if failures:
         sys.exit(1)
 
