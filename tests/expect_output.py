@@ -9,8 +9,9 @@ The regexes are Python regexes searched over the whole output with re.DOTALL (`.
 """
 import argparse
 import re
-import subprocess
 import sys
+
+from command_run import run_command
 
 
 def main():
@@ -20,18 +21,13 @@ def main():
     ap.add_argument("--timeout", type=float, default=60.0)
     ap.add_argument("cmd", nargs=argparse.REMAINDER)
     a = ap.parse_args()
-    cmd = a.cmd[1:] if a.cmd and a.cmd[0] == "--" else a.cmd
-    try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=a.timeout)
-    except subprocess.TimeoutExpired as e:
-        print(f"FAIL: command hung (> {a.timeout} s): {' '.join(cmd)}")
-        print((e.stdout or b"").decode(errors="replace"))
+    result = run_command(a.cmd, a.timeout)
+    if result is None:
         return 1
-    out = p.stdout.decode(errors="replace")
-    print(out)
+    returncode, out = result
     ok = True
-    if p.returncode != 0:
-        print(f"FAIL: command exited {p.returncode}, expected 0")
+    if returncode != 0:
+        print(f"FAIL: command exited {returncode}, expected 0")
         ok = False
     for rx in a.expect:
         if not re.search(rx, out, re.DOTALL):

@@ -23,7 +23,8 @@ import numpy as np
 
 EXE, NP = sys.argv[1], int(sys.argv[2])
 # SIGTERM reaches the ranks through mpiexec, as a scheduler sends it: with Open MPI's default grace before it
-# kills them (1 s; the test command sets 0 for its refused runs), which the ranks' clean stop needs.
+# kills them (1 s; SUITE_TEST_ENV in cmake/SuiteTesting.cmake sets 0 for every test), which the ranks' clean
+# stop needs.
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_odls_base_sigkill_timeout="1")
 CASE = ["-material", "stvk", "-beam_cells", "8,2,2", "-tip_load", 2, "-dt", 0.02, "-newton_rtol", 1e-10]

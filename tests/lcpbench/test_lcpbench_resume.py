@@ -26,7 +26,8 @@ import h5py  # noqa: E402
 import numpy as np  # noqa: E402
 
 # SIGTERM reaches the ranks through mpiexec, as a scheduler sends it: with Open MPI's default grace before it
-# kills them (1 s; the test command sets 0 for its refused runs), which the ranks' clean stop needs.
+# kills them (1 s; SUITE_TEST_ENV in cmake/SuiteTesting.cmake sets 0 for every test), which the ranks' clean
+# stop needs.
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_odls_base_sigkill_timeout="1")
 COUNT = 400
