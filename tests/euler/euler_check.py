@@ -75,7 +75,8 @@ def shu_osher():
             run(["-problem", "shu_osher", "-nx", 6400, "-scheme", "weno5", "-output", ref, "-quiet"], np_=2)
         out = run(["-problem", "shu_osher", "-nx", 400, "-reference", ref, "-error", "-quiet"])
         e = error(out)
-        check(e <= 1.8e-2, f"Shu-Osher N=400 enopade6 vs N=6400 reference: L1(rho) = {e:.4e} <= 1.8e-2")
+        # measured 1.0325e-2; bound +2.5% (deterministic runs: another platform's libm and compiler)
+        check(e <= 1.06e-2, f"Shu-Osher N=400 enopade6 vs N=6400 reference: L1(rho) = {e:.4e} <= 1.06e-2")
 
 
 def conservation():
