@@ -4,7 +4,7 @@
 - Cantilever L=10, 1x1, E=1000, nu=0.3, P=1 (Timoshenko 4.0306): P2 on 20x2x2 within 1.2% (measured 1.10%); P1
   increases with refinement, stays below the reference (shear locking) and equals its committed values. StVK elastica (P L^2/EI = 1) tip w/L and u/L.
 - Undamped linear Newmark (beta=1/4, gamma=1/2) under a suddenly applied tip load: the total energy
-  T + U - f.u is conserved to 1e-10 (relative); the first bending frequency (P2) within 0.5% of Euler-Bernoulli's.
+  T + U - f.u is conserved to 1e-11 (relative); the first bending frequency (P2) within 0.5% of Euler-Bernoulli's.
 - Orderings and solvers give the same StVK dynamic solution (rcm/skyline vs amd/cholmod vs metis/cholmod).
 """
 import os
@@ -58,21 +58,24 @@ def main(exe):
         with run(exe, p("el.h5"), "-static", "-material", "stvk", "-tip_load", 1000 / 12 / 100, "-load_steps", 5,
                  "-beam_cells", "20,2,2", "-order", 2) as f:
             w, u = f.attrs["tip_deflection"] / 10, -f.attrs["tip_ux"] / 10
-        check(abs(w - 0.30172) / 0.30172 < 0.01, f"elastica w/L {w:.5f} within 1% of 0.30172")
-        check(abs(u - 0.05643) / 0.05643 < 0.02, f"elastica u/L {u:.5f} within 2% of 0.05643")
+        # measured 0.30137 and 0.05636: 0.12% off each (the P2 20x2x2 mesh and 3D against the elastica)
+        check(abs(w - 0.30172) / 0.30172 < 0.003, f"elastica w/L {w:.5f} within 0.3% of 0.30172")
+        check(abs(u - 0.05643) / 0.05643 < 0.003, f"elastica u/L {u:.5f} within 0.3% of 0.05643")
         # StVK at a small load agrees with linear.
         with run(exe, p("lin.h5"), "-static", "-tip_load", 0.01, "-beam_cells", "10,2,2") as f:
             wl = f.attrs["tip_deflection"]
         with run(exe, p("nl.h5"), "-static", "-material", "stvk", "-tip_load", 0.01, "-beam_cells", "10,2,2") as f:
             wn = f.attrs["tip_deflection"]
-        check(abs(wn - wl) / wl < 1e-3, f"StVK {wn:.6e} vs linear {wl:.6e} at P = 0.01")
+        # measured 4.8e-5 relative: StVK's geometric stiffening, which grows with P
+        check(abs(wn - wl) / wl < 1e-4, f"StVK {wn:.6e} vs linear {wl:.6e} at P = 0.01, within 1e-4")
         # Energy conservation, undamped linear Newmark.
         with run(exe, p("e.h5"), "-beam_cells", "10,2,2", "-tip_load", 1, "-dt", 0.05, "-steps", 200) as f:
             s = f["steps"]
             e = s["kinetic_energy"][:] + s["strain_energy"][:] - s["external_work"][:]
             scale = np.max(np.abs(s["strain_energy"][:]))
             drift = np.max(np.abs(e - e[0])) / scale
-            check(drift < 1e-10, f"linear undamped energy drift {drift:.2e} < 1e-10 over 200 steps")
+            # measured 1.9e-12 (round-off of 200 solves): bound 1e-11
+            check(drift < 1e-11, f"linear undamped energy drift {drift:.2e} < 1e-11 over 200 steps")
             check(np.max(s["tip_deflection"][:]) > 1.0, "the suddenly loaded beam swings past its static deflection")
         # First bending frequency against Euler-Bernoulli, omega_1 = 1.87510407^2 sqrt(EI / (rho A L^4)), from the
         # free oscillation about the static deflection after a suddenly applied small tip load (P2 20x2x2, linear,
