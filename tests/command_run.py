@@ -15,3 +15,12 @@ def run_command(argv, timeout):
     out = p.stdout.decode(errors="replace")
     print(out)
     return p.returncode, out
+
+
+def verdict(failures, ok_message):
+    """Prints each failure as a FAIL line, or ok_message as the OK line when there is none; the exit status."""
+    for f in failures:
+        print(f"FAIL: {f}")
+    if not failures:
+        print(f"OK: {ok_message}")
+    return 1 if failures else 0

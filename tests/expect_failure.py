@@ -9,7 +9,7 @@ import argparse
 import re
 import sys
 
-from command_run import run_command
+from command_run import run_command, verdict
 
 
 def main():
@@ -25,16 +25,12 @@ def main():
     returncode, out = result
     rx = re.compile(a.expect)
     hits = [line for line in out.splitlines() if rx.search(line)]
-    ok = True
+    failures = []
     if returncode == 0:
-        print("FAIL: command exited 0, expected a non-zero exit")
-        ok = False
+        failures.append("command exited 0, expected a non-zero exit")
     if len(hits) != a.count:
-        print(f"FAIL: /{a.expect}/ matched {len(hits)} lines, expected {a.count}")
-        ok = False
-    if ok:
-        print(f"OK: refused (exit {returncode}): {hits[0].strip() if hits else ''}")
-    return 0 if ok else 1
+        failures.append(f"/{a.expect}/ matched {len(hits)} lines, expected {a.count}")
+    return verdict(failures, f"refused (exit {returncode}): {hits[0].strip() if hits else ''}")
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ import argparse
 import re
 import sys
 
-from command_run import run_command
+from command_run import run_command, verdict
 
 
 def main():
@@ -25,23 +25,14 @@ def main():
     if result is None:
         return 1
     returncode, out = result
-    ok = True
-    if returncode != 0:
-        print(f"FAIL: command exited {returncode}, expected 0")
-        ok = False
-    for rx in a.expect:
-        if not re.search(rx, out, re.DOTALL):
-            print(f"FAIL: /{rx}/ not found in the output")
-            ok = False
+    failures = [] if returncode == 0 else [f"command exited {returncode}, expected 0"]
+    failures += [f"/{rx}/ not found in the output" for rx in a.expect if not re.search(rx, out, re.DOTALL)]
     for rx in a.reject:
         m = re.search(rx, out, re.DOTALL)
         if m:
-            print(f"FAIL: /{rx}/ found in the output: {m.group(0)[:200]!r}")
-            ok = False
-    if ok:
-        print(f"OK: exit 0, {len(a.expect)} expected pattern(s) found, {len(a.reject)} rejected one(s) absent")
-    return 0 if ok else 1
-
+            failures.append(f"/{rx}/ found in the output: {m.group(0)[:200]!r}")
+    return verdict(failures, f"exit 0, {len(a.expect)} expected pattern(s) found, {len(a.reject)} rejected one(s) "
+                             "absent")
 
 if __name__ == "__main__":
     sys.exit(main())

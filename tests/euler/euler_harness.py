@@ -3,14 +3,13 @@ failure unless expected) and the OK/FAIL check line. SUITE_BIN and SUITE_MPIEXEC
 import os
 import re
 import subprocess
+import sys
 
 BIN = os.environ.get("SUITE_BIN", "build/bin")
 MPIEXEC = os.environ.get("SUITE_MPIEXEC", "mpiexec")
 SRC = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-# scripts/test-asan sets SUITE_TIMEOUT_SCALE > 1 for its instrumented build (3-10x slower): a check then runs
-# smaller grids or fewer steps that take the same code paths, with the same bounds (the Release stage runs the
-# sizes in the docstrings).
-SLOW_BUILD = float(os.environ.get("SUITE_TIMEOUT_SCALE", "1")) > 1
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from slow_build import SLOW_BUILD  # noqa: E402,F401 (tests/slow_build.py; re-exported to the Euler checks)
 
 
 def run(args, np_=1, expect_ok=True, timeout=1500, tail=4000, with_code=False):
