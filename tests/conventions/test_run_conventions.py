@@ -7,13 +7,16 @@ each program's own output at 1 and 2 ranks:
   - the root attribute `status` is `completed`, `stopped by walltime` (-max_walltime) or `stopped by signal`
     (SIGTERM, at 1 rank), the same word as the summary line;
   - a restart from a checkpoint at the end says that no step was left (no rate of zero steps in zero seconds);
-  - contact writes the scene's body names as /bodies/name.
+  - contact writes the scene's body names as /bodies/name;
+  - an -output that names an existing FIFO (as /dev/null names a device) is refused with one ERROR line and left
+    in place (the rename of the finished file would replace it).
 
 Usage: test_run_conventions.py NRANKS
 """
 import os
 import re
 import signal
+import stat
 import subprocess
 import sys
 import tempfile
@@ -79,6 +82,17 @@ def without_output(prog, args):
     check(set(os.listdir(".")) == before, f"{prog} without -output: no file written")
 
 
+def refuses_special_file(prog, args):
+    os.mkfifo("fifo.h5")
+    p = subprocess.run(mpi(prog, *args, "-output", "fifo.h5"), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       text=True, timeout=120)
+    errors = [ln for ln in p.stdout.splitlines() if ln.startswith("ERROR")]
+    check(p.returncode != 0 and len(errors) == 1 and "fifo.h5: exists and is not a regular file" in errors[0],
+          f"{prog} -output FIFO: refused with one ERROR line: {errors}")
+    check(stat.S_ISFIFO(os.stat("fifo.h5").st_mode), f"{prog} -output FIFO: the FIFO is left in place")
+    os.remove("fifo.h5")
+
+
 def euler_stops():
     last = run("euler", "-problem", "sod", "-nx", 2000, "-max_walltime", 1e-6, "-output", "w.h5")
     check(last.startswith("euler: stopped by walltime: ") and status_of("w.h5") == "stopped by walltime",
@@ -121,14 +135,17 @@ def main():
         euler = ["-problem", "sod", "-nx", 100]
         with_output("euler", euler)
         without_output("euler", euler)
+        refuses_special_file("euler", euler)
         euler_stops()
         euler_restart_at_end()
         femdyn = ["-beam_cells", "4,1,1", "-steps", 3]
         with_output("femdyn", femdyn)
         without_output("femdyn", femdyn)
+        refuses_special_file("femdyn", femdyn)
         contact = ["-scene", "incline", "-steps", 5]
         with_output("contact", contact)
         without_output("contact", contact)
+        refuses_special_file("contact", contact)
         run("contact", *contact, "-output", "c.h5")
         with h5py.File("c.h5", "r") as f:
             names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["/bodies/name"][...]]
@@ -137,11 +154,14 @@ def main():
         check(len(names) == 2 and names == joined.split(","), f"contact: /bodies/name {names} are the scene's bodies")
         lcp = ["-family", "random_box", "-n", 10, "-count", 20, "-solvers", "bpp,lemke"]
         with_output("lcpbench", lcp, sidecar=False)
+        refuses_special_file("lcpbench", lcp)
         mtx = reorder_matrix()
         with_output("reorder", ["-matrix", mtx], sidecar=False)
         without_output("reorder", ["-matrix", mtx])
+        refuses_special_file("reorder", ["-matrix", mtx])
         if NP == 1 and os.path.exists(os.path.join(BIN, "lcpcompare")):  # lcpcompare times one core
             without_output("lcpcompare", ["-family", "random_box", "-n", 10, "-count", 10])
+            refuses_special_file("lcpcompare", ["-family", "random_box", "-n", 10, "-count", 10])
         os.chdir("/")
     print(f"{'FAILED' if failures else 'passed'}: {failures} failure(s)")
     return 1 if failures else 0
