@@ -39,6 +39,7 @@ struct Options {
   PetscInt chunk = 0, flush_every = 4096;
   PetscReal flush_seconds = 30.0, delay = 0.0, max_walltime = 0.0;
   PetscBool strict = PETSC_FALSE, resume = PETSC_TRUE;
+  PetscBool save_solutions = PETSC_FALSE; // -save_solutions: every solver's z per problem in the file
   // timing (lcpbench_timing.cpp): 0 = one timed run per (solver, problem)
   PetscReal time_repeat = 0.0;
   PetscInt time_batches = 3;
@@ -87,15 +88,16 @@ struct Batch {
   suite::lcp::Portfolio portfolio; // the table of "auto"
   int auto_index = -1;             // position of "auto" in solver_names, -1 if absent
   double delay = 0.0;              // testing: seconds of sleep after each problem
-  Timing timing;                   // -time_repeat, -time_batches
-  long long warmup = 1;            // -warmup: problems solved untimed by every solver before timing
+  int z_len = 0; // -save_solutions: values of z kept per (solver, problem), the largest n (0: none kept)
+  Timing timing; // -time_repeat, -time_batches
+  long long warmup = 1; // -warmup: problems solved untimed by every solver before timing
 
   bool fromFiles() const { return family == "file"; }
-  // index, n, kFields per solver, then (with auto) class, succeeding solver, tried count, kAutoMaxTried tried
-  int recordLength() const {
-    return 2 + static_cast<int>(solvers.size()) * kFields + (auto_index >= 0 ? kAutoFields : 0);
-  }
+  // index, n, kFields per solver, then (with auto) class, succeeding solver, tried count, kAutoMaxTried tried,
+  // then (with -save_solutions) z_len values of z per solver (NaN past the problem's n or without a z)
+  int recordLength() const { return zBase() + static_cast<int>(solvers.size()) * z_len; }
   int autoBase() const { return 2 + static_cast<int>(solvers.size()) * kFields; }
+  int zBase() const { return autoBase() + (auto_index >= 0 ? kAutoFields : 0); }
 };
 
 // Collective: the batch; files are read here (a malformed HDF5 file stops the job, others go to file_errors).
@@ -146,6 +148,7 @@ private:
   long long key(long long i) const { return static_cast<long long>(buf_[i * rec_len_]); }
   template <class T> void writeColumn(const std::vector<long long>& order, int c, const std::string& path);
   void writeBuffered();
+  void writeSolutions(const std::vector<long long>& order);
   void createAuto();
   void writeAuto(const std::vector<long long>& order);
   const Batch& b_;

@@ -5,6 +5,7 @@
 #include "core/rank0_work.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <unistd.h>
 
 namespace lcpbench_app {
@@ -55,6 +56,7 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
   b->timing = {o.time_repeat, static_cast<int>(o.time_batches)};
   b->warmup = o.warmup;
   b->count = o.count;
+  b->z_len = o.save_solutions ? static_cast<int>(o.n) : 0;
   if (!b->fromFiles()) PetscFunctionReturn(0);
   b->file_problems.resize(o.files.size());
   b->file_errors.resize(o.files.size());
@@ -62,6 +64,11 @@ PetscErrorCode makeBatch(MPI_Comm comm, const Options& o, Batch* b) {
     PetscCall(readProblemFile(comm, o.files[i], fclibModel(o.fclib_model), &b->file_problems[i],
                               &b->file_errors[i]));
   b->count = static_cast<long long>(o.files.size());
+  if (o.save_solutions) {
+    int n_max = 1; // one NaN per problem when no file is valid
+    for (const auto& p : b->file_problems) n_max = std::max(n_max, p.size());
+    b->z_len = n_max;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -150,6 +157,11 @@ void solveAll(const Batch& b, long long k, const Problem* p, const Timing& t, do
                                r.residual,
                                r.cpu_time};
     std::copy(v, v + kFields, rec + 2 + s * kFields);
+    if (b.z_len > 0) { // the z returned, solved or not (NaN: none, or past its n)
+      double* z = rec + b.zBase() + s * b.z_len;
+      std::fill(z, z + b.z_len, std::nan(""));
+      for (int i = 0; i < static_cast<int>(r.z.size()) && i < b.z_len; ++i) z[i] = r.z[i];
+    }
   }
 }
 

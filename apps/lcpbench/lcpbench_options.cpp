@@ -86,6 +86,10 @@ PetscErrorCode readRunOptions(PetscOptionItems* po, Options* o, PetscBool* stric
                          &o->strict, strict_set));
   PetscCall(suite::optionsString(po, "-output", "HDF5 results file (OUT.partial while the batch runs)",
                                  &o->output));
+  PetscCall(optionsValue(po, "-save_solutions",
+                         "Write every solver's z of every problem to /results/<solver>/z (count x largest n, "
+                         "NaN-padded)",
+                         &o->save_solutions));
   PetscCall(optionsValue(po, "-flush_every", "Write and flush results to OUT.partial every N problems",
                          &o->flush_every));
   PetscCall(
@@ -155,16 +159,17 @@ PetscErrorCode finishOptions(MPI_Comm comm, PetscBool family_set, PetscBool stri
 // dense n x n problem (entries within PetscInt) and the memory per rank: one problem at a time, M with the
 // generator's and the solver's dense workspace ~ 6 n^2 doubles (measured: 4 n^2, n = 1000 and 1500, lemke, bpp,
 // fb_newton, pgs), the done flags of -count problems (1 byte each; measured 2 GB at -count 2e9) and rank 0's
-// buffer of -flush_every result records.
+// buffer of -flush_every result records (with -save_solutions n values of z per solver in each).
 PetscErrorCode checkSizes(MPI_Comm comm, const Options& o) {
   PetscFunctionBeginUser;
   if (o.fromFiles()) PetscFunctionReturn(0); // the readers bound a file's problem by the file's size
-  const double n = (double)o.n, record = 8.0 * (2.0 + 6.0 * o.solvers.size());
-  char what[128];
+  const double n = (double)o.n, S = (double)o.solvers.size();
+  const double record = 8.0 * (2.0 + 6.0 * S + (o.save_solutions ? S * n : 0.0));
+  char what[160];
   std::snprintf(what, sizeof what, "-n %lld", (long long)o.n);
   PetscCall(suite::checkIndexCount(comm, n * n, "entries of the dense problem matrix", what));
-  std::snprintf(what, sizeof what, "-n %lld -count %lld -flush_every %lld", (long long)o.n,
-                (long long)o.count, (long long)o.flush_every);
+  std::snprintf(what, sizeof what, "-n %lld -count %lld -flush_every %lld%s", (long long)o.n,
+                (long long)o.count, (long long)o.flush_every, o.save_solutions ? " -save_solutions" : "");
   PetscCall(suite::checkMemoryEstimate(
       comm, 5e7 + 48.0 * n * n + 1.5 * (double)o.count + 2.0 * record * o.flush_every, what));
   PetscFunctionReturn(0);

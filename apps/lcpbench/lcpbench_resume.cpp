@@ -72,7 +72,8 @@ BatchHeader batchHeader(const Options& o, const Batch& b) {
                    {"rel_tol", exactText(o.rel_tol)},
                    {"refine", o.refine ? "1" : "0"},
                    {"time_repeat", exactText(o.time_repeat)},
-                   {"time_batches", to_string(o.time_batches)}};
+                   {"time_batches", to_string(o.time_batches)},
+                   {"save_solutions", o.save_solutions ? "1" : "0"}};
   const BatchHeader files = {{"files", suite::joinCommaList(o.files)}, {"fclib_model", o.fclib_model}};
   const BatchHeader generated = {{"n", to_string(o.n)},         {"seed", to_string(o.seed)},
                                  {"cond", exactText(o.cond)},   {"qrange", exactText(o.qrange)},

@@ -32,6 +32,10 @@ void Store::create(const std::string& partial) {
     file.createFixed<double>(g + "time", C, 0.0, "s");
     file.createFixed<double>(g + "residual", C, kInf);
     file.createFixed<double>(g + "cpu_time", C, 0.0, "s");
+    if (b_.z_len > 0) { // problem k's z at [k z_len, k z_len + n_k)
+      file.createFixed<double>(g + "z", C * static_cast<unsigned long long>(b_.z_len), std::nan(""));
+      file.setAttribute(g + "z", "row_length", static_cast<long long>(b_.z_len));
+    }
   }
   if (b_.auto_index >= 0) createAuto();
   run = 0;
@@ -71,11 +75,29 @@ void Store::writeColumn(const std::vector<long long>& order, int c, const std::s
   file.writeSelected(path, v.data());
 }
 
-// The buffered records in index order, then their done flags.
+// -save_solutions: each solver's z of the buffered records (order: by problem index) into its row of z.
+void Store::writeSolutions(const std::vector<long long>& order) {
+  const unsigned long long L = static_cast<unsigned long long>(b_.z_len);
+  std::vector<unsigned long long> idx;
+  idx.reserve(order.size() * L);
+  for (long long i : order)
+    for (unsigned long long j = 0; j < L; ++j) idx.push_back(static_cast<unsigned long long>(key(i)) * L + j);
+  file.select(idx);
+  std::vector<double> v(idx.size());
+  for (size_t s = 0; s < b_.solver_names.size(); ++s) {
+    const size_t base = static_cast<size_t>(b_.zBase()) + s * L;
+    for (size_t i = 0; i < order.size(); ++i)
+      std::copy_n(buf_.begin() + order[i] * rec_len_ + base, L, v.begin() + i * L);
+    file.writeSelected("/results/" + b_.solver_names[s] + "/z", v.data());
+  }
+}
+
+// The buffered records in index order (their solutions first), then their done flags.
 void Store::writeBuffered() {
   std::vector<long long> order(buffered());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](long long a, long long c) { return key(a) < key(c); });
+  if (b_.z_len > 0) writeSolutions(order);
   std::vector<unsigned long long> idx;
   for (long long i : order) idx.push_back(static_cast<unsigned long long>(key(i)));
   file.select(idx);

@@ -308,8 +308,9 @@ PetscErrorCode checkOutputWritable(MPI_Comm comm, const std::string& path, const
       std::snprintf(msg, sizeof msg, "-%s %s: is a directory", option, p.c_str());
     // a device, FIFO or socket (-output /dev/null): the rename of the finished file would replace it
     else if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-      std::snprintf(msg, sizeof msg, "-%s %s: exists and is not a regular file (the finished file would replace it)",
-                    option, p.c_str());
+      std::snprintf(msg, sizeof msg,
+                    "-%s %s: exists and is not a regular file (the finished file would replace it)", option,
+                    p.c_str());
     else if (statvfs(dir.c_str(), &vfs) == 0 && (double)vfs.f_bavail * vfs.f_frsize < 1 << 20)
       std::snprintf(msg, sizeof msg, "-%s %s: less than 1 MiB free in '%s' (disk full?)", option, p.c_str(),
                     d.c_str());
