@@ -31,7 +31,9 @@ Lines in PETSc's own forms (`-name: <A : B>` and `<now A : formerly B>`, its wor
 Cost: a run takes ~0.1 s of CPU but ~0.5 s of wall time (MPI start-up waits), so HOSTILE_JOBS (default 4) runs go
 at a time, each in its own scratch folder with its own good file. Open MPI is told to use its shared-memory
 transport (pml ob1, btl self,vader: no network probing) and to kill the other ranks of a failed job at once
-(odls_base_sigkill_timeout 0; the default 1 s wait would be most of the cost of a failing run).
+(odls_base_sigkill_timeout 0; the default 1 s wait would be most of the cost of a failing run); a 1-rank run is a
+singleton without a runtime daemon (ess_singleton_isolated) and hwloc skips its PCI scan, as SUITE_TEST_ENV gives
+every test (cmake/SuiteTesting.cmake).
 Prints every failing case (command line, long values abbreviated, and output tail) and a summary:
   hostile PROGRAM np=N: R runs, F failures, T s (C s CPU; ...)
 """
@@ -111,7 +113,8 @@ PARTIAL = re.compile(r"\.(tmp|partial|probe)$")
 def env():
     e = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
              OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_odls_base_sigkill_timeout="0",
-             OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader")
+             OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader", OMPI_MCA_ess_singleton_isolated="1",
+             HWLOC_COMPONENTS="-pci")
     return e
 
 
