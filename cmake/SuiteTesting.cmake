@@ -16,14 +16,14 @@ set(SUITE_MPIEXEC ${MPIEXEC_EXECUTABLE} --oversubscribe)
 # it kills what is left: 2 s of every refused run, also of `mpiexec -n 2 sh -c 'exit 1'`; the message is printed
 # before any rank exits, the ranks passing MPI_Finalize together, so nothing is lost). The tests that signal
 # mpiexec set Open MPI's default back. Measured on the 2-core machine, label bad_input: 305 s -> 50 s of wall
-# time at the same CPU time. A program started without mpiexec (the GoogleTest executables, 1-rank runs of the
-# drivers) is a singleton that needs no runtime daemon (ess_singleton_isolated: Open MPI 4.1 otherwise forks an
-# orted for it), and hwloc skips its PCI scan (HWLOC_COMPONENTS=-pci: a sixth of a start's CPU time reading PCI
-# configuration space, used only to place network cards). Measured on a refused 1-rank euler run: 0.17 -> 0.105
-# CPU-s and 0.21 -> 0.08 s of wall time (Release), 0.29 -> 0.24 CPU-s (ASan+UBSan).
+# time at the same CPU time. hwloc skips its PCI scan (HWLOC_COMPONENTS=-pci: a sixth of a singleton start's CPU
+# time reading PCI configuration space, used only to place network cards). Daemon-less singletons
+# (ess_singleton_isolated) are not set here: they share one job id, so two tests running at once would share, and
+# the first to finish would remove, the session directory that MPI-IO maps files in; the hostile-values test,
+# which gains most from them, gives each of its runs a session directory of its own (tests/hostile).
 set(SUITE_TEST_ENV "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
 list(APPEND SUITE_TEST_ENV "OMPI_MCA_pml=ob1;OMPI_MCA_btl=self,vader;OMPI_MCA_odls_base_sigkill_timeout=0")
-list(APPEND SUITE_TEST_ENV "OMPI_MCA_ess_singleton_isolated=1;HWLOC_COMPONENTS=-pci")
+list(APPEND SUITE_TEST_ENV "HWLOC_COMPONENTS=-pci")
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 set(SUITE_PYTHON ${Python3_EXECUTABLE} CACHE FILEPATH "Python for test drivers")
 set(SUITE_DATA_DIR ${CMAKE_SOURCE_DIR}/../shared/data CACHE PATH "Reference data (Harwell-Boeing, Siconos)")

@@ -2,7 +2,7 @@
 
 - incline above the friction angle: acceleration g(sin th - mu cos th) and force ratio = mu at each friction
   model's measured accuracy (bounds below);
-  below: the box sticks (|v| <= 1e-8) and the force ratio is tan th;
+  below: the box sticks (|v| <= 4e-9; measured 3.8e-10) and the force ratio is tan th;
 - splitting from zero and from infinite friction reproduces min(tan th, mu) to 1e-6 (pass counts printed);
 - a failing solver is replaced by the fallback and the run records it;
 - results identical at 1 and 2 ranks; every sample scene runs without NaN; no energy gain in a drop.
@@ -49,7 +49,7 @@ for model in ("splitting", "scaled_box", "polyhedral"):
 with run("stick", "-scene", "incline", "-theta", 20, "-mu", 0.5, "-steps", 200) as f:
     vend = np.linalg.norm(f["/frames/velocities"][-1, 1, :3])
     ratio = f["/steps/force_ratio"][-1]
-    check(vend <= 1e-8, f"incline 20 deg mu 0.5 sticks: |v| = {vend:.2e}")
+    check(vend <= 4e-9, f"incline 20 deg mu 0.5 sticks: |v| = {vend:.2e} <= 4e-9")  # measured 3.8e-10
     check(abs(ratio - np.tan(np.radians(20))) < 1e-6, f"sticking force ratio {ratio:.10f} = tan 20 deg")
 
 # splitting from both starts (the paper's Fig. 7): first step of a box at rest

@@ -1,15 +1,15 @@
 """Extreme inputs of the contact app, one ctest per case; each completes with a verified answer:
 
-  mass_ratio  a 1000 kg box resting on a 1 kg box on the ground: the stack stays (drift <= 1e-4 m over 300
-              steps, final speeds <= 1e-6 m/s), every step solved;
+  mass_ratio  a 1000 kg box resting on a 1 kg box on the ground: the stack stays (drift <= 3e-5 m over 300
+              steps, final speeds <= 1e-12 m/s), every step solved;
   mu0         incline at 20 degrees with mu = 0: a plain LCP (reported in the output's simplifications), the
               box slides with acceleration g sin(theta) within 1e-6 relative, force ratio 0;
-  mu10        incline at 40 degrees with mu = 10: the box sticks (|v| <= 1e-8 m/s), force ratio tan(40 deg)
+  mu10        incline at 40 degrees with mu = 10: the box sticks (|v| <= 5e-9 m/s), force ratio tan(40 deg)
               (a cube tips over beyond 45 degrees, whatever mu);
   low_mu      a pyramid of base 9 (45 boxes) at mu = 0.05, 100 steps: narrow friction boxes, where the sparse
               active set stalls (8 tangent rows per face for 3 degrees of freedom); every problem is solved on the
               sparse path by the proximal active set (sparse_box_lcp.hpp; no fallback to the dense chain, which
-              took 277 s for 10 steps before it), and the pyramid stands (drift <= 1e-6 m);
+              took 277 s for 10 steps), and the pyramid stands (drift <= 1e-6 m);
   bodies1000  1000 spheres dropped in a 10 x 10 x 10 grid onto a plane, 22 steps (the second layer lands on the first) (sweep-and-prune broad
               phase): no sphere-sphere or sphere-plane penetration beyond 2e-3 m, finite energy never above
               the initial energy.
@@ -59,8 +59,9 @@ if CASE == "mass_ratio":
     x = f["/frames/positions"][...]
     v = f["/frames/velocities"][-1]
     drift = np.abs(x[-1] - x[0]).max()
-    check(drift <= 1e-4, f"mass ratio 1000: stack drift {drift:.3e} m <= 1e-4")
-    check(np.abs(v).max() <= 1e-6, f"final speeds {np.abs(v).max():.3e} <= 1e-6")
+    # measured: drift 9.8e-6 m (the contacts' settling under the 1000:1 load), final speeds 3.0e-14 m/s
+    check(drift <= 3e-5, f"mass ratio 1000: stack drift {drift:.3e} m <= 3e-5")
+    check(np.abs(v).max() <= 1e-12, f"final speeds {np.abs(v).max():.3e} <= 1e-12")
     check(f["/steps/fallbacks"][...].sum() == 0, "every step solved by the primary solver")
 elif CASE in ("mu0", "mu10"):
     th, mu = (20.0, 0.0) if CASE == "mu0" else (40.0, 10.0)  # (a cube tips over beyond 45 deg)
@@ -80,7 +81,8 @@ elif CASE in ("mu0", "mu10"):
         check("no friction rows (plain LCP)" in simpl, f"reported: '{simpl}'")
         check(int(f["/steps/rows"][...].max()) == 4, "4 rows: normals only")
     else:
-        check(np.abs(vel[-1]).max() <= 1e-8, f"mu = 10 at 40 deg: sticks, |v| = {np.abs(vel[-1]).max():.2e}")
+        # measured |v| 4.8e-10 m/s
+        check(np.abs(vel[-1]).max() <= 5e-9, f"mu = 10 at 40 deg: sticks, |v| = {np.abs(vel[-1]).max():.2e}")
         check(abs(ratio[-1] - np.tan(r)) <= 1e-6, f"force ratio {ratio[-1]:.8f} = tan th {np.tan(r):.8f}")
 elif CASE == "low_mu":
     f = run("-scene", "pyramid", "-pyramid_base", 9, "-mu", 0.05, "-steps", 100, "-output_every", 100)

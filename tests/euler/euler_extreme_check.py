@@ -103,7 +103,8 @@ def planar2d():
         check(ok, f"2D planar LeBlanc: rho, p > 0 and finite (min rho {rmin:.3e}, min p {pmin:.3e})")
         check(retries == retried(out) and retries >= 1, f"2D planar LeBlanc: {retries} step(s) retried")
         e = float(re.search(r"error rho: L1 (\S+)", out).group(1))
-        check(e <= 3.0e-3, f"2D planar LeBlanc: L1(rho) {e:.3e} <= 3.0e-3 (1D: 2.586e-3)")
+        # measured 2.408e-3; bound + 2%
+        check(e <= 2.46e-3, f"2D planar LeBlanc: L1(rho) {e:.3e} <= 2.46e-3 (1D: 2.586e-3)")
 
 
 def sedov2d():

@@ -14,7 +14,8 @@ Usage: test_femdyn_dt_adapt.py FEMDYN [case]   case: target, release, ranks, aut
 - release (P = 0.1 removed at t = 2.5, -load_release 2.5): the step across the release is rejected and
   recorded (/time_adapt/tries accepted = 0 near t = 2.5, /steps/rejected > 0 there), error <= E = 1e-2;
 - ranks (-solver petsc, P = 0.5, E = 1e-2): 1 and 2 ranks take the same number of steps, their dt histories
-  agree to 1e-9 and their tip histories to 1e-8 (decisions on collectively reduced norms);
+  agree to 1e-11 and their tip histories to 1e-12 (measured 1.9e-12 and 2.0e-13: decisions on collectively reduced
+  norms);
 - auto (-material auto -dt_adapt, P = 1, E = 1e-2): budget split E/2 law (/material_auto target) + E/2 time
   (/time_adapt time_budget), total error vs fine StVK <= E.
 """
@@ -108,9 +109,9 @@ def ranks(run):
     check(same, f"1 and 2 ranks take the same number of steps ({len(r1['t'])}, {len(r2['t'])})")
     if same:
         d = float(np.max(np.abs(r1["time_adapt"]["dt"] - r2["time_adapt"]["dt"])))
-        check(d <= 1e-9, f"1 and 2 ranks: dt histories agree ({d:.1e} <= 1e-9)")
+        check(d <= 1e-11, f"1 and 2 ranks: dt histories agree ({d:.1e} <= 1e-11)")
         e = float(np.max(np.abs(r1["tip"] - r2["tip"])) / np.max(np.abs(r1["tip"])))
-        check(e <= 1e-8, f"1 and 2 ranks: tip histories agree ({e:.1e} <= 1e-8)")
+        check(e <= 1e-12, f"1 and 2 ranks: tip histories agree ({e:.1e} <= 1e-12)")
 
 
 def auto(run):

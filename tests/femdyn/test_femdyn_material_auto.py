@@ -15,7 +15,8 @@ Usage: test_femdyn_material_auto.py FEMDYN [case]   case: small, large, sweep, r
   12 of 12), and the small loads (1e-3, 1e-2 at E = 1e-2) stay linear: >= 3x fewer K_eff factorisations
   than StVK (one per dt against one per Newton iteration; measured 1 against 200 and 300);
 - ranks (-solver petsc with its default direct KSP, P = 1, E = 1e-2): 1 and 2 ranks take the same law at every step and their tip
-  histories agree to 1e-8 relative.
+  histories agree to 1e-12 relative (measured 2.1e-14; CG stops after another iteration count when the ranks
+  reduce in another order).
 """
 import sys
 import tempfile
@@ -102,7 +103,7 @@ def ranks(run):
           "-solver petsc: the 2-rank run distributes the matrix and the element assembly")
     check(np.array_equal(r1["law"], r2["law"]), "-solver petsc: 1 and 2 ranks take the same law every step")
     d = error(r2, r1)
-    check(d <= 1e-8, f"-solver petsc: tip histories at 1 and 2 ranks agree ({d:.1e} <= 1e-8)")
+    check(d <= 1e-12, f"-solver petsc: tip histories at 1 and 2 ranks agree ({d:.1e} <= 1e-12)")
 
 
 def main():

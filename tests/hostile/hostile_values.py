@@ -32,8 +32,7 @@ Cost: a run takes ~0.1 s of CPU but ~0.5 s of wall time (MPI start-up waits), so
 at a time, each in its own scratch folder with its own good file. Open MPI is told to use its shared-memory
 transport (pml ob1, btl self,vader: no network probing) and to kill the other ranks of a failed job at once
 (odls_base_sigkill_timeout 0; the default 1 s wait would be most of the cost of a failing run); a 1-rank run is a
-singleton without a runtime daemon (ess_singleton_isolated) and hwloc skips its PCI scan, as SUITE_TEST_ENV gives
-every test (cmake/SuiteTesting.cmake).
+singleton without a runtime daemon, in a session directory of its own (env()), and hwloc skips its PCI scan.
 Prints every failing case (command line, long values abbreviated, and output tail) and a summary:
   hostile PROGRAM np=N: R runs, F failures, T s (C s CPU; ...)
 """
@@ -110,12 +109,16 @@ MPI_START_FAILED = re.compile(r"ompi_rte_init failed|orte_init failed|fail durin
 PARTIAL = re.compile(r"\.(tmp|partial|probe)$")
 
 
-def env():
-    e = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-             OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_odls_base_sigkill_timeout="0",
-             OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader", OMPI_MCA_ess_singleton_isolated="1",
-             HWLOC_COMPONENTS="-pci")
-    return e
+def env(cwd):
+    """A 1-rank run is a singleton without a runtime daemon (ess_singleton_isolated: Open MPI 4.1 otherwise forks
+    an orted for it, 0.06-0.1 CPU-s of a refused run's 0.17-0.29) in a session directory of its own scratch
+    folder (orte_tmpdir_base): daemon-less singletons share one job id, so concurrent ones would share, and the
+    first to finish would remove, the session directory that MPI-IO's shared-file-pointer component maps files
+    in ("mca_sharedfp_sm_file_open: Error, unable to open file for mmap", 5 of 1,600 runs)."""
+    return dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_odls_base_sigkill_timeout="0",
+                OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader", OMPI_MCA_ess_singleton_isolated="1",
+                OMPI_MCA_orte_tmpdir_base=str(Path(cwd) / "mpi-session"), HWLOC_COMPONENTS="-pci")
 
 
 def mpi(np_, prog, args):
@@ -232,7 +235,7 @@ def run(np_, prog, args, cwd):
         try:
             # stdout, then stderr: merged, mpiexec's forwarding of a long line can interleave the other stream
             # inside it (an ERROR line in the middle of a long stdout line)
-            p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(), stdout=subprocess.PIPE,
+            p = subprocess.run(mpi(np_, prog, args), cwd=cwd, env=env(cwd), stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, timeout=RUN_TIMEOUT * (3 if attempt else 1))
             text = p.stdout.decode(errors="replace") + p.stderr.decode(errors="replace")
             rc, out = p.returncode, MPIEXEC_NOTICE.sub("", text)
