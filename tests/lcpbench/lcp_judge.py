@@ -5,6 +5,7 @@ lib/lcp (the solvers' naturalResidual and readers), so that a bug there cannot p
   problem = read_problem(path)            # Problem(M, q, l, u, known): dense M, bounds with +-inf
   natural_residual(problem, z)            # |z - mid(l, u, z - (M z + q))|_inf
   brute_force(problem)                    # the solution of a small box LCP by enumeration of its index sets
+  stored_solution(h5, solver, k, n)       # problem k's z in an lcpbench -save_solutions file (open h5py.File)
 
 Box LCP (Siconos: relay): find l <= z <= u with w = M z + q: w >= 0 where z = l, w <= 0 where z = u, w = 0 in
 between; an LCP is l = 0, u = inf; an MLCP's equality rows are free (l = -inf, u = inf). The natural residual is
@@ -168,3 +169,11 @@ def brute_force(p):
             if not any(np.allclose(z, y, rtol=0, atol=1e-10) for y in found):
                 found.append(z)
     return found
+
+
+def stored_solution(f, solver, k, n):
+    """Problem k's z (n values) of `solver` in an open lcpbench output written with -save_solutions: row k of
+    /results/<solver>/z, whose attribute row_length is the batch's largest n."""
+    z = f[f"/results/{solver}/z"]
+    L = int(z.attrs["row_length"])
+    return z[k * L: k * L + n]

@@ -17,7 +17,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lcp_judge import natural_residual, read_problem  # noqa: E402
+from lcp_judge import natural_residual, read_problem, stored_solution  # noqa: E402
 
 STATUS_SOLVED, STATUS_INVALID = 0, 6
 
@@ -77,13 +77,15 @@ def main(exe, siconos, testdir):
         run(exe, "-family", "file", "-file", paths, "-solvers", solvers, "-strict", "false", "-save_solutions",
             "-output", p("sic.h5"), np_=2)
         s = datasets(p("sic.h5"))
-        L = len(s["/results/fb_newton/z"]) // len(files)  # row length: the largest n
-        for k, f in enumerate(files):
-            solved_by = [sv for sv in solvers.split(",") if s[f"/results/{sv}/status"][k] == STATUS_SOLVED]
-            prob = read_problem(os.path.join(siconos, f))  # the independent judge (lcp_judge.py), from the stored z
-            r = natural_residual(prob, s["/results/fb_newton/z"][k * L: k * L + prob.q.size])
-            check(s["/results/fb_newton/status"][k] == STATUS_SOLVED and r <= 1e-10 * (1 + np.max(np.abs(prob.q))),
-                  f"{f}: fb_newton residual from its z {r:.2e} <= 1e-10 (1 + |q|); solved by {' '.join(solved_by)}")
+        with h5py.File(p("sic.h5"), "r") as sic:
+            for k, f in enumerate(files):
+                solved_by = [sv for sv in solvers.split(",") if s[f"/results/{sv}/status"][k] == STATUS_SOLVED]
+                # the independent judge (lcp_judge.py), from the stored z
+                prob = read_problem(os.path.join(siconos, f))
+                r = natural_residual(prob, stored_solution(sic, "fb_newton", k, prob.q.size))
+                tol = 1e-10 * (1 + np.max(np.abs(prob.q)))
+                check(s["/results/fb_newton/status"][k] == STATUS_SOLVED and r <= tol,
+                      f"{f}: fb_newton residual from its z {r:.2e} <= 1e-10 (1 + |q|); solved by {' '.join(solved_by)}")
         # mixed good and bad input: non-zero exit, results kept
         pr = run(exe, "-family", "file", "-file", os.path.join(siconos, "lcp_deudeu.dat") + "," +
                  os.path.join(testdir, "lcp_nonsquare.dat"), "-solvers", "lemke,bpp", "-output", p("mixed.h5"),

@@ -26,7 +26,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lcp_judge import brute_force, natural_residual, read_problem  # noqa: E402
+from lcp_judge import brute_force, natural_residual, read_problem, stored_solution  # noqa: E402
 
 SOLVERS = "lemke,keller,cottle_dantzig,murty,bpp,fb_newton,smoothed_newton,pgs,pgs_block"
 REL_TOL = 1e-10
@@ -80,7 +80,7 @@ def published(path, p):
     return None
 
 
-def judge(path, k, out, solvers):
+def judge(path, k, f, solvers):
     p = read_problem(path)
     qn = 1 + np.max(np.abs(p.q))
     unique = brute_force(p) if p.q.size <= 8 else []
@@ -88,26 +88,24 @@ def judge(path, k, out, solvers):
     pub = published(path, p)
     name = os.path.basename(path)
     solved_by, worst = [], {"agree": 0.0, "unique": 0.0}
-    with h5py.File(out, "r") as f:
-        for s in solvers:
-            g = f[f"/results/{s}"]
-            if int(g["status"][k]) != 0:
-                continue
-            L = int(g["z"].attrs["row_length"])
-            z = g["z"][k * L: k * L + p.q.size]
-            r = natural_residual(p, z)
-            reported = float(g["residual"][k])
-            solved_by.append(s)
-            check(r <= REL_TOL * qn, f"{name} {s}: residual from z {r:.2e} <= rel_tol (1 + |q|) = {REL_TOL * qn:.2e}")
-            worst["agree"] = max(worst["agree"], abs(r - reported) / qn)
-            check(abs(r - reported) <= 1e-13 * qn, f"{name} {s}: lcpbench's residual {reported:.2e} = {r:.2e}")
-            if unique is not None:
-                e = np.max(np.abs(z - unique)) / (1 + np.max(np.abs(unique)))
-                worst["unique"] = max(worst["unique"], e)
-                check(e <= 1e-8, f"{name} {s}: z is the unique solution (relative difference {e:.1e})")
-            if pub:
-                what, err, tol = pub
-                check(err(z) <= tol, f"{name} {s}: z matches {what} (difference {err(z):.1e} <= {tol:.1e})")
+    for s in solvers:
+        g = f[f"/results/{s}"]
+        if int(g["status"][k]) != 0:
+            continue
+        z = stored_solution(f, s, k, p.q.size)
+        r = natural_residual(p, z)
+        reported = float(g["residual"][k])
+        solved_by.append(s)
+        check(r <= REL_TOL * qn, f"{name} {s}: residual from z {r:.2e} <= rel_tol (1 + |q|) = {REL_TOL * qn:.2e}")
+        worst["agree"] = max(worst["agree"], abs(r - reported) / qn)
+        check(abs(r - reported) <= 1e-13 * qn, f"{name} {s}: lcpbench's residual {reported:.2e} = {r:.2e}")
+        if unique is not None:
+            e = np.max(np.abs(z - unique)) / (1 + np.max(np.abs(unique)))
+            worst["unique"] = max(worst["unique"], e)
+            check(e <= 1e-8, f"{name} {s}: z is the unique solution (relative difference {e:.1e})")
+        if pub:
+            what, err, tol = pub
+            check(err(z) <= tol, f"{name} {s}: z matches {what} (difference {err(z):.1e} <= {tol:.1e})")
     check(bool(solved_by), f"{name}: solved by {' '.join(solved_by) or 'none'}")
     return worst
 
@@ -127,9 +125,10 @@ def main(exe, siconos, inputs):
             print(p.stdout[-3000:])
             return 1
         worst = {"agree": 0.0, "unique": 0.0}
-        for k, path in enumerate(files):
-            w = judge(path, k, out, SOLVERS.split(","))
-            worst = {key: max(worst[key], w[key]) for key in worst}
+        with h5py.File(out, "r") as f:
+            for k, path in enumerate(files):
+                w = judge(path, k, f, SOLVERS.split(","))
+                worst = {key: max(worst[key], w[key]) for key in worst}
     print(f"largest |residual from z - lcpbench's| / (1 + |q|): {worst['agree']:.1e}; largest relative distance "
           f"to the unique solution: {worst['unique']:.1e}")
     print(f"{len(failures)} failure(s)")
