@@ -50,6 +50,12 @@ find_library(YAML_LIBRARY yaml)
 suite_require(YAML_INCLUDE_DIR "libyaml headers (yaml.h)" "libyaml-dev")
 suite_require(YAML_LIBRARY "libyaml library" "libyaml-dev")
 
+# muParser: the Euler app's formula initial states and boundary states (lib/core/expression).
+find_path(MUPARSER_INCLUDE_DIR muParser.h)
+find_library(MUPARSER_LIBRARY muparser)
+suite_require(MUPARSER_INCLUDE_DIR "muParser headers (muParser.h)" "libmuparser-dev")
+suite_require(MUPARSER_LIBRARY "muParser library" "libmuparser-dev")
+
 find_path(METIS_INCLUDE_DIR metis.h)
 find_library(METIS_LIBRARY metis)
 suite_require(METIS_INCLUDE_DIR "METIS headers" "libmetis-dev")

@@ -71,7 +71,7 @@ PetscErrorCode EulerRun::computeLineErrors() {
     }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, ctx_.comm()));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, maxes, 3, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
-  const double L = line_.xmax - line_.xmin;
+  const double L = problem_.hi[0] - problem_.lo[0];
   const char* vn[3] = {"rho", "u", "p"};
   for (int c = 0; c < 3; ++c) {
     err_.l1[c] = sums[c] / L;

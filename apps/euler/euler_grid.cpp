@@ -1,6 +1,6 @@
 // The Euler run's grid and initial state (see euler_run.hpp): the DMDA (1D line, or 2D/3D with a star stencil
 // and the process grid from -da_processors_*), the line communicators, the direction sweep, the initial
-// conserved state, the totals of the conservation report and the PETSc TS.
+// conserved state (euler_initial_state.cpp), the totals of the conservation report (fluid cells) and the PETSc TS.
 #include "euler_run.hpp"
 
 #include "euler/schemes.hpp"
@@ -141,6 +141,7 @@ PetscErrorCode EulerRun::setupSweep() {
   lo.gather_lines = opt_.line_solve == "gather";
   lo.transpose_lines = opt_.line_solve == "transpose";
   lo.batch_bytes = (size_t)opt_.line_batch_mb << 20;
+  lo.segmented = problem_.hasSolid();
   if (dim() == 1) sweep3_ = std::make_unique<DirectionSweep<3>>(scheme_, lo);
   if (dim() == 2) sweep4_ = std::make_unique<DirectionSweep<4>>(scheme_, lo);
   if (dim() == 3) sweep5_ = std::make_unique<DirectionSweep<5>>(scheme_, lo);
@@ -168,24 +169,6 @@ void EulerRun::blockDims(suite::Dims* dims, suite::Dims* start, suite::Dims* cou
   }
 }
 
-PetscErrorCode EulerRun::setInitialState() {
-  PetscScalar* u;
-  PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(da_, &U_));
-  PetscCall(VecGetArray(U_, &u));
-  size_t idx = 0;
-  for (PetscInt k = s_[2]; k < s_[2] + m_[2]; ++k)
-    for (PetscInt j = s_[1]; j < s_[1] + m_[1]; ++j)
-      for (PetscInt i = s_[0]; i < s_[0] + m_[0]; ++i, idx += nv()) {
-        double x[3];
-        cellCentre(i, j, k, x);
-        conservative(problem_.initial(x), dim(), problem_.gamma, u + idx);
-      }
-  PetscCall(VecRestoreArray(U_, &u));
-  PetscCall(totals(U_, &totals0_));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode EulerRun::totals(Vec U, std::vector<double>* sum) const {
   const PetscScalar* a;
   PetscFunctionBeginUser;
@@ -193,7 +176,8 @@ PetscErrorCode EulerRun::totals(Vec U, std::vector<double>* sum) const {
   const double vol = dx_[0] * dx_[1] * (dim() == 3 ? dx_[2] : 1.0); // 1D: dx_[1] = 1, so vol = dx
   PetscCall(VecGetArrayRead(U, &a));
   for (PetscInt c = 0; c < localCells(); ++c)
-    for (int v = 0; v < nv(); ++v) (*sum)[v] += a[c * nv() + v] * vol;
+    if (!solidCell(c))
+      for (int v = 0; v < nv(); ++v) (*sum)[v] += a[c * nv() + v] * vol;
   PetscCall(VecRestoreArrayRead(U, &a));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum->data(), nv(), MPI_DOUBLE, MPI_SUM, ctx_.comm()));
   PetscFunctionReturn(0);
@@ -205,6 +189,7 @@ PetscErrorCode EulerRun::setup() {
   PetscCall(setupGrid());
   PetscCall(setupLineComms());
   PetscCall(setupSweep());
+  PetscCall(setupSolid());
   PetscCall(setInitialState());
   PetscCall(maxWaveSpeeds(U_, 0.0, amax));
   const StepperSettings s{opt_.time, opt_.t_final, opt_.dt > 0 ? opt_.dt : cflTimeStep(amax)};

@@ -86,14 +86,48 @@ PetscErrorCode checkGrid(const suite::RunContext& ctx, const Options& o, const P
       comm, 130.0 * o.nv() * cells / ctx.size() + 5e7 + 1.2 * 1048576.0 * (double)o.line_batch_mb, what));
   PetscFunctionReturn(0);
 }
+// `formula` and `file`: the options a problem without a scale of its own needs; a file's grid unchanged; an
+// obstacle with the features that do not know it refused.
+PetscErrorCode checkUserProblem(MPI_Comm comm, const Options& o, const ProblemND& pr) {
+  const char* names[3] = {"-nx", "-ny", "-nz"};
+  const char axis[3] = {'x', 'y', 'z'};
+  PetscFunctionBeginUser;
+  if (pr.user_defined) {
+    PetscCheck(o.t_final_set, comm, PETSC_ERR_ARG_WRONG, "-problem %s needs -t_final (the end time)",
+               o.problem.c_str());
+    for (int d = 0; d < o.dim; ++d) {
+      PetscBool given = PETSC_FALSE;
+      PetscCall(PetscOptionsHasName(nullptr, nullptr, names[d], &given));
+      PetscCheck(given || pr.default_n[d] > 0, comm, PETSC_ERR_ARG_WRONG,
+                 "-problem formula needs %s (the cells along %c)", names[d], axis[d]);
+      PetscCheck(pr.initial_file.empty() || o.n[d] == pr.default_n[d], comm, PETSC_ERR_ARG_WRONG,
+                 "%s %" PetscInt_FMT " differs from the %" PetscInt_FMT " cells along %c of -initial_state %s",
+                 names[d], o.n[d], pr.default_n[d], axis[d], pr.initial_file.c_str());
+    }
+  }
+  if (pr.hasSolid()) {
+    PetscCheck(o.filter_alpha >= 0.5, comm, PETSC_ERR_ARG_INCOMP,
+               "-filter_alpha with a solid obstacle: the compact filter's lines do not stop at the solid");
+    PetscCheck(!o.error, comm, PETSC_ERR_ARG_INCOMP,
+               "-error with a solid obstacle: the problem's exact solution does not know the obstacle");
+    PetscCheck(o.line_solve != "gather", comm, PETSC_ERR_ARG_INCOMP,
+               "-line_solve gather with a solid obstacle: the fluid segments of a line are solved whole");
+    PetscCheck(!o.spectrum, comm, PETSC_ERR_ARG_INCOMP,
+               "-spectrum with a solid obstacle: the spectrum's FFT runs over the solid cells too");
+  }
+  PetscFunctionReturn(0);
+}
 } // namespace
 
 PetscErrorCode validateOptions(const suite::RunContext& ctx, const Options& o, const Problem& line,
                                const ProblemND& pr) {
   MPI_Comm comm = ctx.comm();
   PetscFunctionBeginUser;
+  PetscCall(checkUserProblem(comm, o, pr));
   PetscCall(suite::checkIntOptionRange(comm, "-spacetime_every", 0));
   if (!o.output.empty()) PetscCall(suite::checkOutputWritable(comm, o.output, "output"));
+  PetscCheck(!o.output_initial || !o.output.empty(), comm, PETSC_ERR_ARG_WRONG,
+             "-output_initial writes into -output: give -output FILE.h5");
   PetscCall(o.dim == 1 ? checkLine(ctx, o, line) : checkGrid(ctx, o, pr));
   PetscCheck(o.cfl > 0.0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -cfl %g: must be > 0", o.cfl);
   // The positivity limiter's bound (lib/euler/direction_sweep.hpp): a CFL number above it is refused, not reduced.

@@ -5,7 +5,9 @@
 #include "core/named_choice.hpp"
 #include "core/option_value.hpp"
 #include "euler/line_options.hpp"
+#include "euler/problem_overrides.hpp"
 #include "euler/schemes.hpp"
+#include "euler/solid_body.hpp"
 #include "euler_stepper.hpp"
 
 namespace euler_app {
@@ -19,6 +21,7 @@ std::vector<suite::Choice> problemChoices(int dim) {
     for (const ProblemDoc& p : problemDocsND()) list.push_back({p.name, p.description});
   for (const ProblemDoc& p : problemDocs())
     list.push_back({p.name, dim > 1 ? std::string("planar along -axis: ") + p.description : p.description});
+  for (const ProblemDoc& p : userProblemDocs()) list.push_back({p.name, p.description});
   return list;
 }
 
@@ -81,7 +84,12 @@ PetscErrorCode readChoices(MPI_Comm comm, Options* o) {
 // The problem's options, and the run's defaults from it.
 PetscErrorCode createProblemOf(MPI_Comm comm, Options* o, Problem* line, ProblemND* pr) {
   PetscFunctionBeginUser;
-  if (o->dim == 1) {
+  if (isUserProblem(o->problem)) { // any dim: a ProblemND directly (1D: the line keeps only the name)
+    PetscCall(createUserProblem(comm, o->problem, o->dim, pr));
+    line->name = o->problem;
+    for (int d = 0; d < 3; ++d) o->n[d] = pr->default_n[d];
+    o->t_final = pr->t_final;
+  } else if (o->dim == 1) {
     PetscCall(createProblem(comm, o->problem, line));
     o->n[0] = line->default_nx;
     o->t_final = line->t_final;
@@ -123,9 +131,9 @@ PetscErrorCode readGrid(PetscOptionItems* PetscOptionsObject, Options* o, Proble
     PetscCall(suite::optionsInt(PetscOptionsObject, "-ny", "Cells along y", "", o->n[1], &o->n[1], nullptr));
   if (o->dim == 3)
     PetscCall(suite::optionsInt(PetscOptionsObject, "-nz", "Cells along z", "", o->n[2], &o->n[2], nullptr));
-  PetscCall(
-      suite::optionsReal(PetscOptionsObject, "-t_final", "End time", "", o->t_final, &o->t_final, nullptr));
-  if (o->dim == 1) PetscCall(readLineDomain(PetscOptionsObject, line));
+  PetscCall(suite::optionsReal(PetscOptionsObject, "-t_final", "End time", "", o->t_final, &o->t_final,
+                               &o->t_final_set));
+  if (o->dim == 1 && !isUserProblem(o->problem)) PetscCall(readLineDomain(PetscOptionsObject, line));
   PetscFunctionReturn(0);
 }
 
@@ -200,6 +208,10 @@ PetscErrorCode readOutput(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscCall(suite::optionsInt(PetscOptionsObject, "-snapshot_every",
                               "Write a snapshot every N steps (0: none)", "", o->snapshot_every,
                               &o->snapshot_every, nullptr));
+  PetscCall(suite::optionsBool(PetscOptionsObject, "-output_initial",
+                               "Write the initial conservative state to /initial of -output (rho, mom_x.., E: "
+                               "an -initial_state input that reproduces the run bitwise)",
+                               "", o->output_initial, &o->output_initial, nullptr));
   if (o->dim == 1)
     PetscCall(suite::optionsInt(PetscOptionsObject, "-spacetime_every",
                                 "Record density every N steps for the x-t image (0: none)", "",
@@ -234,7 +246,12 @@ PetscErrorCode readOptions(const suite::RunContext& ctx, Options* o, Problem* li
   PetscCall(readOutput(PetscOptionsObject, o));
   PetscOptionsEnd();
   PetscCall(ckpt->setFromOptions(comm, "euler"));
-  if (o->dim == 1) lineProblemAsGrid(*line, pr);
+  const bool registered_line = o->dim == 1 && !isUserProblem(o->problem);
+  if (registered_line) lineProblemAsGrid(*line, pr);
+  // The user's geometry on any problem: domain (a registered line read -xmin -xmax itself), faces, obstacle.
+  PetscCall(readDomainOptions(comm, registered_line ? 1 : 0, pr));
+  PetscCall(readFaceOptions(comm, pr));
+  PetscCall(readSolidOptions(comm, pr));
   PetscCall(validateOptions(ctx, *o, *line, *pr));
   PetscFunctionReturn(0);
 }

@@ -23,6 +23,7 @@ struct Options {
            line_batch_mb = 256, max_retries = 6;
   double t_final = 0.0, cfl = 0.4, dt = 0.0, shock_threshold = 0.02, shock_ppw = 8.0, filter_alpha = 0.5,
          filter_time = 0.0;
+  PetscBool t_final_set = PETSC_FALSE, output_initial = PETSC_FALSE;
   PetscBool error = PETSC_FALSE, characteristic = PETSC_TRUE, local_lf = PETSC_TRUE, positivity = PETSC_TRUE,
             spectrum = PETSC_FALSE;
   bool implicit = false;

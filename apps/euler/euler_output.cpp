@@ -47,6 +47,10 @@ PetscErrorCode EulerRun::writeFields(const std::string& group, Vec U, double t) 
     PetscCall(shockFlags(U, t, &fields[0]));
     PetscCall(out_.writeDistributed(group + "/shock", fields[0].data(), dims, start, count, ""));
   }
+  if (!solid_.empty()) {
+    for (PetscInt c = 0; c < localCells(); ++c) fields[0][c] = solid_[c];
+    PetscCall(out_.writeDistributed(group + "/mask", fields[0].data(), dims, start, count, ""));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -80,6 +84,17 @@ PetscErrorCode EulerRun::writeRunAttributes() {
   PetscCall(out_.writeAttribute("/", "steps", (long long)step_));
   PetscCall(out_.writeAttribute("/", "status", status_));
   PetscCall(out_.writeAttribute("/", "gamma", problem_.gamma));
+  // The domain and the faces (every dim: an -initial_state input carries its extents; 1D also bc_left/right)
+  for (int d = 0; d < dim(); ++d) {
+    const std::string axis(1, "xyz"[d]);
+    if (dim() > 1) { // 1D: writeLineResults
+      PetscCall(out_.writeAttribute("/", axis + "min", problem_.lo[d]));
+      PetscCall(out_.writeAttribute("/", axis + "max", problem_.hi[d]));
+    }
+    PetscCall(out_.writeAttribute("/", "bc_" + axis + "_lo", faceLabel(problem_, d, 0)));
+    PetscCall(out_.writeAttribute("/", "bc_" + axis + "_hi", faceLabel(problem_, d, 1)));
+  }
+  if (problem_.hasSolid()) PetscCall(out_.writeAttribute("/", "solid_cells", solid_cells_));
   PetscCall(out_.writeAttribute("/", "cfl", opt_.cfl));
   PetscCall(out_.writeAttribute("/", "characteristic", opt_.characteristic ? 1 : 0));
   PetscCall(out_.writeAttribute("/", "positivity_limiter", opt_.positivity ? 1 : 0));
@@ -101,10 +116,15 @@ PetscErrorCode EulerRun::writeRunAttributes() {
 PetscErrorCode EulerRun::writeLineResults() {
   std::vector<double> tot;
   PetscFunctionBeginUser;
-  PetscCall(out_.writeAttribute("/", "xmin", line_.xmin));
-  PetscCall(out_.writeAttribute("/", "xmax", line_.xmax));
-  PetscCall(out_.writeAttribute("/", "bc_left", bcName(line_.bc_left)));
-  PetscCall(out_.writeAttribute("/", "bc_right", bcName(line_.bc_right)));
+  // bc_left / bc_right in the 1D problems' names (reflecting for a wall or symmetry face, inflow for a custom one)
+  auto lineName = [&](int side) {
+    const std::string f = faceLabel(problem_, 0, side);
+    return f == "wall" || f == "symmetry" ? std::string("reflecting") : f == "custom" ? std::string("inflow") : f;
+  };
+  PetscCall(out_.writeAttribute("/", "xmin", problem_.lo[0]));
+  PetscCall(out_.writeAttribute("/", "xmax", problem_.hi[0]));
+  PetscCall(out_.writeAttribute("/", "bc_left", lineName(0)));
+  PetscCall(out_.writeAttribute("/", "bc_right", lineName(1)));
   PetscCall(totals(U_, &tot));
   const char* cn[3] = {"mass", "momentum", "energy"};
   for (int c = 0; c < 3; ++c) {
@@ -158,6 +178,7 @@ PetscErrorCode EulerRun::writeXdmf() {
     for (int f = 0; f < 5; ++f)
       if (f < 1 + dim() || f == 4) s.attributes.push_back({kFieldNames[f], g + "/" + kFieldNames[f], true});
     if (hasShockFlags()) s.attributes.push_back({"shock", g + "/shock", true});
+    if (!solid_.empty()) s.attributes.push_back({"mask", g + "/mask", true});
     return s;
   };
   for (const auto& s : snapshots_) {

@@ -4,6 +4,7 @@
 #include "euler_run.hpp"
 
 #include "core/error_handler.hpp"
+#include "euler/line_segments.hpp"
 #include "euler_state.hpp"
 
 #include <algorithm>
@@ -83,6 +84,7 @@ void EulerRun::gatherLines(int d, double t, const double* ul, std::vector<std::a
         idx[d] = i;
         const double* src = local(idx);
         for (int c = 0; c < NV; ++c) ql[m][c] = src[comp[c]];
+        if (!solid_local_.empty() && solid_local_[(src - ul) / NV]) ql[m][0] = kSolidSentinel;
       }
       if (!periodic_[d]) fillBoundaryGhosts<NV>(d, t, ja, jb, ql);
     }
@@ -139,6 +141,7 @@ template <int NV> bool EulerRun::stageSpeeds(const double* ul, double amax[3], d
     for (PetscInt j = s_[1]; j < s_[1] + m_[1]; ++j)
       for (PetscInt i = s_[0]; i < s_[0] + m_[0]; ++i) {
         const PetscInt off = ((k - gs_[2]) * gm_[1] + (j - gs_[1])) * gm_[0] + (i - gs_[0]);
+        if (!solid_local_.empty() && solid_local_[off]) continue;
         const double* q = ul + (size_t)off * NV;
         double s[3];
         waveSpeeds(q, dim(), problem_.gamma, s);
@@ -202,6 +205,7 @@ template <int NV> PetscErrorCode EulerRun::rhsImpl(double t, const double* ul, d
     if (dim() > 1) PetscCall(PetscLogStagePop());
   }
   addGravity(ul, f);
+  zeroSolidCells(f);
   PetscFunctionReturn(0);
 }
 

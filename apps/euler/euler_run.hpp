@@ -76,7 +76,15 @@ private:
   PetscErrorCode setupGrid();
   PetscErrorCode setupLineComms();
   PetscErrorCode setupSweep();
-  PetscErrorCode setInitialState();
+  PetscErrorCode setInitialState(); // euler_initial_state.cpp
+  PetscErrorCode initialFromFile(double* u);
+  PetscErrorCode initialFromProblem(double* u);
+  PetscErrorCode writeInitial(); // -output_initial: /initial (rho, mom_x.., E)
+  // solid obstacle (euler_solid.cpp): solid_ per owned cell (x fastest), solid_local_ per cell of the ghosted
+  // block; both empty without an obstacle
+  PetscErrorCode setupSolid();
+  bool solidCell(PetscInt c) const { return !solid_.empty() && solid_[c]; }
+  void zeroSolidCells(double* f) const;
   void cellCentre(PetscInt i, PetscInt j, PetscInt k, double x[3]) const;
   void blockDims(suite::Dims* dims, suite::Dims* start, suite::Dims* count) const; // (z,) (y,) x order
   PetscErrorCode totals(Vec U, std::vector<double>* sum) const;
@@ -162,6 +170,8 @@ private:
   long long unattainable0_ = 0;
   PetscInt retry_step_ = -1, retry_attempt_ = 0;
   std::vector<double> totals0_;
+  std::vector<char> solid_, solid_local_;
+  long long solid_cells_ = 0; // over all ranks
   suite::linalg::SubstructuredBlockLines filter_lines_; // -filter_alpha's line solves
   std::vector<double> filter_abc_, filter_rhs_, filter_x_;
   Vec Ufilter_ = nullptr; // -filter_time: the filtered state blended in

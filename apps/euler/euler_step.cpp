@@ -64,7 +64,8 @@ PetscErrorCode EulerRun::maxWaveSpeeds(Vec U, double t, double amax[3]) const {
   double a[3] = {0, 0, 0};
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(U, &u));
-  for (PetscInt c = 0; c < localCells(); ++c) takeSpeeds(u + c * nv(), dim(), problem_.gamma, a);
+  for (PetscInt c = 0; c < localCells(); ++c)
+    if (!solidCell(c)) takeSpeeds(u + c * nv(), dim(), problem_.gamma, a);
   customGhostSpeeds(u, t, a);
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, a, 3, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
@@ -135,6 +136,7 @@ PetscErrorCode EulerRun::start(PetscInt step, double t, bool restarted) {
   if (restarted && opt_.time == "bdf2")
     PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: BDF2 restarts with a BDF1 step: not bitwise"));
   PetscCall(checkState(U_, step, t));
+  if (opt_.output_initial && !restarted) PetscCall(writeInitial());
   // The x-t image starts with the state the run starts from (recorded at t = 0 as before the time loop).
   if (opt_.spacetime_every > 0) PetscCall(recordSpacetime(U_, 0.0));
   if (dim() == 1)

@@ -7,6 +7,7 @@
 #include "euler/crweno5.hpp"
 #include "euler/enopade6.hpp"
 #include "euler/line_rows.hpp"
+#include "euler/line_segments.hpp"
 #include "euler/rf_char.hpp"
 #include "euler/weno5.hpp"
 
@@ -201,6 +202,9 @@ void DirectionSweep<NV>::shockFaces(const V* q, int nlines, long long n, long lo
       markShockRows(q + (size_t)l * ncell, ncell, n, xs, nface, periodic, sl);
     else
       std::fill(sl, sl + nface, 0);
+    if (opt_.segmented) // rows reaching into a solid obstacle: its wall rows are closures, never shock rows
+      for (int k = 0; k < nface; ++k)
+        for (int m = 0; m < 6; ++m) sl[k] = q[(size_t)l * ncell + k + m][0] == kSolidSentinel ? 0 : sl[k];
   }
 }
 
@@ -330,7 +334,8 @@ void DirectionSweep<NV>::faceFluxes(MPI_Comm comm, const V* q, int nlines, long 
   int size = 1;
   MPI_Comm_size(comm, &size);
   // nlines is the same on every rank of comm, so all take the same branch.
-  if (!scheme_->compact || opt_.gather_lines || !opt_.transpose_lines || size == 1 || nlines < size)
+  const bool in_place = !scheme_->compact || opt_.gather_lines || !opt_.transpose_lines || nlines < size;
+  if (size == 1 || (in_place && !opt_.segmented))
     linesFaceFluxes(comm, q, nlines, n, xs, xm, periodic, alpha, lambda, h);
   else
     transposedFaceFluxes(comm, size, q, nlines, n, xs, xm, periodic, alpha, lambda, h);
@@ -381,6 +386,10 @@ template <int NV>
 void DirectionSweep<NV>::linesFaceFluxes(MPI_Comm comm, const V* q, int nlines, long long n, long long xs,
                                          int xm, bool periodic, double alpha, double lambda, V* h) {
   const int ncell = xm + 2 * kGhost, nface = xm + 1;
+  if (opt_.segmented && !in_segment_) { // whole lines here (one rank, or after the transpose)
+    segmentedFaceFluxes(q, nlines, n, periodic, alpha, lambda, h);
+    return;
+  }
   if (!scheme_->compact) {
     for (int l = 0; l < nlines; ++l)
       lineExplicit(q + (size_t)l * ncell, n, xs, xm, periodic, alpha, h + (size_t)l * nface);

@@ -115,6 +115,10 @@ private:
                        bool periodic, double alpha, double lambda, V* h);
   void transposedFaceFluxes(MPI_Comm comm, int size, const V* q, int nlines, long long n, long long xs,
                             int xm, bool periodic, double alpha, double lambda, V* h);
+  // LineOptions::segmented: whole lines (comm of one rank) cut into their fluid segments (line_segments.hpp;
+  // direction_sweep_segments.cpp).
+  void segmentedFaceFluxes(const V* q, int nlines, long long n, bool periodic, double alpha, double lambda,
+                           V* h);
   void lineExplicit(const V* q, long long n, long long xs, int xm, bool periodic, double alpha, V* h);
   bool lineNeedsBlocks(const V* q, int ncell, long long n, long long xs, int nown, bool periodic,
                        char* shock);
@@ -168,6 +172,9 @@ private:
   std::vector<double> tq_;                // whole lines received by this rank (LineTranspose::gather)
   std::vector<V> th_;                     // their face fluxes
   Weno5Line<NV> weno5_;                   // lineExplicit of schemes with WENO5 rows everywhere
+  bool in_segment_ = false;               // segmentedFaceFluxes' own calls of linesFaceFluxes
+  std::vector<V> seg_q_, seg_h_;          // its lines without solid cells, or one segment, and their faces
+  std::vector<int> clean_;                // those lines' indices
 };
 
 extern template class DirectionSweep<3>;

@@ -33,6 +33,10 @@ struct LineOptions {
   // of the split lines (SubstructuredBlockLines).
   bool transpose_lines = true;
   size_t batch_bytes = size_t(256) << 20; // memory of one batch of block lines (DirectionSweep)
+  // A solid obstacle cuts the lines (line_segments.hpp): cells with density kSolidSentinel are solid; every line
+  // is moved whole to one rank (the pencil transpose, also for explicit schemes and for fewer lines than ranks)
+  // and each of its fluid segments is solved as a bounded line.
+  bool segmented = false;
 };
 
 struct LineStats {

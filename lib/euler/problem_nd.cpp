@@ -72,6 +72,31 @@ PetscErrorCode createProblemND(MPI_Comm comm, const std::string& name, int dim, 
           name.c_str(), problemNamesND().c_str());
 }
 
+bool isUserProblem(const std::string& name) { return name == "formula" || name == "file"; }
+
+std::vector<ProblemDoc> userProblemDocs() {
+  return {{"formula", "Your initial state as formulas of x, y, z (-ic_rho -ic_u -ic_v -ic_w -ic_p -ic_param)"},
+          {"file", "Your initial state from an HDF5 file on the run's grid (-initial_state FILE.h5)"}};
+}
+
+PetscErrorCode createUserProblem(MPI_Comm comm, const std::string& name, int dim, ProblemND* pr) {
+  PetscFunctionBeginUser;
+  *pr = ProblemND{};
+  pr->name = name;
+  pr->dim = dim;
+  pr->user_defined = true;
+  pr->t_final = NAN;
+  for (int d = 0; d < 3; ++d) {
+    pr->default_n[d] = d < dim ? 0 : 1;
+    pr->bc[d][0] = pr->bc[d][1] = d < dim ? BcN::Outflow : BcN::Periodic;
+  }
+  if (name == "formula")
+    PetscCall(createFormulaProblem(comm, dim, pr));
+  else
+    PetscCall(createFileProblem(comm, dim, pr));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode checkStateN(MPI_Comm comm, const PrimN& w, const char* rho_option, const char* p_option) {
   PetscFunctionBeginUser;
   PetscCheck(w.rho > 0.0 && std::isfinite(w.rho), comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -81,6 +106,21 @@ PetscErrorCode checkStateN(MPI_Comm comm, const PrimN& w, const char* rho_option
   for (int d = 0; d < 3; ++d)
     PetscCheck(std::isfinite(w.u[d]), comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid initial velocity %g", w.u[d]);
   PetscFunctionReturn(0);
+}
+
+std::string faceLabel(const ProblemND& pr, int dir, int side) {
+  if (!pr.bc_label[dir][side].empty()) return pr.bc_label[dir][side];
+  switch (pr.bc[dir][side]) {
+  case BcN::Periodic:
+    return "periodic";
+  case BcN::Outflow:
+    return "outflow";
+  case BcN::Reflecting:
+    return "wall";
+  case BcN::Custom:
+    return "custom";
+  }
+  return "?";
 }
 
 void extrudeAlongZ(int dim, ProblemND* pr) {

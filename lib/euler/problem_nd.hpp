@@ -43,7 +43,27 @@ struct ProblemND {
   // Defaults carried over from a planar 1D problem (pulse: 2000 fixed steps of dt = 1.25e-4); -1 / 0: none.
   PetscInt default_max_steps = -1;
   double default_dt = 0.0;
+  // A problem of the user's (`formula`, `file`): no end time (t_final NaN) and, for `formula`, no grid size
+  // (default_n 0) of its own, so -t_final and -nx ... are required.
+  bool user_defined = false;
+  // `formula -ic_average`: the initial state is the cell average of conservative(initial) by this many Gauss
+  // points per direction (0: point values at the cell centres).
+  int initial_quadrature = 0;
+  // `file`: the initial state is read from this HDF5 file's group (initial_state_file.hpp); `initial` is empty.
+  std::string initial_file, initial_group;
+  bool fixed_extent[3] = {false, false, false}; // `file`: lo/hi from the file's attributes (options may not differ)
+  // Face names as the user gave them (-bc_x_lo wall, symmetry, inflow, ...; bcLabel() when empty), for the output.
+  std::string bc_label[3][2];
+  // Solid obstacle (solid_body.hpp): cells whose centre has solid(x) > 0 are solid; or, with solid_mask_file, the
+  // cells whose mask value in that file is non-zero. Empty and "": no obstacle.
+  std::function<double(const double* x)> solid;
+  std::string solid_mask_file, solid_mask_group = "/";
+  bool hasSolid() const { return static_cast<bool>(solid) || !solid_mask_file.empty(); }
 };
+
+// The name of face (dir, side) for output and messages: bc_label when set, else periodic / outflow / wall /
+// custom from bc.
+std::string faceLabel(const ProblemND& problem, int dir, int side);
 
 // Reads the options of problem `name` (collective) for a `dim`-dimensional grid. `axis` (0, 1, 2) places a 1D
 // problem of problem.hpp along that axis; ignored by genuinely multi-dimensional problems. Unknown name: one
@@ -76,6 +96,14 @@ BcN gridBc(Bc bc);
 
 PetscErrorCode createPlanarProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                      ProblemND* problem);
+
+// The user's own problems, for -dim 1|2|3: `formula` (problem_formula.cpp: -ic_rho ... as formulas of x, y, z)
+// and `file` (problem_file.cpp: -initial_state FILE.h5). They set name and dim themselves.
+bool isUserProblem(const std::string& name);
+std::vector<ProblemDoc> userProblemDocs();
+PetscErrorCode createUserProblem(MPI_Comm comm, const std::string& name, int dim, ProblemND* problem);
+PetscErrorCode createFormulaProblem(MPI_Comm comm, int dim, ProblemND* problem);
+PetscErrorCode createFileProblem(MPI_Comm comm, int dim, ProblemND* problem);
 
 // Shared check: a physical state rho > 0, p > 0, finite velocity (options named, e.g. "-rho_ne", "-p_ne").
 PetscErrorCode checkStateN(MPI_Comm comm, const PrimN& w, const char* rho_option, const char* p_option);

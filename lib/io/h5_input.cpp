@@ -162,6 +162,28 @@ PetscErrorCode H5Input::readAttribute(const std::string& object, const std::stri
   return readNumericAttr(comm_, (hid_t)file_, path_, object, name, value);
 }
 
+PetscErrorCode H5Input::groupMembers(const std::string& group, std::vector<std::string>* names) const {
+  PetscFunctionBeginUser;
+  names->clear();
+  hid_t g = h5::openObject((hid_t)file_, group, false);
+  const bool is_group = g >= 0 && H5Iget_type(g) == H5I_GROUP;
+  if (is_group) {
+    H5G_info_t gi;
+    if (H5Gget_info(g, &gi) >= 0)
+      for (hsize_t i = 0; i < gi.nlinks; ++i) {
+        const ssize_t len = H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+        if (len < 0) continue;
+        std::string name((size_t)len + 1, '\0');
+        H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+        name.resize((size_t)len);
+        names->push_back(name);
+      }
+  }
+  if (g >= 0) H5Oclose(g);
+  PetscCheck(is_group, comm_, PETSC_ERR_FILE_UNEXPECTED, "%s: no group %s", path_.c_str(), group.c_str());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode H5Input::datasetDims(const std::string& dataset, Dims* dims) const {
   PetscFunctionBeginUser;
   hid_t d = h5::exists((hid_t)file_, dataset) ? H5Dopen2((hid_t)file_, dataset.c_str(), H5P_DEFAULT) : -1;

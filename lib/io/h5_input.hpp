@@ -28,6 +28,9 @@ public:
   PetscErrorCode readAttribute(const std::string& object, const std::string& name,
                                std::vector<double>* value) const;
   PetscErrorCode datasetDims(const std::string& dataset, Dims* dims) const;
+  // The names of the links in group `group` (datasets and groups), in HDF5's name order; an error naming the
+  // file when the group does not exist.
+  PetscErrorCode groupMembers(const std::string& group, std::vector<std::string>* names) const;
   // Collective: errors when a dataset claims more elements than its stored bytes can hold (a corrupted or
   // hostile header), before anything that size is allocated. Unfiltered data must be stored in full (or be
   // under 1 MiB); filtered (compressed) data may expand at most 1024 times.
