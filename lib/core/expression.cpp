@@ -49,6 +49,10 @@ PetscErrorCode Expression::create(MPI_Comm comm, const std::string& option, cons
       im.vars[v] = 0.0;
       im.parser.DefineVar(vars[v], &im.vars[v]);
     }
+    // Debian's muParser 2.3.3 defines _pi as 3.141592653589 (13 digits: sin(_pi x) off by 1.5e-13) and _e
+    // likewise: both redefined to the double nearest the constant.
+    im.parser.DefineConst("_pi", M_PI);
+    im.parser.DefineConst("_e", M_E);
     for (const auto& p : params) im.parser.DefineConst(p.first, p.second);
     im.parser.SetExpr(text);
     (void)im.parser.Eval(); // parses now: a syntax error is reported here, not at the first cell

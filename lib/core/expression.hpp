@@ -2,7 +2,7 @@
 // and evaluated by muParser (Debian's libmuparser-dev; https://beltoforion.de/en/muparser), not by a parser
 // of the suite's own. The syntax is muParser's: + - * / ^, comparisons < <= > >= == !=, && ||, the ternary
 // c ? a : b (piecewise states), sin cos tan asin acos atan sinh cosh tanh exp ln log10 sqrt abs sign rint
-// min max sum avg, the constants _pi and _e. Variables are named by the caller (x, y, z, t); named constants
+// min max sum avg, the constants _pi and _e (to double precision). Variables are named by the caller (x, y, z, t); named constants
 // come from a "name=value,name=value" list (-ic_param). Every check is collective by construction: each rank
 // parses the same text and reaches the same verdict.
 #pragma once

@@ -27,6 +27,9 @@ const EntryND kProblemsND[] = {
     {"sedov", createExplosionProblemND, "Sedov point explosion in a cold uniform gas"},
     {"jet", createJetProblemND, "Zhang-Shu Mach 2000 astrophysical jet, inflow on part of the left face"},
     {"taylor_green", createTaylorGreenProblemND, "Inviscid Taylor-Green vortex at Mach 0.1 (3D only)"},
+    {"forward_step", createObstacleProblemND, "Woodward-Colella Mach 3 wind tunnel with a step (2D, solid)"},
+    {"shock_cylinder", createObstacleProblemND, "Mach 2.8 shock over a cylinder (2D, solid)"},
+    {"shock_sphere", createObstacleProblemND, "Mach 2.8 shock over a sphere (3D, solid)"},
 };
 
 bool isPlanarName(const std::string& name) {

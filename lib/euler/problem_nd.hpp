@@ -90,6 +90,8 @@ PetscErrorCode createJetProblemND(MPI_Comm comm, const std::string& name, int di
                                   ProblemND* problem);
 PetscErrorCode createTaylorGreenProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
                                           ProblemND* problem);
+PetscErrorCode createObstacleProblemND(MPI_Comm comm, const std::string& name, int dim, int axis,
+                                       ProblemND* problem);
 // Any 1D problem name of problem.hpp placed along `axis`.
 // The boundary of a grid face for a 1D boundary condition (Inflow: a Custom face with the 1D inflow state).
 BcN gridBc(Bc bc);
