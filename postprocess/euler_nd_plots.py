@@ -2,6 +2,7 @@
 convergence study (error vs N per scheme with observed orders) and kinetic-energy spectra.
 
     python -m postprocess euler2d-images run.h5 [--field rho] [--schlieren] [--step N] [-o FILE] [--outdir DIR]
+      (a run with a solid obstacle: its cells gray in the field image, left out of the schlieren)
     python -m postprocess euler-vortex-convergence a.h5 b.h5 ... [--norm l1 l2] [-o FILE] [--outdir DIR]
     python -m postprocess euler-spectra a.h5 [b.h5 ...] [-o FILE] [--outdir DIR]
 
@@ -61,6 +62,7 @@ def read_field(path, field="rho", step=None, z_index=None):
         x, y = f["grid/x"][...], f["grid/y"][...]
         t = f[group].attrs.get("time", f.attrs.get("time", np.nan))
         info = {"problem": _attr(f, "problem"), "scheme": _attr(f, "scheme"), "time": float(t), "field": field}
+        mask = f[group]["mask"][...] if "mask" in f[group] else None  # solid obstacle cells (1), if any
         if data.ndim == 3:
             k = data.shape[0] // 2 if z_index is None else int(z_index)
             if not 0 <= k < data.shape[0]:
@@ -68,10 +70,13 @@ def read_field(path, field="rho", step=None, z_index=None):
             z = f["grid/z"][...] if "grid/z" in f else np.arange(data.shape[0], dtype=float)
             info["z"] = float(z[k])
             data = data[k]
+            mask = mask[k] if mask is not None else None
         elif data.ndim != 2:
             raise ValueError(f"{path}: /{group}/{field} has shape {data.shape}, expected (ny, nx) or (nz, ny, nx)")
     if data.shape != (len(y), len(x)):
         raise ValueError(f"{path}: field shape {data.shape} does not match the grid (ny, nx) = ({len(y)}, {len(x)})")
+    if mask is not None:
+        info["mask"] = mask > 0
     return x, y, data, info
 
 
@@ -89,7 +94,7 @@ def gradient_magnitude(x, y, values):
 def schlieren(x, y, rho, k=15.0):
     """Numerical schlieren exp(-k |grad rho| / max |grad rho|) (1 everywhere for a uniform field)."""
     g = gradient_magnitude(x, y, rho)
-    gmax = float(np.max(g)) if g.size else 0.0
+    gmax = float(np.nanmax(g)) if g.size and np.isfinite(g).any() else 0.0
     if not np.isfinite(gmax) or gmax <= 0.0:
         return np.ones_like(g)
     return np.exp(-k * g / gmax)
@@ -106,12 +111,20 @@ def plot_images(path, outdir=".", output=None, field="rho", with_schlieren=False
     width = 5.5 * panels
     fig, axes = plt.subplots(1, panels, figsize=(width, max(2.5, min(12.0, 5.0 * aspect)) + 0.8), squeeze=False)
     ax = axes[0][0]
-    im = ax.imshow(v, origin="lower", extent=extent, cmap="viridis", interpolation="nearest")
+    solid = info.get("mask")
+    cmap = plt.get_cmap("viridis").copy()
+    cmap.set_bad("0.55")  # solid obstacle cells: gray
+    shown = np.ma.masked_where(solid, v) if solid is not None else v
+    im = ax.imshow(shown, origin="lower", extent=extent, cmap=cmap, interpolation="nearest")
     fig.colorbar(im, ax=ax, label=field, shrink=0.8)
     ax.set(xlabel="x", ylabel="y", title=field)
     if with_schlieren:
         ax = axes[0][1]
-        ax.imshow(schlieren(x, y, v, k), origin="lower", extent=extent, cmap="gray", vmin=0, vmax=1,
+        # solid cells are left out of the gradients (NaN: their faces to the fluid are walls, not density jumps)
+        s = schlieren(x, y, np.where(solid, np.nan, v), k) if solid is not None else schlieren(x, y, v, k)
+        gray = plt.get_cmap("gray").copy()
+        gray.set_bad("tab:blue")
+        ax.imshow(np.ma.masked_invalid(s), origin="lower", extent=extent, cmap=gray, vmin=0, vmax=1,
                   interpolation="nearest")
         ax.set(xlabel="x", ylabel="y", title=f"schlieren of {field} (k = {k:g})")
     where = f", z = {info['z']:.4g}" if "z" in info else ""

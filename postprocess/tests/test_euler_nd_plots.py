@@ -191,3 +191,28 @@ def test_from_euler_runs(tmp_path, suite_bin, run_suite, capsys):
     assert rho.shape == (12, 48) and info["problem"] == "double_mach"
     assert rho.max() > 7.9 and rho.min() < 1.41  # post- and pre-shock gas both present
     assert main(["euler2d-images", str(dm), "--schlieren", "-o", str(tmp_path / "dm.png")]) == 0
+
+
+def test_mask_shown_gray_and_left_out_of_the_schlieren(tmp_path):
+    """A run with a solid obstacle: read_field returns its mask; the field image paints exactly the solid cells
+    gray (0.55, 0.55, 0.55) and the schlieren excludes them (NaN: no wall 'shock' in the image, nor in its scale)."""
+    x, y = _grid(40), _grid(20)
+    rho = np.tile(1.0 + x, (20, 1))  # a uniform gradient: the schlieren is exp(-k) on every fluid cell
+    mask = np.zeros((20, 40))
+    mask[5:10, 10:20] = 1
+    rho[mask > 0] = 7.0  # a frozen state unlike the flow: a jump the schlieren must not show
+    p = tmp_path / "step.h5"
+    _write_run(p, rho, x, y)
+    with h5py.File(p, "a") as f:
+        f["final/mask"] = mask
+    _, _, v, info = read_field(p)
+    assert info["mask"].sum() == 50
+    s = schlieren(x, y, np.where(info["mask"], np.nan, v))
+    fluid = np.isfinite(s)
+    assert np.isnan(s[info["mask"]]).all() and fluid.sum() > 600  # only the solid and its neighbours are left out
+    assert np.allclose(s[fluid], np.exp(-15.0))  # the solid's jump to 7 does not set the scale
+    main(["euler2d-images", str(p), "--outdir", str(tmp_path), "--schlieren"])
+    import matplotlib.image as mpimg
+    img = mpimg.imread(tmp_path / "step_rho.png")
+    gray = np.all(np.abs(img[..., :3] - 0.55) < 0.01, axis=-1)
+    assert gray.sum() > 0

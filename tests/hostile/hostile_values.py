@@ -72,7 +72,7 @@ CUT = re.compile(r"x{2049,}")
 # A valid entry of list options whose default is empty (generic rule: the default's first entry); a file is
 # linked into each scratch folder under a short name (10,000 entries of a long path pass Linux's 128 KiB limit
 # on one argument). A list that takes @LIST is also given LIST_FILE, 10,000 lines of the entry.
-LINKS = {"p.dat": SRC / "inputs" / "lcpbench" / "lcp_4.dat"}
+LINKS = {"p.dat": SRC / "inputs" / "lcpbench" / "lcp_4.dat", "bump.h5": SRC / "inputs" / "euler" / "density_bump.h5"}
 LIST_ENTRY = {"-file": "p.dat"}
 LIST_FILE = "entries.txt"
 OUT = "out.h5"
@@ -87,6 +87,14 @@ BASES = {
          "-output", OUT],
         ["-dim", "3", "-nx", "8", "-ny", "8", "-nz", "8", "-t_final", "0.01", "-max_steps", "2",
          "-max_walltime", "10", "-output", OUT],
+        # a user's own problems: formulas (with an inflow face and a solid), a file, an obstacle preset
+        ["-dim", "2", "-problem", "formula", "-ic_rho", "1.0", "-ic_p", "1.0", "-nx", "24", "-ny", "16", "-t_final", "0.01",
+         "-bc_x_lo", "inflow", "-bc_x_lo_state", "1,0.1,0,1", "-solid", "0.01 - (x-0.5)^2 - (y-0.5)^2",
+         "-max_steps", "2", "-max_walltime", "10", "-output", OUT],
+        ["-dim", "2", "-problem", "file", "-initial_state", "bump.h5", "-t_final", "0.01", "-max_steps", "2",
+         "-max_walltime", "10", "-output", OUT],
+        ["-dim", "2", "-problem", "shock_cylinder", "-nx", "32", "-ny", "24", "-max_steps", "2", "-max_walltime",
+         "10", "-output", OUT],
     ],
     "femdyn": [["-beam_cells", "2,1,1", "-steps", "2", "-max_walltime", "10", "-output", OUT]],
     "contact": [["-steps", "3", "-max_walltime", "10", "-output", OUT]],
