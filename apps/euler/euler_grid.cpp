@@ -194,6 +194,8 @@ PetscErrorCode EulerRun::setup() {
   PetscCall(maxWaveSpeeds(U_, 0.0, amax));
   const StepperSettings s{opt_.time, opt_.t_final, opt_.dt > 0 ? opt_.dt : cflTimeStep(amax)};
   PetscCall(createStepper(ctx_.comm(), da_, U_, s, rhsCallback, this, &ts_));
+  wall_setup_ = MPI_Wtime() - t_options_; // the slowest rank's (the output's setup_seconds)
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &wall_setup_, 1, MPI_DOUBLE, MPI_MAX, ctx_.comm()));
   PetscFunctionReturn(0);
 }
 

@@ -80,10 +80,9 @@ PetscErrorCode EulerRun::initialFromProblem(double* u) {
 }
 
 PetscErrorCode EulerRun::initialFromFile(double* u) {
-  InitialStateFile f;
+  const InitialStateFile& f = *problem_.initial_state; // inspected with the options
   std::vector<double> values;
   PetscFunctionBeginUser;
-  PetscCall(inspectInitialStateFile(ctx_.comm(), problem_.initial_file, problem_.initial_group, dim(), &f));
   PetscCall(readInitialStateBlock(ctx_.comm(), f, dim(), problem_.gamma, s_, m_, &values));
   for (PetscInt c = 0; c < localCells(); ++c) {
     const double* v = &values[(size_t)c * nv()];

@@ -107,6 +107,7 @@ PetscErrorCode EulerRun::writeRunAttributes() {
     PetscCall(out_.writeAttribute("/", "shock_rows", shock_rows_[0]));
     PetscCall(out_.writeAttribute("/", "shock_sensor_rows", shock_rows_[1]));
   }
+  PetscCall(out_.writeAttribute("/", "setup_seconds", wall_setup_));
   PetscCall(out_.writeAttribute("/", "solve_seconds", wall_solve_));
   PetscCall(out_.writeAttribute("/", "solve_cpu_seconds_rank0", cpu_solve_));
   PetscFunctionReturn(0);

@@ -29,7 +29,10 @@ class EulerRun : public suite::TimeStepped {
 public:
   EulerRun(const suite::RunContext& ctx, int dim) : ctx_(ctx) { opt_.dim = dim; }
   ~EulerRun() override;
-  PetscErrorCode readOptions() { return euler_app::readOptions(ctx_, &opt_, &line_, &problem_, &ckpt_); }
+  PetscErrorCode readOptions() {
+    t_options_ = MPI_Wtime(); // setup_seconds counts from here (options: a file inspected, formulas parsed)
+    return euler_app::readOptions(ctx_, &opt_, &line_, &problem_, &ckpt_);
+  }
   bool spectrumOnly() const { return opt_.scheme_spectrum != 0; }
   PetscErrorCode schemeSpectrum(); // -scheme_spectrum N instead of a run (euler_scheme_spectrum.cpp)
   PetscErrorCode setup();          // euler_grid.cpp
@@ -184,6 +187,8 @@ private:
   std::string status_ = "completed"; // the output's status attribute (core/run_summary.hpp)
   PetscInt retries_ = 0;             // steps retried at half dt (TimeLoop's summary, for the output)
   long long shock_rows_[2] = {0, 0}; // shock rows, rows the sensor examined (all ranks; reportStatistics)
+  // readOptions() to the end of setup(): options, grid, line communicators, sweep, solid, initial state, stepper
+  double t_options_ = 0.0, wall_setup_ = 0.0;
   double time_ = 0.0, wall_solve_ = 0.0, cpu_solve_ = 0.0, cpu_first_step_ = 0.0;
   struct Errors {
     bool have = false;

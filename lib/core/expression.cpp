@@ -13,6 +13,8 @@ namespace suite {
 
 struct Expression::Impl {
   mu::Parser parser;
+  bool constant = false; // no variable used: the value below, computed once
+  double value = 0.0;
   std::unique_ptr<double[]> vars; // muParser binds variables by address: storage that never moves
   size_t nvars = 0;
 };
@@ -55,7 +57,8 @@ PetscErrorCode Expression::create(MPI_Comm comm, const std::string& option, cons
     im.parser.DefineConst("_e", M_E);
     for (const auto& p : params) im.parser.DefineConst(p.first, p.second);
     im.parser.SetExpr(text);
-    (void)im.parser.Eval(); // parses now: a syntax error is reported here, not at the first cell
+    im.value = im.parser.Eval(); // parses now: a syntax error is reported here, not at the first cell
+    im.constant = im.parser.GetUsedVar().empty();
   } catch (const mu::Parser::exception_type& err) {
     failure = err.GetMsg();
     position = err.GetPos();
@@ -71,6 +74,7 @@ PetscErrorCode Expression::create(MPI_Comm comm, const std::string& option, cons
 }
 
 double Expression::operator()(const double* values) const {
+  if (impl_->constant) return impl_->value;
   for (size_t v = 0; v < impl_->nvars; ++v) impl_->vars[v] = values[v];
   try {
     return impl_->parser.Eval();

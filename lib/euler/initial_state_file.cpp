@@ -122,43 +122,36 @@ std::string firstInvalid(const InitialStateFile& f, int dim, double gamma, const
                          const PetscInt m[3], const std::vector<double>& v, const std::vector<double>& w) {
   const int nc = dim + 2;
   const size_t ncell = (size_t)m[0] * m[1] * m[2];
-  char buf[512];
-  for (size_t c = 0; c < ncell; ++c) {
+  auto message = [&](size_t c, const std::string& name, double value, const char* why) {
     const PetscInt i = s[0] + (PetscInt)(c % m[0]), j = s[1] + (PetscInt)((c / m[0]) % m[1]),
                    k = s[2] + (PetscInt)(c / ((size_t)m[0] * m[1]));
-    char cell[96];
+    char cell[96], buf[512];
     if (dim == 1)
       std::snprintf(cell, sizeof cell, "cell i = %d", (int)i);
     else if (dim == 2)
       std::snprintf(cell, sizeof cell, "cell (i, j) = (%d, %d)", (int)i, (int)j);
     else
       std::snprintf(cell, sizeof cell, "cell (i, j, k) = (%d, %d, %d)", (int)i, (int)j, (int)k);
+    std::snprintf(buf, sizeof buf, "%s: dataset %s holds %g at %s: %s", f.path.c_str(), dataset(f, name).c_str(),
+                  value, cell, why);
+    return std::string(buf);
+  };
+  for (size_t c = 0; c < ncell; ++c) {
     const double* q = &v[c * nc];
     for (int comp = 0; comp < nc; ++comp)
-      if (!std::isfinite(q[comp])) {
-        std::snprintf(buf, sizeof buf, "%s: dataset %s holds %g at %s: initial values must be finite",
-                      f.path.c_str(), dataset(f, f.fields[comp]).c_str(), q[comp], cell);
-        return buf;
-      }
-    if (!w.empty() && w[c] != 0.0) {
-      std::snprintf(buf, sizeof buf, "%s: dataset %s holds %g at %s: a 2D state has w = 0", f.path.c_str(),
-                    dataset(f, "w").c_str(), w[c], cell);
-      return buf;
-    }
+      if (!std::isfinite(q[comp])) return message(c, f.fields[comp], q[comp], "initial values must be finite");
+    if (!w.empty() && w[c] != 0.0) return message(c, "w", w[c], "a 2D state has w = 0");
     double p = q[nc - 1];
     if (f.conservative) {
       double ke = 0.0;
       for (int d = 0; d < dim; ++d) ke += 0.5 * q[1 + d] * q[1 + d] / q[0];
       p = (gamma - 1.0) * (q[nc - 1] - ke);
     }
-    if (q[0] <= 0.0 || p <= 0.0) {
-      const bool rho_bad = q[0] <= 0.0;
-      std::snprintf(buf, sizeof buf, "%s: dataset %s holds %g at %s: %s must be > 0%s", f.path.c_str(),
-                    dataset(f, rho_bad ? "rho" : f.fields[nc - 1]).c_str(), rho_bad ? q[0] : q[nc - 1], cell,
-                    rho_bad ? "density" : "pressure",
-                    rho_bad || !f.conservative ? "" : " (the pressure of rho, mom, E is not)");
-      return buf;
-    }
+    if (q[0] <= 0.0) return message(c, "rho", q[0], "density must be > 0");
+    if (p <= 0.0)
+      return message(c, f.fields[nc - 1], q[nc - 1],
+                     f.conservative ? "pressure must be > 0 (the pressure of rho, mom, E is not)"
+                                    : "pressure must be > 0");
   }
   return "";
 }
@@ -175,6 +168,8 @@ PetscErrorCode inspectInitialStateFile(MPI_Comm comm, const std::string& path, c
   PetscCall(chooseFields(comm, in, dim, f));
   PetscCall(readShape(comm, in, dim, f));
   PetscCall(readExtents(comm, in, dim, f));
+  PetscCall(in.hasAttribute("/", "gamma", &f->has_gamma));
+  if (f->has_gamma) PetscCall(in.readAttribute("/", "gamma", &f->gamma));
   PetscFunctionReturn(0);
 }
 

@@ -27,6 +27,8 @@ struct InitialStateFile {
   PetscInt n[3] = {1, 1, 1};       // the grid (x, y, z) from the shape
   bool has_extent[3] = {false, false, false};
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  bool has_gamma = false; // the root attribute gamma (a run's output)
+  double gamma = 1.4;
 };
 
 // Collective: opens path, checks the group's datasets, shapes and extent attributes.

@@ -12,9 +12,9 @@
 #include "core/option_value.hpp"
 #include "euler/initial_state_file.hpp"
 #include "euler/problem_nd.hpp"
-#include "io/h5_input.hpp"
 
 #include <cmath>
+#include <memory>
 
 namespace suite::euler {
 
@@ -39,17 +39,12 @@ PetscErrorCode createFileProblem(MPI_Comm comm, int dim, ProblemND* pr) {
   PetscCheck(given && !path.empty(), comm, PETSC_ERR_ARG_WRONG,
              "-problem file needs -initial_state FILE.h5 (the initial state on the run's grid)");
   PetscCall(inspectInitialStateFile(comm, path, group, dim, &f));
-  if (!gamma_set) {
-    suite::H5Input in;
-    bool has = false;
-    PetscCall(in.open(comm, path));
-    PetscCall(in.hasAttribute("/", "gamma", &has));
-    if (has) PetscCall(in.readAttribute("/", "gamma", &gamma));
-  }
+  if (!gamma_set && f.has_gamma) gamma = f.gamma;
   PetscCall(checkGamma(comm, gamma));
   pr->gamma = gamma;
   pr->initial_file = f.path;
   pr->initial_group = f.group;
+  pr->initial_state = std::make_shared<const InitialStateFile>(f);
   for (int d = 0; d < dim; ++d) {
     pr->default_n[d] = f.n[d];
     if (f.has_extent[d]) {

@@ -10,9 +10,10 @@
 // derivative at the centres), so the default evaluates the formulas at the centres, which keeps a smooth
 // problem's order. -ic_average gives the cell averages of the conservative state by 3 x 3 (x 3) Gauss points
 // (exact for quintics): it places a discontinuity at its sub-cell position (curved interfaces without the
-// staircase) but differs from the point values by O(dx^2) (dx^2/24 of the second derivative) on smooth data,
-// an error the run then carries: measured, the isentropic vortex converges at second order with it
-// (docs/euler_user_problems.md).
+// staircase) but differs from the point values by dx^2/24 of the second derivative on smooth data. Against the
+// exact cell averages a linear flow keeps the scheme's order (the averages of a translated density wave are
+// themselves a translated wave: measured order 6.0, tests/euler/euler_user_check.py average); a nonlinear one does
+// not in general (the average of a solution is not a solution: an O(dx^2) defect of the fluxes).
 #include "core/expression.hpp"
 #include "core/option_value.hpp"
 #include "euler/problem_nd.hpp"

@@ -10,10 +10,13 @@
 #include <petscsys.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace suite::euler {
+
+struct InitialStateFile; // initial_state_file.hpp
 
 // Primitive state in 2D/3D: density, velocity (u, v, w) along (x, y, z), pressure. In 2D w = 0.
 struct PrimN {
@@ -51,6 +54,7 @@ struct ProblemND {
   int initial_quadrature = 0;
   // `file`: the initial state is read from this HDF5 file's group (initial_state_file.hpp); `initial` is empty.
   std::string initial_file, initial_group;
+  std::shared_ptr<const InitialStateFile> initial_state; // its datasets, as inspected
   bool fixed_extent[3] = {false, false, false}; // `file`: lo/hi from the file's attributes (options may not differ)
   // Face names as the user gave them (-bc_x_lo wall, symmetry, inflow, ...; bcLabel() when empty), for the output.
   std::string bc_label[3][2];

@@ -40,7 +40,10 @@ PetscErrorCode H5Input::open(MPI_Comm comm, const std::string& path) {
   PetscCheck(state != 2, comm, PETSC_ERR_FILE_UNEXPECTED,
              "%s is not a valid HDF5 file (truncated or corrupted?)", path.c_str());
   hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-  H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL);
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  serial_ = size == 1;
+  if (!serial_) H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL); // one rank: HDF5's POSIX driver, no MPI-IO layer
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl);
   H5Pclose(fapl);
   PetscCheck(f >= 0, comm, PETSC_ERR_FILE_UNEXPECTED, "cannot open HDF5 file %s (truncated or corrupted?)",
@@ -229,7 +232,7 @@ PetscErrorCode H5Input::readBlockT(const std::string& dataset, const Dims& start
     H5Sselect_hyperslab(fspace, H5S_SELECT_SET, s.data(), nullptr, c.data(), nullptr);
   }
   hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  if (!serial_) H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
   herr_t st = H5Dread(d, h5::nativeType<T>(), mspace, fspace, dxpl, local);
   H5Pclose(dxpl);
   H5Sclose(mspace);

@@ -50,6 +50,7 @@ private:
   PetscErrorCode readBlockT(const std::string& dataset, const Dims& start, const Dims& count, T* local) const;
   MPI_Comm comm_ = MPI_COMM_NULL;
   int64_t file_ = -1;
+  bool serial_ = false; // a one-rank communicator: opened without MPI-IO
   std::string path_;
 };
 
