@@ -121,8 +121,8 @@ PetscErrorCode EulerRun::writeInitial() {
   PetscCall(VecGetArrayRead(U_, &a));
   for (int v = 0; v < nv(); ++v) {
     for (PetscInt c = 0; c < localCells(); ++c) field[c] = a[c * nv() + v];
-    PetscCall(out_.writeDistributed(std::string("/initial/") + kNames[dim() - 1][v], field.data(), dims, start,
-                                    count, ""));
+    PetscCall(out_.writeDistributed(std::string("/initial/") + kNames[dim() - 1][v], field.data(), dims,
+                                    start, count, ""));
   }
   PetscCall(VecRestoreArrayRead(U_, &a));
   PetscFunctionReturn(0);

@@ -101,7 +101,8 @@ PetscErrorCode checkUserProblem(MPI_Comm comm, const Options& o, const ProblemND
       PetscCheck(given || pr.default_n[d] > 0, comm, PETSC_ERR_ARG_WRONG,
                  "-problem formula needs %s (the cells along %c)", names[d], axis[d]);
       PetscCheck(pr.initial_file.empty() || o.n[d] == pr.default_n[d], comm, PETSC_ERR_ARG_WRONG,
-                 "%s %" PetscInt_FMT " differs from the %" PetscInt_FMT " cells along %c of -initial_state %s",
+                 "%s %" PetscInt_FMT " differs from the %" PetscInt_FMT
+                 " cells along %c of -initial_state %s",
                  names[d], o.n[d], pr.default_n[d], axis[d], pr.initial_file.c_str());
     }
   }

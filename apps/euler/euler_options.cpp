@@ -208,10 +208,11 @@ PetscErrorCode readOutput(PetscOptionItems* PetscOptionsObject, Options* o) {
   PetscCall(suite::optionsInt(PetscOptionsObject, "-snapshot_every",
                               "Write a snapshot every N steps (0: none)", "", o->snapshot_every,
                               &o->snapshot_every, nullptr));
-  PetscCall(suite::optionsBool(PetscOptionsObject, "-output_initial",
-                               "Write the initial conservative state to /initial of -output (rho, mom_x.., E: "
-                               "an -initial_state input that reproduces the run bitwise)",
-                               "", o->output_initial, &o->output_initial, nullptr));
+  PetscCall(
+      suite::optionsBool(PetscOptionsObject, "-output_initial",
+                         "Write the initial conservative state to /initial of -output (rho, mom_x.., E: "
+                         "an -initial_state input that reproduces the run bitwise)",
+                         "", o->output_initial, &o->output_initial, nullptr));
   if (o->dim == 1)
     PetscCall(suite::optionsInt(PetscOptionsObject, "-spacetime_every",
                                 "Record density every N steps for the x-t image (0: none)", "",

@@ -120,7 +120,9 @@ PetscErrorCode EulerRun::writeLineResults() {
   // bc_left / bc_right in the 1D problems' names (reflecting for a wall or symmetry face, inflow for a custom one)
   auto lineName = [&](int side) {
     const std::string f = faceLabel(problem_, 0, side);
-    return f == "wall" || f == "symmetry" ? std::string("reflecting") : f == "custom" ? std::string("inflow") : f;
+    return f == "wall" || f == "symmetry" ? std::string("reflecting")
+           : f == "custom"                ? std::string("inflow")
+                                          : f;
   };
   PetscCall(out_.writeAttribute("/", "xmin", problem_.lo[0]));
   PetscCall(out_.writeAttribute("/", "xmax", problem_.hi[0]));

@@ -174,7 +174,7 @@ private:
   PetscInt retry_step_ = -1, retry_attempt_ = 0;
   std::vector<double> totals0_;
   std::vector<char> solid_, solid_local_;
-  long long solid_cells_ = 0; // over all ranks
+  long long solid_cells_ = 0;                           // over all ranks
   suite::linalg::SubstructuredBlockLines filter_lines_; // -filter_alpha's line solves
   std::vector<double> filter_abc_, filter_rhs_, filter_x_;
   Vec Ufilter_ = nullptr; // -filter_time: the filtered state blended in

@@ -38,8 +38,9 @@ PetscErrorCode EulerRun::setupSolid() {
   PetscCall(VecDestroy(&g));
   PetscCall(DMDestroy(&da1));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &solid_cells_, 1, MPI_LONG_LONG, MPI_SUM, ctx_.comm()));
-  PetscCall(suite::logInfo(ctx_.comm(), quiet(), "euler: solid obstacle of %lld cells (%s)", solid_cells_,
-                           problem_.solid_mask_file.empty() ? "a formula" : problem_.solid_mask_file.c_str()));
+  PetscCall(
+      suite::logInfo(ctx_.comm(), quiet(), "euler: solid obstacle of %lld cells (%s)", solid_cells_,
+                     problem_.solid_mask_file.empty() ? "a formula" : problem_.solid_mask_file.c_str()));
   PetscFunctionReturn(0);
 }
 

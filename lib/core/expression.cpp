@@ -65,10 +65,9 @@ PetscErrorCode Expression::create(MPI_Comm comm, const std::string& option, cons
     token = err.GetToken();
   }
   PetscCheck(!trim(text).empty(), comm, PETSC_ERR_ARG_WRONG, "Empty formula for %s", option.c_str());
-  PetscCheck(failure.empty(), comm, PETSC_ERR_ARG_WRONG,
-             "Cannot parse %s \"%s\": %s (at position %d%s%s%s)", option.c_str(), text.c_str(),
-             failure.c_str(), position + 1, token.empty() ? "" : ", token '", token.c_str(),
-             token.empty() ? "" : "'");
+  PetscCheck(failure.empty(), comm, PETSC_ERR_ARG_WRONG, "Cannot parse %s \"%s\": %s (at position %d%s%s%s)",
+             option.c_str(), text.c_str(), failure.c_str(), position + 1, token.empty() ? "" : ", token '",
+             token.c_str(), token.empty() ? "" : "'");
   *out = e;
   PetscFunctionReturn(0);
 }

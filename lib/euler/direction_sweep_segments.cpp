@@ -25,11 +25,9 @@ void DirectionSweep<NV>::segmentedFaceFluxes(const V* q, int nlines, long long n
     const int nc = (int)clean_.size();
     seg_q_.resize((size_t)nc * ncell);
     seg_h_.resize((size_t)nc * nface);
-    for (int i = 0; i < nc; ++i)
-      std::copy_n(q + clean_[i] * ncell, ncell, seg_q_.data() + (size_t)i * ncell);
+    for (int i = 0; i < nc; ++i) std::copy_n(q + clean_[i] * ncell, ncell, seg_q_.data() + (size_t)i * ncell);
     linesFaceFluxes(MPI_COMM_SELF, seg_q_.data(), nc, n, 0, (int)n, periodic, alpha, lambda, seg_h_.data());
-    for (int i = 0; i < nc; ++i)
-      std::copy_n(seg_h_.data() + (size_t)i * nface, nface, h + clean_[i] * nface);
+    for (int i = 0; i < nc; ++i) std::copy_n(seg_h_.data() + (size_t)i * nface, nface, h + clean_[i] * nface);
   }
   std::vector<LineSegment> segments;
   size_t next_clean = 0;
@@ -44,11 +42,12 @@ void DirectionSweep<NV>::segmentedFaceFluxes(const V* q, int nlines, long long n
     findSegments<NV>(ql, n, kGhost, periodic, &segments);
     for (const LineSegment& s : segments) {
       if (s.cells < kMinSegment)
-        throw std::runtime_error(
-            "the solid leaves a fluid gap of " + std::to_string(s.cells) + " cell(s) (cells " +
-            std::to_string(s.first) + " .. " + std::to_string((s.first + s.cells - 1) % n) + " of a line of " +
-            std::to_string(n) + "): a fluid segment needs at least " + std::to_string(kMinSegment) +
-            " cells, the schemes' bounded stencil; refine the grid or widen the gap");
+        throw std::runtime_error("the solid leaves a fluid gap of " + std::to_string(s.cells) +
+                                 " cell(s) (cells " + std::to_string(s.first) + " .. " +
+                                 std::to_string((s.first + s.cells - 1) % n) + " of a line of " +
+                                 std::to_string(n) + "): a fluid segment needs at least " +
+                                 std::to_string(kMinSegment) +
+                                 " cells, the schemes' bounded stencil; refine the grid or widen the gap");
       seg_q_.resize((size_t)s.cells + 2 * kGhost);
       seg_h_.resize((size_t)s.cells + 1);
       buildSegment<NV>(ql, n, kGhost, periodic, s, seg_q_.data());

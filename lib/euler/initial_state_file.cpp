@@ -101,9 +101,8 @@ PetscErrorCode readExtents(MPI_Comm comm, const suite::H5Input& in, int dim, Ini
       bool has_lo = false, has_hi = false;
       PetscCall(in.hasAttribute(obj, lo, &has_lo));
       PetscCall(in.hasAttribute(obj, hi, &has_hi));
-      PetscCheck(has_lo == has_hi, comm, PETSC_ERR_FILE_UNEXPECTED,
-                 "%s: %s carries attribute %s without %s", f->path.c_str(), obj.c_str(),
-                 (has_lo ? lo : hi).c_str(), (has_lo ? hi : lo).c_str());
+      PetscCheck(has_lo == has_hi, comm, PETSC_ERR_FILE_UNEXPECTED, "%s: %s carries attribute %s without %s",
+                 f->path.c_str(), obj.c_str(), (has_lo ? lo : hi).c_str(), (has_lo ? hi : lo).c_str());
       if (!has_lo) continue;
       PetscCall(in.readAttribute(obj, lo, &f->lo[a]));
       PetscCall(in.readAttribute(obj, hi, &f->hi[a]));
@@ -132,14 +131,15 @@ std::string firstInvalid(const InitialStateFile& f, int dim, double gamma, const
       std::snprintf(cell, sizeof cell, "cell (i, j) = (%d, %d)", (int)i, (int)j);
     else
       std::snprintf(cell, sizeof cell, "cell (i, j, k) = (%d, %d, %d)", (int)i, (int)j, (int)k);
-    std::snprintf(buf, sizeof buf, "%s: dataset %s holds %g at %s: %s", f.path.c_str(), dataset(f, name).c_str(),
-                  value, cell, why);
+    std::snprintf(buf, sizeof buf, "%s: dataset %s holds %g at %s: %s", f.path.c_str(),
+                  dataset(f, name).c_str(), value, cell, why);
     return std::string(buf);
   };
   for (size_t c = 0; c < ncell; ++c) {
     const double* q = &v[c * nc];
     for (int comp = 0; comp < nc; ++comp)
-      if (!std::isfinite(q[comp])) return message(c, f.fields[comp], q[comp], "initial values must be finite");
+      if (!std::isfinite(q[comp]))
+        return message(c, f.fields[comp], q[comp], "initial values must be finite");
     if (!w.empty() && w[c] != 0.0) return message(c, "w", w[c], "a 2D state has w = 0");
     double p = q[nc - 1];
     if (f.conservative) {
@@ -157,8 +157,8 @@ std::string firstInvalid(const InitialStateFile& f, int dim, double gamma, const
 }
 } // namespace
 
-PetscErrorCode inspectInitialStateFile(MPI_Comm comm, const std::string& path, const std::string& group, int dim,
-                                       InitialStateFile* f) {
+PetscErrorCode inspectInitialStateFile(MPI_Comm comm, const std::string& path, const std::string& group,
+                                       int dim, InitialStateFile* f) {
   suite::H5Input in;
   PetscFunctionBeginUser;
   *f = InitialStateFile{};

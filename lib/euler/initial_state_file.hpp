@@ -32,8 +32,8 @@ struct InitialStateFile {
 };
 
 // Collective: opens path, checks the group's datasets, shapes and extent attributes.
-PetscErrorCode inspectInitialStateFile(MPI_Comm comm, const std::string& path, const std::string& group, int dim,
-                                       InitialStateFile* file);
+PetscErrorCode inspectInitialStateFile(MPI_Comm comm, const std::string& path, const std::string& group,
+                                       int dim, InitialStateFile* file);
 
 // Collective: this rank's block s .. s + m - 1 (per direction x, y, z) of the state: values[c * ncomp + v]
 // for cell c (x fastest) and component v (dim + 2 components: primitive rho, u.., p or conservative rho,

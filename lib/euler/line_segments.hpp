@@ -55,8 +55,8 @@ void findSegments(const std::array<double, NV>* q, long long n, int ghost, bool 
 // The segment as a bounded line of s.cells cells and `ghost` ghosts on each side (seg: s.cells + 2 ghost states):
 // reflecting ghosts at solid ends, the line's ghosts at the domain's ends of a non-periodic line.
 template <int NV>
-void buildSegment(const std::array<double, NV>* q, long long n, int ghost, bool periodic, const LineSegment& s,
-                  std::array<double, NV>* seg) {
+void buildSegment(const std::array<double, NV>* q, long long n, int ghost, bool periodic,
+                  const LineSegment& s, std::array<double, NV>* seg) {
   const long long L = s.cells;
   auto cell = [&](long long i) { return q[(periodic ? ((i % n) + n) % n : i) + ghost]; };
   const bool domain_lo = !periodic && s.first == 0, domain_hi = !periodic && s.first + L == n;

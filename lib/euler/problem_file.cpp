@@ -25,13 +25,14 @@ PetscErrorCode createFileProblem(MPI_Comm comm, int dim, ProblemND* pr) {
   InitialStateFile f;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "File problem options", "");
-  PetscCall(suite::optionsString(PetscOptionsObject, "-initial_state",
-                                 "HDF5 file of the initial state on the run's grid (primitive rho u [v [w]] p or "
-                                 "conservative rho mom_x [mom_y [mom_z]] E, (z,) (y,) x order)",
-                                 &path, &given));
-  PetscCall(suite::optionsString(PetscOptionsObject, "-initial_group",
-                                 "Group of -initial_state holding the datasets (/final, /initial: a run's output)",
-                                 &group, nullptr));
+  PetscCall(
+      suite::optionsString(PetscOptionsObject, "-initial_state",
+                           "HDF5 file of the initial state on the run's grid (primitive rho u [v [w]] p or "
+                           "conservative rho mom_x [mom_y [mom_z]] E, (z,) (y,) x order)",
+                           &path, &given));
+  PetscCall(suite::optionsString(
+      PetscOptionsObject, "-initial_group",
+      "Group of -initial_state holding the datasets (/final, /initial: a run's output)", &group, nullptr));
   PetscCall(suite::optionsReal(PetscOptionsObject, "-gamma",
                                "Ratio of specific heats (default: the file's gamma attribute, else 1.4)", "",
                                gamma, &gamma, &gamma_set));

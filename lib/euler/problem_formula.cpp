@@ -47,16 +47,18 @@ PetscErrorCode createFormulaProblem(MPI_Comm comm, int dim, ProblemND* pr) {
                                nullptr));
   PetscOptionsEnd();
   PetscCall(checkGamma(comm, gamma));
-  PetscCheck(set[0] && set[4], comm, PETSC_ERR_ARG_WRONG,
-             "-problem formula needs -ic_rho and -ic_p (formulas of the cell centre%s; velocities default to 0)",
-             dim == 1 ? " x" : (dim == 2 ? " x, y" : " x, y, z"));
+  PetscCheck(
+      set[0] && set[4], comm, PETSC_ERR_ARG_WRONG,
+      "-problem formula needs -ic_rho and -ic_p (formulas of the cell centre%s; velocities default to 0)",
+      dim == 1 ? " x" : (dim == 2 ? " x, y" : " x, y, z"));
   const std::vector<std::string> vars = dim == 1   ? std::vector<std::string>{"x"}
                                         : dim == 2 ? std::vector<std::string>{"x", "y"}
                                                    : std::vector<std::string>{"x", "y", "z"};
   suite::NamedValues constants;
   PetscCall(suite::parseNamedValues(comm, "-ic_param", params, vars, &constants));
   std::shared_ptr<const suite::Expression> e[5];
-  for (int f = 0; f < 5; ++f) PetscCall(suite::Expression::create(comm, kNames[f], text[f], vars, constants, &e[f]));
+  for (int f = 0; f < 5; ++f)
+    PetscCall(suite::Expression::create(comm, kNames[f], text[f], vars, constants, &e[f]));
   pr->gamma = gamma;
   pr->initial_quadrature = average ? 3 : 0;
   pr->initial = [e](const double* x) {

@@ -75,11 +75,14 @@ PetscErrorCode createProblemND(MPI_Comm comm, const std::string& name, int dim, 
           name.c_str(), problemNamesND().c_str());
 }
 
-bool isUserProblem(const std::string& name) { return name == "formula" || name == "file"; }
+bool isUserProblem(const std::string& name) {
+  return name == "formula" || name == "file";
+}
 
 std::vector<ProblemDoc> userProblemDocs() {
-  return {{"formula", "Your initial state as formulas of x, y, z (-ic_rho -ic_u -ic_v -ic_w -ic_p -ic_param)"},
-          {"file", "Your initial state from an HDF5 file on the run's grid (-initial_state FILE.h5)"}};
+  return {
+      {"formula", "Your initial state as formulas of x, y, z (-ic_rho -ic_u -ic_v -ic_w -ic_p -ic_param)"},
+      {"file", "Your initial state from an HDF5 file on the run's grid (-initial_state FILE.h5)"}};
 }
 
 PetscErrorCode createUserProblem(MPI_Comm comm, const std::string& name, int dim, ProblemND* pr) {

@@ -55,7 +55,8 @@ struct ProblemND {
   // `file`: the initial state is read from this HDF5 file's group (initial_state_file.hpp); `initial` is empty.
   std::string initial_file, initial_group;
   std::shared_ptr<const InitialStateFile> initial_state; // its datasets, as inspected
-  bool fixed_extent[3] = {false, false, false}; // `file`: lo/hi from the file's attributes (options may not differ)
+  bool fixed_extent[3] = {false, false,
+                          false}; // `file`: lo/hi from the file's attributes (options may not differ)
   // Face names as the user gave them (-bc_x_lo wall, symmetry, inflow, ...; bcLabel() when empty), for the output.
   std::string bc_label[3][2];
   // Solid obstacle (solid_body.hpp): cells whose centre has solid(x) > 0 are solid; or, with solid_mask_file, the

@@ -53,12 +53,14 @@ PetscErrorCode shockBody(MPI_Comm comm, int dim, ProblemND* pr) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, "", "Shock-obstacle options", "");
   PetscCall(suite::optionsReal(PetscOptionsObject, "-mach", "Shock Mach number", "", mach, &mach, nullptr));
-  PetscCall(suite::optionsReal(PetscOptionsObject, "-radius", "Radius of the body", "", radius, &radius, nullptr));
+  PetscCall(
+      suite::optionsReal(PetscOptionsObject, "-radius", "Radius of the body", "", radius, &radius, nullptr));
   PetscOptionsEnd();
-  PetscCheck(mach > 1.0 && mach < 1e3, comm, PETSC_ERR_ARG_OUTOFRANGE, "Invalid -mach %g: must be in (1, 1000)",
-             mach);
+  PetscCheck(mach > 1.0 && mach < 1e3, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Invalid -mach %g: must be in (1, 1000)", mach);
   PetscCheck(radius > 0.0 && radius <= 0.3, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "Invalid -radius %g: must be in (0, 0.3] (the body sits at x = 0.6, the shock starts at 0.3)", radius);
+             "Invalid -radius %g: must be in (0, 0.3] (the body sits at x = 0.6, the shock starts at 0.3)",
+             radius);
   const PrimN ahead{1.4, {0.0, 0.0, 0.0}, 1.0}, behind = postShock(ahead, mach, 1.4);
   pr->gamma = 1.4;
   pr->t_final = 0.4;

@@ -45,8 +45,8 @@ PetscErrorCode readInflowState(PetscOptionItems* PetscOptionsObject, MPI_Comm co
   for (int d = 0; d < dim; ++d) vars.push_back(std::string(1, kAxis[d]));
   vars.push_back("t");
   for (int c = 0; c < dim + 2; ++c)
-    PetscCall(suite::Expression::create(comm, option + " (entry " + std::to_string(c + 1) + ")", items[c], vars,
-                                        {}, &(*state)[c]));
+    PetscCall(suite::Expression::create(comm, option + " (entry " + std::to_string(c + 1) + ")", items[c],
+                                        vars, {}, &(*state)[c]));
   PetscFunctionReturn(0);
 }
 
@@ -102,14 +102,14 @@ PetscErrorCode readFaceOptions(MPI_Comm comm, ProblemND* pr) {
       std::string kind = faceLabel(*pr, d, side);
       if (kind == "reflecting") kind = "wall";
       PetscBool set = PETSC_FALSE;
-      PetscCall(suite::optionsChoice(PetscOptionsObject, option.c_str(), "Boundary condition of the face", kFaces,
-                                     &kind, &set));
+      PetscCall(suite::optionsChoice(PetscOptionsObject, option.c_str(), "Boundary condition of the face",
+                                     kFaces, &kind, &set));
       if (!set) continue;
       PetscBool line_name = PETSC_FALSE;
       if (pr->dim == 1)
         PetscCall(PetscOptionsHasName(nullptr, nullptr, side ? "-bc_right" : "-bc_left", &line_name));
-      PetscCheck(!line_name, comm, PETSC_ERR_ARG_WRONG, "%s and %s name the same face: give one", option.c_str(),
-                 side ? "-bc_right" : "-bc_left");
+      PetscCheck(!line_name, comm, PETSC_ERR_ARG_WRONG, "%s and %s name the same face: give one",
+                 option.c_str(), side ? "-bc_right" : "-bc_left");
       PetscCheck(kind != "custom" || pr->bc[d][side] == BcN::Custom, comm, PETSC_ERR_ARG_WRONG,
                  "%s custom: this problem has no face of its own there", option.c_str());
       pr->bc_label[d][side] = kind == "custom" ? "" : kind;

@@ -20,15 +20,16 @@ PetscErrorCode readSolidOptions(MPI_Comm comm, ProblemND* pr) {
   PetscCall(suite::optionsString(PetscOptionsObject, "-solid",
                                  "Solid obstacle: cells whose centre has formula(x[, y[, z]]) > 0 are solid",
                                  &formula, &has_formula));
-  PetscCall(suite::optionsString(PetscOptionsObject, "-solid_mask",
-                                 "Solid obstacle from an HDF5 file: dataset mask on the grid, non-zero = solid",
-                                 &mask, &has_mask));
+  PetscCall(suite::optionsString(
+      PetscOptionsObject, "-solid_mask",
+      "Solid obstacle from an HDF5 file: dataset mask on the grid, non-zero = solid", &mask, &has_mask));
   if (has_mask)
     PetscCall(suite::optionsString(PetscOptionsObject, "-solid_mask_group",
                                    "Group of -solid_mask holding the dataset mask (/final: a run's output)",
                                    &group, nullptr));
   PetscOptionsEnd();
-  PetscCheck(!(has_formula && has_mask), comm, PETSC_ERR_ARG_WRONG, "-solid and -solid_mask: give one obstacle");
+  PetscCheck(!(has_formula && has_mask), comm, PETSC_ERR_ARG_WRONG,
+             "-solid and -solid_mask: give one obstacle");
   PetscCheck(!(has_formula || has_mask) || !pr->hasSolid(), comm, PETSC_ERR_ARG_WRONG,
              "-problem %s has its obstacle built in: -solid and -solid_mask are refused", pr->name.c_str());
   if (has_formula) {

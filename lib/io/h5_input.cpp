@@ -174,7 +174,8 @@ PetscErrorCode H5Input::groupMembers(const std::string& group, std::vector<std::
     H5G_info_t gi;
     if (H5Gget_info(g, &gi) >= 0)
       for (hsize_t i = 0; i < gi.nlinks; ++i) {
-        const ssize_t len = H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+        const ssize_t len =
+            H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
         if (len < 0) continue;
         std::string name((size_t)len + 1, '\0');
         H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
