@@ -44,6 +44,11 @@ foreach(lib cholmod umfpack amd camd colamd ccolamd suitesparseconfig)
   list(APPEND SUITESPARSE_LIBRARIES ${SUITESPARSE_${lib}_LIBRARY})
 endforeach()
 
+# The OpenMP runtime CHOLMOD is built with (Debian's libcholmod links libgomp): fem/solver_cholmod.cpp switches
+# CHOLMOD's OpenMP loops off or on (-cholmod_openmp); no suite source is compiled with OpenMP.
+find_package(OpenMP QUIET COMPONENTS CXX)
+suite_require(OpenMP_CXX_FOUND "the OpenMP runtime of the compiler (libgomp)" "build-essential")
+
 # libyaml: the options file check (lib/core/options_file_check) parses YAML run decks itself, to report the line.
 find_path(YAML_INCLUDE_DIR yaml.h)
 find_library(YAML_LIBRARY yaml)

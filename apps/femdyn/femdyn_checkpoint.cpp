@@ -168,6 +168,9 @@ suite::CheckpointHeader FemdynDynamics::checkpointHeader() const {
   // checkpoints written before the option existed still load.
   std::string tag = scheme;
   if (o.predictor != "constant") tag += " predictor=" + o.predictor;
+  if (o.jacobian == "lagged")
+    tag += " refresh=" + std::to_string(nm.refresh_contraction) + "," + std::to_string(nm.refresh_iterations);
+  if (nm.max_corrections > 0) tag += " max_corrections=" + std::to_string(nm.max_corrections);
   suite::CheckpointHeader h;
   h.app = "femdyn";
   h.scheme = tag;

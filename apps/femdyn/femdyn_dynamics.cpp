@@ -122,6 +122,7 @@ void FemdynDynamics::record(const StepTimings& tm, double total, double cpu) {
     for (size_t i = 0; i < run_.f_ext_.size(); ++i) w += run_.f_ext_[i] * s_.u[i];
   r.external = w;
   r.newton = tm.newton_iterations, r.rejected = tm.rejected, r.converged = tm.converged ? 1 : 0;
+  r.residual = tm.residual, r.factorizations = tm.factorizations;
   r.tip_uy = nodalMean(run_.model_.fullVector(s_.u), run_.tip_nodes_, 1, -1);
   run_.res_.steps.push_back(r);
 }

@@ -118,6 +118,16 @@ PetscErrorCode FemdynRun::readIntegratorOptions(PetscOptionItems* PetscOptionsOb
   PetscCall(o("-newton_atol", "Newton absolute residual tolerance", &nm.newton_atol));
   PetscCall(o("-jacobian", "Newton matrix", suite::fem::jacobianChoices(), &opt_.jacobian));
   PetscCall(o("-newton_predictor", "Newton start", suite::fem::predictorChoices(), &opt_.predictor));
+  PetscCall(o("-lagged_refresh_contraction",
+              "-jacobian lagged: refactorise when an iteration contracts the residual by less than this",
+              &nm.refresh_contraction));
+  PetscCall(o("-lagged_refresh_iterations",
+              "-jacobian lagged: refactorise after this many corrections with one factorisation in a step",
+              &nm.refresh_iterations));
+  PetscCall(o("-newton_max_corrections",
+              "Work cap: at most this many Newton corrections per step, then the step is accepted with its "
+              "residual recorded (0: no cap)",
+              &nm.max_corrections));
   PetscCall(o("-mass", "Mass matrix", suite::fem::massChoices(), &opt_.mass));
   PetscCall(o("-rayleigh_alpha", "Rayleigh damping C = alpha M + beta K0: alpha", &nm.rayleigh_mass));
   PetscCall(o("-rayleigh_beta", "Rayleigh damping: beta", &nm.rayleigh_stiffness));
@@ -165,6 +175,11 @@ PetscErrorCode FemdynRun::checkOptions() const {
              "-plex_rank_cap %d: must be >= 0 (0: no cap)", (int)opt_.plex_rank_cap);
   PetscCheck(opt_.plex_rank_cap == 0 || opt_.backend == "plex", comm, PETSC_ERR_ARG_INCOMP,
              "-plex_rank_cap applies to -backend plex only (the backend is %s)", opt_.backend.c_str());
+  const auto& nm = opt_.newmark;
+  PetscCheck(nm.refresh_contraction > 0 && nm.refresh_contraction < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-lagged_refresh_contraction %g: must be in (0, 1)", nm.refresh_contraction);
+  PetscCheck(nm.refresh_iterations >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-lagged_refresh_iterations %d: must be >= 1", nm.refresh_iterations);
   PetscCall(checkMaterialAuto());
   PetscFunctionReturn(0);
 }
@@ -200,6 +215,7 @@ PetscErrorCode FemdynRun::readOptions() {
   PetscCall(checkOptions());
   auto& nm = opt_.newmark;
   nm.initial_jacobian = opt_.jacobian == "initial";
+  nm.lagged = opt_.jacobian == "lagged";
   nm.tangent_predictor = opt_.predictor == "tangent";
   if (opt_.time_scheme == "generalized_alpha") nm = suite::fem::generalizedAlpha(nm, opt_.rho_inf);
   PetscCall(checkTimeAdapt()); // after the scheme's beta is final

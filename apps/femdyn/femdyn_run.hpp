@@ -54,8 +54,8 @@ struct Options {
 };
 
 struct StepRecord {
-  double time, assemble, factor, solve, total, cpu, kinetic, strain, external, tip_uy;
-  int newton, rejected, converged;
+  double time, assemble, factor, solve, total, cpu, kinetic, strain, external, tip_uy, residual;
+  int newton, rejected, converged, factorizations;
 };
 // Its columns, in the order of /steps and of the checkpoint's history: the reals, then the counts.
 template <class T> struct StepColumn {
@@ -72,10 +72,12 @@ inline constexpr StepColumn<double> kStepReals[] = {{"time", &StepRecord::time, 
                                                     {"kinetic_energy", &StepRecord::kinetic, "J"},
                                                     {"strain_energy", &StepRecord::strain, "J"},
                                                     {"external_work", &StepRecord::external, "J"},
-                                                    {"tip_deflection", &StepRecord::tip_uy, "m"}};
+                                                    {"tip_deflection", &StepRecord::tip_uy, "m"},
+                                                    {"residual", &StepRecord::residual, "N"}};
 inline constexpr StepColumn<int> kStepCounts[] = {{"newton_iterations", &StepRecord::newton, ""},
                                                   {"rejected", &StepRecord::rejected, ""},
-                                                  {"converged", &StepRecord::converged, ""}};
+                                                  {"converged", &StepRecord::converged, ""},
+                                                  {"factorizations", &StepRecord::factorizations, ""}};
 
 struct Results {
   std::string status = "completed"; // the output's status attribute (core/run_summary.hpp)

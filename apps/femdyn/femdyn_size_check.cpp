@@ -36,8 +36,8 @@ PetscErrorCode FemdynRun::checkIntegerOptions() const {
   MPI_Comm comm = ctx_.comm();
   PetscFunctionBeginUser;
   PetscCall(suite::checkIntListOptionRange(comm, "-beam_cells", 1));
-  for (const char* name :
-       {"-order", "-steps", "-load_steps", "-snapshot_every", "-newton_max_it", "-max_halvings"})
+  for (const char* name : {"-order", "-steps", "-load_steps", "-snapshot_every", "-newton_max_it",
+                           "-max_halvings", "-lagged_refresh_iterations", "-newton_max_corrections"})
     PetscCall(suite::checkIntOptionRange(comm, name, 0));
   PetscFunctionReturn(0);
 }

@@ -1,27 +1,47 @@
 // Corotational linear elasticity: polar decomposition F = R U, eps = U - I, W = lambda/2 tr(eps)^2 + mu
 // eps:eps, P = R sigma(eps); tangent approximated by the rotated small-strain tangent R C R^T (the dR term is
 // dropped, as in Mueller & Gross, "Interactive virtual materials", GI 2004, and Hauth & Strasser 2004).
+// R by Higham's scaled Newton iteration (Higham, SIAM J. Sci. Stat. Comput. 7 (1986) 1160, sec. 3); for an
+// isotropic C the element tangent of R C R^T is the closed form of addStVKElementTangent with F = R, S = 0.
 #include "fem/material.hpp"
+
+#include <cmath>
 
 namespace suite::fem {
 namespace {
+
+// R of F = R U with det F <= 0 too (the smallest stretch takes the sign), through the SVD.
+Mat3 rotationBySvd(const Mat3& F) {
+  Eigen::JacobiSVD<Mat3> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 U = svd.matrixU(), V = svd.matrixV();
+  if (U.determinant() * V.determinant() < 0) U.col(2) *= -1;
+  return U * V.transpose();
+}
+
+// X <- (g X + X^-T / g) / 2 from X = F (det F > 0), g = (|X^-1|_F / |X|_F)^(1/2) while the update is large
+// (Higham's scaling), g = 1 near convergence. Quadratic: once the update is below 1e-8 |X| the next iterate is
+// at round-off, so the loop stops after that update (3-5 iterations at the strains of elastic bodies).
+Mat3 polarRotation(const Mat3& F) {
+  if (!(F.determinant() > 0)) return rotationBySvd(F);
+  Mat3 X = F;
+  double update = 1;
+  for (int it = 0; it < 40 && update > 1e-8; ++it) {
+    const Mat3 Xit = X.inverse().transpose();
+    const double g = update > 1e-2 ? std::sqrt(Xit.norm() / X.norm()) : 1.0;
+    const Mat3 next = 0.5 * (g * X + Xit / g);
+    update = (next - X).norm() / next.norm();
+    X = next;
+  }
+  return X;
+}
+
 class Corotational final : public Material {
 public:
   explicit Corotational(Lame l) : Material(l), C_(isotropicTangent(l)) {}
   const char* name() const override { return "corotational"; }
   void evaluate(const Mat3& F, double* W, Mat3* P, Tangent* A) const override {
-    Eigen::JacobiSVD<Mat3> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Mat3 U = svd.matrixU(), V = svd.matrixV();
-    Eigen::Vector3d s = svd.singularValues();
-    if (U.determinant() * V.determinant() < 0) { // proper rotation; the smallest stretch takes the sign
-      U.col(2) *= -1;
-      s(2) *= -1;
-    }
-    const Mat3 R = U * V.transpose();
-    const Mat3 eps = V * s.asDiagonal() * V.transpose() - Mat3::Identity();
-    const double tr = eps.trace();
-    *P = R * (lame_.lambda * tr * Mat3::Identity() + 2 * lame_.mu * eps);
-    *W = 0.5 * lame_.lambda * tr * tr + lame_.mu * eps.squaredNorm();
+    const Mat3 R = polarRotation(F);
+    stress(F, R, W, P);
     if (!A) return;
     Tangent Rb = Tangent::Zero(); // (R (x) I): maps index (a,J) -> (i,J) with R_ia
     for (int i = 0; i < 3; ++i)
@@ -29,8 +49,25 @@ public:
         for (int J = 0; J < 3; ++J) Rb(3 * i + J, 3 * a + J) = R(i, a);
     *A = Rb * C_ * Rb.transpose();
   }
+  void addElementTangent(const Mat3& F, const double* g, int nen, double w, double* ke) const override {
+    addStVKElementTangent(polarRotation(F), Mat3::Zero(), lame_, g, nen, w, ke);
+  }
+  void evaluateWithTangent(const Mat3& F, const double* g, int nen, double w, double* W, Mat3* P,
+                           double* ke) const override {
+    const Mat3 R = polarRotation(F);
+    stress(F, R, W, P);
+    addStVKElementTangent(R, Mat3::Zero(), lame_, g, nen, w, ke);
+  }
 
 private:
+  // eps = sym(R^T F) - I (R^T F = U, symmetric up to round-off), P = R sigma(eps), W.
+  void stress(const Mat3& F, const Mat3& R, double* W, Mat3* P) const {
+    const Mat3 U = R.transpose() * F;
+    const Mat3 eps = 0.5 * (U + U.transpose()) - Mat3::Identity();
+    const double tr = eps.trace();
+    *P = R * (lame_.lambda * tr * Mat3::Identity() + 2 * lame_.mu * eps);
+    *W = 0.5 * lame_.lambda * tr * tr + lame_.mu * eps.squaredNorm();
+  }
   Tangent C_;
 };
 } // namespace

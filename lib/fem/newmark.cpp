@@ -141,8 +141,13 @@ struct Newmark::Attempt {
   std::vector<double> up, vp, un, an, vn;
   const double* ueval = nullptr; // where the force is evaluated: un, or ua_
   bool chord = false;            // the tangent predictor's correction applies
-  bool factored = false; // this attempt refactorised (the state's u_tangent no longer matches the solver)
-  double ref = 0;        // the residual the relative Newton test refers to
+  bool factored = false;    // this attempt refactorised (the state's u_tangent no longer matches the solver)
+  double ref = 0;           // the residual the relative Newton test refers to
+  bool lagged = false;      // -jacobian lagged: refactorise only when the refresh rule asks
+  int lag_its = 0;          // lagged: corrections with the factorisation held now, in this attempt
+  int corrections = 0;      // corrections applied in this attempt (the work cap)
+  double r_last = 0, q = 0; // |r| of the last iterate and its contraction |r_k| / |r_{k-1}| (0 at k = 0)
+  double tol = 0;           // the Newton test's bound max(atol, rtol ref)
 };
 
 PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, bool* ok) {
@@ -152,6 +157,7 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
   a.alpha = p_.alpha_m != 0 || p_.alpha_f != 0;
   a.reuse = sys_->isLinear() || p_.initial_jacobian;
   a.exact_after_one = sys_->isLinear();
+  a.lagged = p_.lagged && !a.reuse;
   predict(a);
   *ok = true;
   tm->converged = false;
@@ -160,7 +166,8 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
     // The tangent is assembled with the force (one element loop) at the iterates where another iteration is
     // expected (the first, and as many as the last accepted step needed); at the others the force comes alone
     // first and the tangent only if another iteration follows. Either way the force and tangent are the same.
-    const bool fused = !a.reuse && (it == 0 || it < last_newton_);
+    // Lagged: the tangent comes with the force only where a refresh is certain (no factorisation for this dt).
+    const bool fused = a.lagged ? it == 0 && refreshDue(a) : !a.reuse && (it == 0 || it < last_newton_);
     Verdict v;
     PetscCall(testIterate(a, it, fused, &v));
     if (v == Verdict::iterate) PetscCall(refactorize(a, it, fused, &v));
@@ -171,6 +178,11 @@ PetscErrorCode Newmark::attempt(NewmarkState* s, double dt, StepTimings* tm, boo
     }
     PetscCall(applyCorrection(a));
     ++tm->newton_iterations;
+    if (p_.max_corrections > 0 && ++a.corrections >= p_.max_corrections) {
+      PetscCall(acceptCapped(a, ok));
+      if (!*ok) PetscFunctionReturn(0);
+      break;
+    }
     if ((a.exact_after_one && it == 0) || p_.newton_max_it == 1) {
       tm->converged = a.exact_after_one;
       break;
@@ -196,7 +208,7 @@ void Newmark::predict(Attempt& a) {
   fext_(a.alpha ? s->t + (1 - af) * dt : s->t + dt, fe_.data());
   if (p_.partial_sums && rank_ > 0) std::fill(fe_.begin(), fe_.end(), 0.0);
   a.ueval = a.alpha ? ua_.data() : a.un.data();
-  a.chord = p_.tangent_predictor && !a.reuse && p_.newton_max_it > 1 && keff_current_ &&
+  a.chord = p_.tangent_predictor && !a.reuse && !a.lagged && p_.newton_max_it > 1 && keff_current_ &&
             s->dt_tangent == dt && static_cast<int>(s->u_tangent.size()) == n;
 }
 
@@ -284,7 +296,10 @@ PetscErrorCode Newmark::testIterate(Attempt& a, int it, bool fused, Verdict* v) 
 Newmark::Verdict Newmark::convergence(Attempt& a, int it) {
   const double rn = norm2(r_);
   a.tm->residual = rn;
+  a.q = it > 0 && a.r_last > 0 ? rn / a.r_last : 0;
+  a.r_last = rn;
   if (it == 0 && !a.chord) a.ref = rn; // with the correction: the predictor's residual, as without it
+  a.tol = std::max(p_.newton_atol, p_.newton_rtol * a.ref);
   if (rn <= p_.newton_atol || (it > 0 && rn <= p_.newton_rtol * a.ref)) {
     a.tm->converged = true;
     return Verdict::converged;
@@ -308,6 +323,10 @@ Newmark::Verdict Newmark::convergence(Attempt& a, int it) {
 PetscErrorCode Newmark::refactorize(Attempt& a, int it, bool fused, Verdict* v) {
   PetscFunctionBeginUser;
   bool ok = true;
+  if (a.lagged && !refreshDue(a)) { // the factorisation held serves this correction
+    ++a.lag_its;
+    PetscFunctionReturn(0);
+  }
   if (!a.reuse && !fused) {
     const double t0 = now();
     double e;
@@ -318,8 +337,8 @@ PetscErrorCode Newmark::refactorize(Attempt& a, int it, bool fused, Verdict* v) 
     PetscCall(factorEffective(a.dt, a.reuse ? K0_ : Kt_, a.tm, &ok));
     factored_dt_ = (a.reuse && ok) ? a.dt : -1;
     if (!a.reuse) {
-      a.factored = true, keff_current_ = false;
-      if (p_.tangent_predictor) u_factored_.assign(a.ueval, a.ueval + Keff_.n);
+      a.factored = true, keff_current_ = false, a.lag_its = 1;
+      if (p_.tangent_predictor || p_.lagged) u_factored_.assign(a.ueval, a.ueval + Keff_.n);
     }
   }
   if (!ok) {
@@ -340,6 +359,38 @@ PetscErrorCode Newmark::applyCorrection(Attempt& a) {
   PetscFunctionReturn(0);
 }
 
+// Lagged: refactorise before this correction? When the solver holds no K_eff for this dt (none yet, or the dt
+// changed); after the first correction with the factorisation held, when the last iterate contracted the
+// residual by less than refresh_contraction (q = |r_k| / |r_{k-1}|), or when the corrections made with it
+// plus those the contraction predicts to reach the Newton test, log(tol / |r_k|) / log(q) (a linearly
+// converging chord iteration; Hairer & Wanner, Solving ODEs II, 1996, sec. IV.8), exceed refresh_iterations.
+bool Newmark::refreshDue(const Attempt& a) const {
+  const bool held = a.factored || (keff_current_ && a.s->dt_tangent == a.dt);
+  if (!held) return true;
+  if (a.lag_its == 0) return false;
+  if (a.q > p_.refresh_contraction || a.lag_its >= p_.refresh_iterations) return true;
+  const double predicted = std::log(a.tol / a.r_last) / std::log(a.q);
+  return a.lag_its + predicted > p_.refresh_iterations;
+}
+
+// The work cap reached: the residual at the last iterate (one force evaluation) is recorded and the step is
+// accepted whether or not it passes the Newton test; rejected only if that iterate inverts an element.
+PetscErrorCode Newmark::acceptCapped(Attempt& a, bool* ok) {
+  PetscFunctionBeginUser;
+  bool admissible;
+  PetscCall(residualAt(a, false, &admissible));
+  if (!admissible) {
+    reject(a, "an element inverts (det F <= 0) at the work cap's last iterate");
+    *ok = false;
+    PetscFunctionReturn(0);
+  }
+  const double rn = norm2(r_);
+  a.tm->residual = rn;
+  a.tm->converged = rn <= p_.newton_atol || rn <= p_.newton_rtol * a.ref;
+  a.tm->capped = !a.tm->converged;
+  PetscFunctionReturn(0);
+}
+
 // A rejected attempt: why, and the solver no longer holds the last step's K_eff if this attempt refactorised.
 void Newmark::reject(const Attempt& a, const std::string& why) {
   reject_reason_ = why;
@@ -354,7 +405,7 @@ void Newmark::accept(Attempt& a) {
   s->u.swap(a.un), s->v.swap(a.vn), s->a.swap(a.an);
   s->t += a.dt;
   last_newton_ = a.tm->newton_iterations;
-  if (a.factored && p_.tangent_predictor) {
+  if (a.factored && (p_.tangent_predictor || p_.lagged)) {
     s->u_tangent = u_factored_;
     s->dt_tangent = a.dt;
     keff_current_ = true;
@@ -365,7 +416,7 @@ PetscErrorCode Newmark::restoreTangent(const NewmarkState& s) {
   PetscFunctionBeginUser;
   keff_current_ = false;
   const bool reuse = sys_->isLinear() || p_.initial_jacobian;
-  if (!p_.tangent_predictor || reuse || s.u_tangent.size() != static_cast<size_t>(Keff_.n))
+  if (!(p_.tangent_predictor || p_.lagged) || reuse || s.u_tangent.size() != static_cast<size_t>(Keff_.n))
     PetscFunctionReturn(0);
   PetscCheck(s.dt_tangent > 0, comm_, PETSC_ERR_ARG_WRONG, "tangent predictor: stored dt %g must be > 0",
              s.dt_tangent);
@@ -516,7 +567,10 @@ std::vector<suite::Choice> timeSchemeChoices() {
 }
 
 std::vector<suite::Choice> jacobianChoices() {
-  return {{"tangent", "full Newton: the current tangent"}, {"initial", "K0: factorised once per dt"}};
+  return {{"tangent", "full Newton: the current tangent"},
+          {"initial", "K0: factorised once per dt"},
+          {"lagged", "modified Newton: the last factorised tangent, refreshed by -lagged_refresh_contraction "
+                     "and -lagged_refresh_iterations"}};
 }
 
 std::vector<suite::Choice> predictorChoices() {

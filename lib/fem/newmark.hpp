@@ -30,6 +30,18 @@ struct NewmarkParams {
   // refactorised every iteration) and so is the stopping test (relative to the residual at the
   // constant-acceleration predictor, as without the correction); at least one Newton iteration is done.
   bool tangent_predictor = false;
+  // Lagged tangent (modified Newton, -jacobian lagged): every correction solves with the effective tangent
+  // factorised last, possibly at an earlier step; it is refreshed (the consistent tangent assembled at the
+  // iterate and refactorised before the correction) only when there is none for this dt, or, after the first
+  // correction with it in a step, when the residual contraction q = |r_k| / |r_{k-1}| exceeds
+  // refresh_contraction or when the corrections made with it plus those q predicts to reach the Newton test
+  // exceed refresh_iterations (Newmark::refreshDue). The stopping test is Newton's.
+  bool lagged = false;
+  double refresh_contraction = 0.5;
+  int refresh_iterations = 6;
+  // Work cap (0: none): at most max_corrections corrections per step; then the step is accepted with the
+  // residual at its last iterate recorded (StepTimings::residual, converged = false), never rejected for it.
+  int max_corrections = 0;
   // Distributed assembly: the system's force, tangent, energy and the mass are this rank's partial sums; the
   // residual (and energies, admissibility) are summed over the ranks of comm; the external force counts once.
   bool partial_sums = false;
@@ -50,7 +62,8 @@ std::vector<suite::Choice> massChoices();
 struct StepTimings { // CPU seconds of the calling thread (core/clocks.hpp)
   double assemble = 0, factor = 0, solve = 0;
   int newton_iterations = 0, factorizations = 0, rejected = 0;
-  double residual = 0;
+  double residual = 0; // |r| at the accepted iterate
+  bool capped = false; // the work cap ended a step (max_corrections)
   bool converged = true;
 };
 
@@ -100,6 +113,8 @@ private:
   Verdict convergence(Attempt& a, int it);
   PetscErrorCode refactorize(Attempt& a, int it, bool fused, Verdict* v);
   PetscErrorCode applyCorrection(Attempt& a);
+  bool refreshDue(const Attempt& a) const;
+  PetscErrorCode acceptCapped(Attempt& a, bool* ok);
   void reject(const Attempt& a, const std::string& why);
   void accept(Attempt& a);
   PetscErrorCode factorEffective(double dt, const std::vector<double>& Kt, StepTimings* tm, bool* ok);

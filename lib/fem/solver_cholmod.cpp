@@ -1,9 +1,14 @@
 // CHOLMOD supernodal Cholesky (Chen, Davis, Hager & Rajamanickam, ACM TOMS 35 (2008) 22): the symbolic
 // analysis with the given ordering (CHOLMOD_GIVEN, postordered) is done once per pattern; each factor() is a
-// numeric refactorisation only.
+// numeric refactorisation only. Debian's CHOLMOD runs a few of its loops (copies into the supernodes) in
+// OpenMP regions with a fixed team of 4 threads, whatever OMP_NUM_THREADS says: on one core, or beside other
+// work, those threads wait for each other and the factorisation's wall time doubles. The factorisation runs
+// with OpenMP switched off (max-active-levels 0 for the call: every region has one thread) unless
+// -cholmod_openmp is given.
 #include "fem/linear_solver.hpp"
 
 #include <cholmod.h>
+#include <omp.h>
 
 namespace suite::fem {
 namespace {
@@ -28,6 +33,18 @@ public:
   }
   const char* name() const override { return "cholmod"; }
 
+  PetscErrorCode setFromOptions(MPI_Comm comm) override {
+    PetscBool on = openmp_ ? PETSC_TRUE : PETSC_FALSE;
+    PetscFunctionBeginUser;
+    PetscOptionsBegin(comm, nullptr, "CHOLMOD (-solver cholmod)", nullptr);
+    PetscCall(PetscOptionsBool("-cholmod_openmp",
+                               "Let CHOLMOD run its OpenMP loops (a team of 4 threads in Debian's build)", "",
+                               on, &on, nullptr));
+    PetscOptionsEnd();
+    openmp_ = on == PETSC_TRUE;
+    PetscFunctionReturn(0);
+  }
+
   PetscErrorCode analyze(MPI_Comm comm, const SymCsc& A, const std::vector<int>& perm) override {
     PetscFunctionBeginUser;
     PetscCheck(isPermutation(perm, A.n), comm, PETSC_ERR_ARG_WRONG,
@@ -47,7 +64,10 @@ public:
   PetscErrorCode factor(const SymCsc& A, bool* ok) override {
     PetscFunctionBeginUser;
     cholmod_sparse S = view(A);
+    const int levels = omp_get_max_active_levels();
+    if (!openmp_) omp_set_max_active_levels(0); // every OpenMP region of the call runs on this thread
     cholmod_factorize(&S, L_, &cm_);
+    if (!openmp_) omp_set_max_active_levels(levels);
     *ok = cm_.status == CHOLMOD_OK && L_->minor == L_->n;
     PetscFunctionReturn(0);
   }
@@ -94,6 +114,7 @@ private:
   cholmod_dense *X_ = nullptr, *Y_ = nullptr, *E_ = nullptr;
   std::vector<int> perm_;
   int n_ = 0;
+  bool openmp_ = false;
   FactorStats stats_;
 };
 

@@ -153,27 +153,29 @@ def main():
         check(same(state(p("pr.h5")), state(p("pref.h5"))) and all(np.array_equal(x, y) for x, y in zip(a, b))
               and len(b[3]) == 400, "probe run restarted at step 8: state and probe histories equal bitwise")
 
-        # Tangent predictor (-newton_predictor tangent): the factorisation it reuses is part of the state (point
-        # and dt of the last factorised tangent); a restart refactorises it and continues bitwise, with and
-        # without the probe (whose penalty enters that tangent).
-        for extra in ([], ["-probe", "-probe_stiffness", 100]):
-            tp = ["-newton_predictor", "tangent", "-steps", 20, *extra]
-            label = "probe run" if extra else "run"
-            run(*tp, "-output", p("tref.h5"), "-quiet")
-            cdir = p("ct_probe" if extra else "ct")
-            run(*tp, "-checkpoint_dir", cdir, "-checkpoint_every", 8, "-checkpoint_keep", 3, "-output", p("ta.h5"),
-                "-quiet")
-            run(*tp, "-restart", os.path.join(cdir, "femdyn_0000000008.h5"), "-output", p("tr.h5"), "-quiet")
-            ref_t = state(p("tref.h5"))
-            with h5py.File(os.path.join(cdir, "femdyn_0000000008.h5"), "r") as f:
-                has = "u_tangent" in f["fields"] and "dt_tangent" in f["fields"]
-            check(has and same(state(p("ta.h5")), ref_t) and same(state(p("tr.h5")), ref_t),
-                  f"tangent predictor {label} restarted at step 8: equals the uninterrupted run bitwise")
+        # Tangent predictor (-newton_predictor tangent) and lagged tangent (-jacobian lagged): the factorisation
+        # they reuse is part of the state (point and dt of the last factorised tangent); a restart refactorises
+        # it and continues bitwise, with and without the probe (whose penalty enters that tangent).
+        for mode in (["-newton_predictor", "tangent"], ["-jacobian", "lagged"]):
+            for extra in ([], ["-probe", "-probe_stiffness", 100]):
+                tp = [*mode, "-steps", 20, *extra]
+                label = f"{' '.join(mode)} {'probe run' if extra else 'run'}"
+                run(*tp, "-output", p("tref.h5"), "-quiet")
+                cdir = p(f"ct_{mode[1]}{'_probe' if extra else ''}")
+                run(*tp, "-checkpoint_dir", cdir, "-checkpoint_every", 8, "-checkpoint_keep", 3, "-output",
+                    p("ta.h5"), "-quiet")
+                run(*tp, "-restart", os.path.join(cdir, "femdyn_0000000008.h5"), "-output", p("tr.h5"), "-quiet")
+                ref_t = state(p("tref.h5"))
+                with h5py.File(os.path.join(cdir, "femdyn_0000000008.h5"), "r") as f:
+                    has = "u_tangent" in f["fields"] and "dt_tangent" in f["fields"]
+                check(has and same(state(p("ta.h5")), ref_t) and same(state(p("tr.h5")), ref_t),
+                      f"{label} restarted at step 8: equals the uninterrupted run bitwise")
 
         # Refusals: another mesh, other physics.
         for args, pattern in ((["-beam_cells", "9,2,2"], r"restart .*grid"),
                               (["-young", "2000"], r"restart .*written with scheme"),
-                              (["-newton_predictor", "tangent"], r"restart .*written with scheme")):
+                              (["-newton_predictor", "tangent"], r"restart .*written with scheme"),
+                              (["-jacobian", "lagged"], r"restart .*written with scheme")):
             q = run("-steps", 30, "-restart", p("c1/femdyn_0000000014.h5"), "-output", p("bad.h5"), *args,
                     check_rc=False)
             check(q.returncode != 0 and len(re.findall(pattern, q.stdout)) == 1,

@@ -6,6 +6,7 @@
 // predictor (to the Newton tolerance), with fewer iterations, and restoreTangent() after a "restart"
 // continues bitwise like the uninterrupted run.
 #include "fem_test_util.hpp"
+#include "newmark_test_chain.hpp"
 
 #include "fem/linear_solver.hpp"
 #include "fem/newmark.hpp"
@@ -17,6 +18,7 @@
 #include <random>
 
 using namespace suite::fem;
+using namespace femtest;
 
 namespace {
 // Upper triangle: column c has rows f_c..c with f_c = c - w_c, w_c in [wmin, wmax] (a ragged envelope),
@@ -96,51 +98,8 @@ TEST(FemBanded, BlockedReportsNotPositiveDefinite) {
   EXPECT_FALSE(ok);
 }
 
-namespace {
-// Two masses on hardening springs (ground - m1 - m2): f = K u + c (u_1^3, (u_2 - u_1)^3 terms), SPD tangent.
-class CubicChain final : public SecondOrderSystem {
-public:
-  CubicChain() { K_.n = 2, K_.colptr = {0, 1, 3}, K_.rowind = {0, 0, 1}, K_.val = {0, 0, 0}; }
-  const SymCsc& pattern() const override { return K_; }
-  bool internalForce(const double* u, double* f, std::vector<double>* K, double* energy) override {
-    const double d = u[1] - u[0];
-    const double s1 = u[0] + c_ * u[0] * u[0] * u[0], s2 = d + c_ * d * d * d;
-    f[0] = s1 - s2, f[1] = s2;
-    const double k1 = 1 + 3 * c_ * u[0] * u[0], k2 = 1 + 3 * c_ * d * d;
-    if (K) *K = {k1 + k2, -k2, k2};
-    if (energy)
-      *energy =
-          0.5 * u[0] * u[0] + 0.25 * c_ * u[0] * u[0] * u[0] * u[0] + 0.5 * d * d + 0.25 * c_ * d * d * d * d;
-    return true;
-  }
-
-private:
-  SymCsc K_;
-  double c_ = 20.0;
-};
-
-struct ChainRun {
-  CubicChain sys;
-  std::unique_ptr<LinearSolver> solver = makeBandedSolver();
-  Newmark nm;
-  NewmarkState s;
-  explicit ChainRun(bool tangent) {
-    NewmarkParams p;
-    p.newton_rtol = 1e-10;
-    p.newton_atol = 0;
-    p.tangent_predictor = tangent;
-    EXPECT_EQ(solver->analyze(PETSC_COMM_SELF, sys.pattern(), {0, 1}), 0);
-    EXPECT_EQ(nm.setup(PETSC_COMM_SELF, &sys, solver.get(), {1.0, 0.0, 1.0}, p,
-                       [](double t, double* f) { f[0] = 0, f[1] = 2 * std::sin(3 * t); }),
-              0);
-    s.u = {0.0, 0.0}, s.v = {1.5, -1.0};
-    EXPECT_EQ(nm.initialize(&s), 0);
-  }
-};
-} // namespace
-
 TEST(FemNewmark, TangentPredictorIsFullNewtonWithFewerIterations) {
-  ChainRun ca(false), tp(true);
+  ChainRun ca(chainParams(false)), tp(chainParams(true));
   const double dt = 0.05;
   int it_ca = 0, it_tp = 0;
   double umax = 0, diff = 0;
@@ -165,7 +124,7 @@ TEST(FemNewmark, TangentPredictorIsFullNewtonWithFewerIterations) {
 }
 
 TEST(FemNewmark, TangentPredictorRestoredAfterRestartIsBitwise) {
-  ChainRun full(true), first(true);
+  ChainRun full(chainParams(true)), first(chainParams(true));
   const double dt = 0.05;
   StepTimings tm;
   for (int k = 0; k < 60; ++k) ASSERT_EQ(full.nm.step(&full.s, dt, &tm), 0);
@@ -173,7 +132,7 @@ TEST(FemNewmark, TangentPredictorRestoredAfterRestartIsBitwise) {
   ASSERT_EQ(first.s.u_tangent.size(), 2u);
   EXPECT_EQ(first.s.dt_tangent, dt);
   // "Restart": a new integrator and solver from the saved state only.
-  ChainRun second(true);
+  ChainRun second(chainParams(true));
   second.s = first.s;
   ASSERT_EQ(second.nm.restoreTangent(second.s), 0);
   for (int k = 25; k < 60; ++k) ASSERT_EQ(second.nm.step(&second.s, dt, &tm), 0);
@@ -183,7 +142,7 @@ TEST(FemNewmark, TangentPredictorRestoredAfterRestartIsBitwise) {
     EXPECT_EQ(second.s.a[i], full.s.a[i]);
   }
   // Without the restore the first step after the restart starts from the plain predictor: not bitwise.
-  ChainRun third(true);
+  ChainRun third(chainParams(true));
   third.s = first.s;
   for (int k = 25; k < 60; ++k) ASSERT_EQ(third.nm.step(&third.s, dt, &tm), 0);
   EXPECT_NE(third.s.u[0], full.s.u[0]);
