@@ -191,20 +191,38 @@ def read_csv(path):
 
 
 def plot_rate(csv_path, outdir=".", output=None):
+    """Hz against DOF per method; with an `error` column (the real-time benchmark) also Hz against the
+    tip-history error per case, one marker per ordering/solver."""
     rows = read_csv(csv_path)
     plt = _plt()
     methods = sorted({r["method"] for r in rows})
-    fig, axes = plt.subplots(1, len(methods), figsize=(5 * len(methods), 4), squeeze=False)
+    cases = sorted({r["case"] for r in rows if r.get("error") not in (None, "")})
+    ncol = max(len(methods), len(cases))
+    nrow = 2 if cases else 1
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.5 * ncol, 4 * nrow), squeeze=False)
     for ax, m in zip(axes[0], methods):
         for key in sorted({(r["ordering"], r["solver"]) for r in rows if r["method"] == m}):
             sel = [r for r in rows if r["method"] == m and (r["ordering"], r["solver"]) == key]
-            for case_marker, case in zip("os^v", sorted({r["case"] for r in sel})):
+            for case_marker, case in zip("os^v<>", sorted({r["case"] for r in sel})):
                 pts = [r for r in sel if r["case"] == case]
                 ax.plot([r["dofs"] for r in pts], [r["hz"] for r in pts], case_marker,
                         label=f"{key[0]}/{key[1]} {case}")
         ax.axhline(50, color="gray", ls=":")
         ax.set(xlabel="DOF", ylabel="steps per second (Hz)", yscale="log", title=m)
+        ax.legend(fontsize=5)
+    for ax in axes[0][len(methods):]:
+        ax.axis("off")
+    for ax, case in zip(axes[1] if cases else [], cases):
+        sel = [r for r in rows if r["case"] == case and r.get("error") not in (None, "")]
+        for m, marker in zip(sorted({r["method"] for r in sel}), "osv^<>Dp"):
+            pts = [r for r in sel if r["method"] == m]
+            ax.plot([max(r["error"], 1e-16) for r in pts], [r["hz"] for r in pts], marker, label=m)
+        ax.axvline(1e-6, color="gray", ls=":")
+        ax.set(xlabel="tip-history error vs full Newton (rtol 1e-12)", ylabel="Hz (one core)", xscale="log",
+               yscale="log", title=case)
         ax.legend(fontsize=6)
+    for ax in (axes[1][len(cases):] if cases else []):
+        ax.axis("off")
     fig.tight_layout()
     png = figure_file(outdir, "fem_rate.png", output)
     fig.savefig(png, dpi=120)

@@ -27,6 +27,15 @@ def test_rate_and_orderings_figures(tmp_path):
         for dofs, hz in ((1000, 400.0), (5000, 60.0)):
             w.writerow(["beam", "stvk-newton", "rcm", "cholmod", dofs, hz])
     assert main(["fem-rate", str(rate), "--outdir", str(tmp_path)]) == 0
+    # the real-time benchmark's rows: an error column, one panel of Hz against error per case
+    with open(rate, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "method", "ordering", "solver", "dofs", "hz", "error"])
+        for m, hz, err in (("stvk-newton", 30.0, 1e-9), ("stvk-lagged", 120.0, 3e-7), ("linear-fixed", 900.0, "")):
+            w.writerow(["block-5k", m, "metis", "cholmod", 4860, hz, err])
+    out = tmp_path / "rt"
+    assert main(["fem-rate", str(rate), "--outdir", str(out)]) == 0
+    assert (out / "fem_rate.png").stat().st_size > 1000
     orders = tmp_path / "orders.csv"
     with open(orders, "w", newline="") as f:
         w = csv.writer(f)

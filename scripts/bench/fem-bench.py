@@ -18,21 +18,23 @@ RATE_CASES = [
     ("beam-1k", ["-beam_cells", "37,2,2", "-beam_length", 18.5], 5),
     ("beam-5k", ["-beam_cells", "104,3,3", "-beam_length", 104 / 3], 5),
     ("block-5k", ["-beam_cells", "20,8,8", "-beam_length", 2.5], 5),
-    ("ellipsoid-5k", ["-mesh", "file", "-mesh_file", MESHES / "ellipsoid_5k.msh", "-dirichlet", "x=-1.6"], 200),
-    ("ellipsoid-20k", ["-mesh", "file", "-mesh_file", MESHES / "ellipsoid_20k.msh", "-dirichlet", "x=-1.6"], 200),
+    ("ellipsoid-5k", ["-mesh", "file", "-mesh_file", MESHES / "ellipsoid_5k.msh", "-dirichlet", "x=-1.6"], 20),
+    ("ellipsoid-20k", ["-mesh", "file", "-mesh_file", MESHES / "ellipsoid_20k.msh", "-dirichlet", "x=-1.6"], 20),
 ]
 RTOL = ["-newton_rtol", "1e-6"]
+LOOSE = ["-newton_rtol", "1e-4"]  # the lagged modes' default here: tip-history error ~1e-7 (the error column)
 RATE_METHODS = [
     # label, material, options; the error of the tip history is against the same material's reference
     ("stvk-newton", "stvk", RTOL),
     # the same full Newton started from the predictor corrected with the last step's factorisation (one solve)
     ("stvk-newton-tp", "stvk", [*RTOL, "-newton_predictor", "tangent"]),
     # modified Newton: the last factorisation, refreshed by the contraction / iteration rule
-    ("stvk-lagged", "stvk", ["-jacobian", "lagged", *RTOL]),
-    # the same with the work cap of a haptic loop: at most 2 corrections per step
-    ("stvk-lagged-cap2", "stvk", ["-jacobian", "lagged", *RTOL, "-newton_max_corrections", "2"]),
+    ("stvk-lagged", "stvk", ["-jacobian", "lagged", *LOOSE]),
+    ("stvk-lagged-tight", "stvk", ["-jacobian", "lagged", *RTOL]),
+    # the work cap of a haptic loop: at most 2 corrections per step
+    ("stvk-lagged-cap2", "stvk", ["-jacobian", "lagged", *LOOSE, "-newton_max_corrections", "2"]),
     ("corot-initial", "corotational", ["-jacobian", "initial", *RTOL]),
-    ("corot-lagged", "corotational", ["-jacobian", "lagged", *RTOL]),
+    ("corot-lagged", "corotational", ["-jacobian", "lagged", *LOOSE]),
     ("linear-fixed", "linear", ["-mass", "lumped"]),
 ]
 # the reference of each nonlinear material: full Newton at a tight tolerance
