@@ -122,7 +122,8 @@ PetscErrorCode FemdynRun::readIntegratorOptions(PetscOptionItems* PetscOptionsOb
               "-jacobian lagged: refactorise when an iteration contracts the residual by less than this",
               &nm.refresh_contraction));
   PetscCall(o("-lagged_refresh_iterations",
-              "-jacobian lagged: refactorise after this many corrections with one factorisation in a step",
+              "-jacobian lagged: refactorise when the corrections with one factorisation in a step, made and "
+              "predicted by the contraction, exceed this",
               &nm.refresh_iterations));
   PetscCall(o("-newton_max_corrections",
               "Work cap: at most this many Newton corrections per step, then the step is accepted with its "

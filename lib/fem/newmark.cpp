@@ -337,7 +337,7 @@ PetscErrorCode Newmark::refactorize(Attempt& a, int it, bool fused, Verdict* v) 
     PetscCall(factorEffective(a.dt, a.reuse ? K0_ : Kt_, a.tm, &ok));
     factored_dt_ = (a.reuse && ok) ? a.dt : -1;
     if (!a.reuse) {
-      a.factored = true, keff_current_ = false, a.lag_its = 1;
+      a.factored = true, keff_current_ = false, a.lag_its = 1, refresh_next_ = false;
       if (p_.tangent_predictor || p_.lagged) u_factored_.assign(a.ueval, a.ueval + Keff_.n);
     }
   }
@@ -366,7 +366,7 @@ PetscErrorCode Newmark::applyCorrection(Attempt& a) {
 // converging chord iteration; Hairer & Wanner, Solving ODEs II, 1996, sec. IV.8), exceed refresh_iterations.
 bool Newmark::refreshDue(const Attempt& a) const {
   const bool held = a.factored || (keff_current_ && a.s->dt_tangent == a.dt);
-  if (!held) return true;
+  if (!held || (refresh_next_ && !a.factored)) return true;
   if (a.lag_its == 0) return false;
   if (a.q > p_.refresh_contraction || a.lag_its >= p_.refresh_iterations) return true;
   const double predicted = std::log(a.tol / a.r_last) / std::log(a.q);
@@ -388,6 +388,7 @@ PetscErrorCode Newmark::acceptCapped(Attempt& a, bool* ok) {
   a.tm->residual = rn;
   a.tm->converged = rn <= p_.newton_atol || rn <= p_.newton_rtol * a.ref;
   a.tm->capped = !a.tm->converged;
+  refresh_next_ = a.lagged && a.tm->capped; // the next step starts from a fresh factorisation
   PetscFunctionReturn(0);
 }
 

@@ -41,6 +41,9 @@ struct NewmarkParams {
   int refresh_iterations = 6;
   // Work cap (0: none): at most max_corrections corrections per step; then the step is accepted with the
   // residual at its last iterate recorded (StepTimings::residual, converged = false), never rejected for it.
+  // With the lagged tangent, the step after one that ended above the tolerance refactorises at its predictor
+  // (the unconverged residuals would otherwise accumulate): a step costs at most max_corrections solves and
+  // one factorisation.
   int max_corrections = 0;
   // Distributed assembly: the system's force, tangent, energy and the mass are this rank's partial sums; the
   // residual (and energies, admissibility) are summed over the ranks of comm; the external force counts once.
@@ -137,6 +140,7 @@ private:
   bool keff_current_ = false; // the solver holds K_eff at the state's (u_tangent, dt_tangent)
   bool damped_ = false;       // C != 0
   int last_newton_ = 1;       // Newton iterations of the last accepted attempt (when to assemble the tangent)
+  bool refresh_next_ = false; // lagged + work cap: the last step ended above the tolerance
   std::vector<double> u_factored_; // evaluation point of the last factorisation in this attempt
   std::vector<double> r_, du_, f_, fe_, tmp_, tmp2_, ua_, va_, aa_;
 };

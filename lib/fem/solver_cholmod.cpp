@@ -5,6 +5,7 @@
 // work, those threads wait for each other and the factorisation's wall time doubles. The factorisation runs
 // with OpenMP switched off (max-active-levels 0 for the call: every region has one thread) unless
 // -cholmod_openmp is given.
+#include "core/option_value.hpp"
 #include "fem/linear_solver.hpp"
 
 #include <cholmod.h>
@@ -37,9 +38,9 @@ public:
     PetscBool on = openmp_ ? PETSC_TRUE : PETSC_FALSE;
     PetscFunctionBeginUser;
     PetscOptionsBegin(comm, nullptr, "CHOLMOD (-solver cholmod)", nullptr);
-    PetscCall(PetscOptionsBool("-cholmod_openmp",
-                               "Let CHOLMOD run its OpenMP loops (a team of 4 threads in Debian's build)", "",
-                               on, &on, nullptr));
+    PetscCall(suite::optionsBool(PetscOptionsObject, "-cholmod_openmp",
+                                 "Let CHOLMOD run its OpenMP loops (a team of 4 threads in Debian's build)",
+                                 "", on, &on, nullptr));
     PetscOptionsEnd();
     openmp_ = on == PETSC_TRUE;
     PetscFunctionReturn(0);

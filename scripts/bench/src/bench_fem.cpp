@@ -78,14 +78,20 @@ void kernels(const char* label, std::array<int, 3> cells, double length) {
   const auto M = model.consistentMass(1.0);
   SymCsc A = model.pattern();
   for (size_t k = 0; k < A.val.size(); ++k) A.val[k] = K[k] + 1e4 * M[k];
+  // "cholmod+omp": CHOLMOD with its OpenMP loops on (-cholmod_openmp), beside the default (off).
   for (const auto& [ord, solver] :
        {std::make_pair("rcm", "banded"), std::make_pair("rcm", "skyline"), std::make_pair("rcm", "cholmod"),
-        std::make_pair("amd", "cholmod"), std::make_pair("metis", "cholmod")}) {
+        std::make_pair("amd", "cholmod"), std::make_pair("metis", "cholmod"),
+        std::make_pair("metis", "cholmod+omp")}) {
     OrderingFn fn;
     findOrdering(PETSC_COMM_SELF, ord, &fn);
     const auto perm = expandToDofs(fn(model.nodeGraphOf()), model.eq(), n);
     std::unique_ptr<LinearSolver> ls;
-    createLinearSolver(PETSC_COMM_SELF, solver, &ls);
+    const bool omp = std::strcmp(solver, "cholmod+omp") == 0;
+    createLinearSolver(PETSC_COMM_SELF, omp ? "cholmod" : solver, &ls);
+    PetscOptionsSetValue(nullptr, "-cholmod_openmp", omp ? "true" : "false");
+    ls->setFromOptions(PETSC_COMM_SELF);
+    PetscOptionsClearValue(nullptr, "-cholmod_openmp");
     ls->analyze(PETSC_COMM_SELF, A, perm);
     bool ok;
     double wfac, wsol;

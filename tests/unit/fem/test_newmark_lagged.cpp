@@ -3,7 +3,7 @@
 // fraction of its factorisations; the refresh rule refactorises on the first step, after a dt change, when
 // the factorisation held stops contracting the residual (a load jump) and after refresh_iterations
 // corrections; the capped step is accepted with the residual of its last iterate, which equals
-// |M a + f(u) - f_ext(t)| recomputed from the accepted state.
+// |M a + f(u) - f_ext(t)| recomputed from the accepted state, and the step after it refactorises.
 #include "newmark_test_chain.hpp"
 
 #include <gtest/gtest.h>
@@ -106,12 +106,17 @@ TEST(FemNewmarkLagged, WorkCapAcceptsWithTheLastIteratesResidual) {
   cap.load_scale = 10; // strongly nonlinear: one correction does not reach 1e-10
   const double dt = 0.05;
   int capped = 0;
+  bool last_capped = false;
   for (int k = 0; k < 50; ++k) {
     StepTimings tm;
     ASSERT_EQ(cap.nm.step(&cap.s, dt, &tm), 0);
     ASSERT_EQ(tm.rejected, 0);
     EXPECT_LE(tm.newton_iterations, 1);
     EXPECT_EQ(tm.capped, !tm.converged);
+    if (last_capped) {
+      EXPECT_EQ(tm.factorizations, 1) << "step " << k; // refreshed after a capped step
+    }
+    last_capped = tm.capped;
     capped += tm.capped ? 1 : 0;
     // The recorded residual against the accepted state: r = M a + f(u) - f_ext(t), M = I.
     double f[2], fe[2];
