@@ -378,7 +378,8 @@ void DirectionSweep<NV>::transposedFaceFluxes(MPI_Comm comm, int size, const V* 
       failure = "MPI error agreeing on a failure";
     if (!failure.empty()) throw std::runtime_error(failure);
     EventScope ev(sweepEvent(1));
-    tr->scatter(&th_.data()[0][0], NV, cn, &h[(size_t)l0 * nface][0]);
+    // (a rank that owns none of the chunk's lines has an empty th_: no element to take the address of)
+    tr->scatter(reinterpret_cast<const double*>(th_.data()), NV, cn, &h[(size_t)l0 * nface][0]);
   }
 }
 
