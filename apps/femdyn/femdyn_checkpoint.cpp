@@ -168,8 +168,10 @@ suite::CheckpointHeader FemdynDynamics::checkpointHeader() const {
   // checkpoints written before the option existed still load.
   std::string tag = scheme;
   if (o.predictor != "constant") tag += " predictor=" + o.predictor;
+  char lagged[128] = "";
   if (o.jacobian == "lagged")
-    tag += " refresh=" + std::to_string(nm.refresh_contraction) + "," + std::to_string(nm.refresh_iterations);
+    std::snprintf(lagged, sizeof lagged, " refresh=%.17g,%d", nm.refresh_contraction, nm.refresh_iterations);
+  tag += lagged;
   if (nm.max_corrections > 0) tag += " max_corrections=" + std::to_string(nm.max_corrections);
   suite::CheckpointHeader h;
   h.app = "femdyn";
