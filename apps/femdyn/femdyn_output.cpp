@@ -49,6 +49,7 @@ PetscErrorCode FemdynRun::writeOrdering(suite::H5Output& out) const {
   PetscFunctionBeginUser;
   PetscCall(out.createGroup("/ordering"));
   PetscCall(out.writeAttribute("/ordering", "name", opt_.ordering));
+  PetscCall(out.writeAttribute("/ordering", "taken", res_.ordering_taken)); // auto: the one it chose
   PetscCall(out.writeAttribute("/ordering", "bandwidth", m.bandwidth));
   PetscCall(out.writeAttribute("/ordering", "profile", m.profile));
   PetscCall(out.writeAttribute("/ordering", "profile_definition", suite::fem::kProfileDefinition));

@@ -83,6 +83,7 @@ struct Results {
   std::string status = "completed"; // the output's status attribute (core/run_summary.hpp)
   suite::fem::HapticProbeRecord probe;
   double ordering_time = 0, setup_time = 0, loop_time = 0;
+  std::string ordering_taken; // -ordering, or the one auto chose
   suite::fem::OrderingMetrics metrics;
   suite::fem::FactorStats factor;
   std::vector<StepRecord> steps;

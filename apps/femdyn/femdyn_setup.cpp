@@ -54,8 +54,10 @@ PetscErrorCode FemdynRun::orderAndAnalyze() {
   PetscFunctionBeginUser;
   PetscCall(findOrdering(comm, opt_.ordering, &order_fn));
   const double to = suite::threadCpuSeconds();
-  perm_ = expandToDofs(order_fn(model_.nodeGraphOf()), model_.eq(), model_.numFree());
+  OrderingChoice choice = runOrdering(opt_.ordering, model_.nodeGraphOf());
+  perm_ = expandToDofs(choice.perm, model_.eq(), model_.numFree());
   res_.ordering_time = suite::threadCpuSeconds() - to;
+  res_.ordering_taken = choice.name;
   res_.metrics = computeMetrics(graphOfMatrix(model_.pattern()), perm_);
   PetscCall(checkFactorSizes());
   solver_->setNodeGraph(model_.nodeGraphOf(), model_.eq());
@@ -94,14 +96,17 @@ PetscErrorCode FemdynRun::setup() {
   addGravityLoad(model_, opt_.density, opt_.gravity, &f_ext_);
   PetscCall(orderAndAnalyze());
   res_.setup_time = suite::wallSeconds() - t0;
+  const bool chose = res_.ordering_taken != opt_.ordering;
+  const std::string taken_note = chose ? " (took " + res_.ordering_taken : "";
+  const char* taken_end = chose ? ")" : "";
   PetscCall(suite::logInfo(
       comm, ctx_.quiet(),
-      "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s (%.3f ms): "
+      "femdyn: %d nodes, %d P%d tets, %d free DOFs, material %s, ordering %s%s%s (%.3f ms): "
       "bandwidth %lld, profile %lld, nnz(L) %lld, %.3g flops; solver %s",
       mesh_.numNodes(), mesh_.numElems(), mesh_.order(), model_.numFree(),
       opt_.materialAuto() ? ("auto (linear/" + opt_.auto_law + ")").c_str() : material_->name(),
-      opt_.ordering.c_str(), 1e3 * res_.ordering_time, res_.metrics.bandwidth, res_.metrics.profile,
-      res_.metrics.nnz_L, res_.metrics.flops, solver_->describe().c_str()));
+      opt_.ordering.c_str(), taken_note.c_str(), taken_end, 1e3 * res_.ordering_time, res_.metrics.bandwidth,
+      res_.metrics.profile, res_.metrics.nnz_L, res_.metrics.flops, solver_->describe().c_str()));
   PetscFunctionReturn(0);
 }
 

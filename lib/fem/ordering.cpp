@@ -24,14 +24,13 @@ struct Entry {
 };
 const Entry kOrderings[] = {
     {"natural", orderNatural, "the given node order (no permutation)"},
-    {"cm", orderCuthillMcKee,
-     "Cuthill-McKee as SPARSEPAK's GENRCM before reversal (natural if its bandwidth or profile is smaller)"},
+    {"cm", orderCuthillMcKee, "Cuthill-McKee exactly as SPARSEPAK's GENRCM before its reversal"},
     {"rcm", orderReverseCuthillMcKee,
-     "reverse Cuthill-McKee exactly as SPARSEPAK's GENRCM (George & Liu 1981): bandwidth/profile reducing "
-     "(same guard)"},
+     "reverse Cuthill-McKee exactly as SPARSEPAK's GENRCM (George & Liu 1981): bandwidth/profile reducing"},
     {"amd", orderAmd, "approximate minimum degree (SuiteSparse AMD): fill reducing"},
     {"metis", orderMetis, "nested dissection (METIS_NodeND): fill reducing"},
-    {"auto", orderAuto, "the one of rcm, amd and metis with the smallest symbolic nnz(L)"},
+    {"auto", orderAuto,
+     "the one of natural, rcm, amd and metis with the smallest symbolic nnz(L) (the output names it)"},
 };
 } // namespace
 
@@ -51,6 +50,13 @@ PetscErrorCode findOrdering(MPI_Comm comm, const std::string& name, OrderingFn* 
   for (const auto& e : kOrderings)
     if (name == e.name) *fn = e.fn;
   PetscFunctionReturn(0);
+}
+
+OrderingChoice runOrdering(const std::string& name, const Graph& g) {
+  if (name == "auto") return chooseOrdering(g);
+  for (const auto& e : kOrderings)
+    if (name == e.name) return {name, e.fn(g)};
+  return {name, {}}; // not reached: findOrdering checked the name
 }
 
 double timeOrdering(OrderingFn fn, const Graph& g, int repeat, std::vector<int>* perm) {

@@ -11,13 +11,12 @@
 //    then sorted by increasing degree (linear insertion: stable, ties keep the adjacency order, which is by
 //    increasing node number since Graph's lists are sorted); the component's order reversed (CM: not).
 //  Degrees are within the component (DEGREE; diagonal excluded).
-// Guard: the input order is returned when the result has a larger bandwidth or a larger profile than it (of the
-// Harwell-Boeing matrices in ../shared/data/matrices, SPARSEPAK's RCM is worse than the input order on bcsstk04,
-// bcsstk06 and bcsstk09; tests/reorder/test_reorder_sparsepak.py checks the others against an independent
-// transcription of SPARSEPAK).
+// No guard: rcm and cm are these orderings exactly, also where the input order has a smaller bandwidth or
+// profile (of the Harwell-Boeing matrices in ../shared/data/matrices: rcm on bcsstk04, bcsstk06 and bcsstk09);
+// choosing between them and the input order is the `auto` ordering's job (ordering_auto.cpp).
+// tests/reorder/test_reorder_sparsepak.py checks every matrix against an independent transcription of SPARSEPAK.
 // Cost: FNROOT's searches are plain breadth-first searches (a typical mesh: two or three), then one
-// Cuthill-McKee traversal from the root found, which also accumulates the profiles and bandwidths of the CM,
-// RCM and input orders (the guard needs no extra pass). No allocation inside the searches.
+// Cuthill-McKee traversal from the root found. No allocation inside the searches.
 #include "fem/ordering.hpp"
 
 #include <algorithm>
@@ -27,12 +26,6 @@ namespace suite::fem {
 namespace {
 
 constexpr int kMasked = INT_MAX; // outside the subgraph (pseudoPeripheralNode's mask)
-
-struct Traversal {
-  int size = 0; // vertices numbered
-  long long prof_cm = 0, prof_rcm = 0, prof_nat = 0;
-  int bw_cm = 0, bw_rcm = 0, bw_nat = 0;
-};
 
 struct Work {
   // mark[v] >= base: visited by the current search (by the CM traversal: at position mark[v] - base);
@@ -56,21 +49,10 @@ struct Work {
   }
 };
 
-// Adds row p of the orders (input vertex v, smallest neighbour id vmin; smallest/largest CM position among
-// its neighbours mn/mx, all numbered once p is expanded) to the profiles and bandwidths: CM row p starts at
-// mn, RCM row size-1-p at size-1-mx, input row v at vmin.
-template <bool kReverse> void addRow(Traversal& t, int p, int mn, int mx, int v, int vmin) {
-  if (kReverse)
-    t.prof_rcm += mx - p, t.bw_rcm = std::max(t.bw_rcm, mx - p);
-  else
-    t.prof_cm += p - mn, t.bw_cm = std::max(t.bw_cm, p - mn);
-  t.prof_nat += v - vmin, t.bw_nat = std::max(t.bw_nat, v - vmin);
-}
-
 // SPARSEPAK RCM before its reversal: Cuthill-McKee traversal of the unvisited vertices reachable from root
 // into out[0..size): breadth first, the new neighbours of a vertex appended by increasing degree (stable
-// insertion sort). Profiles on the way (addRow).
-template <bool kReverse> Traversal cmTraversal(const Graph& g, int root, Work& w, int* out) {
+// insertion sort). Returns size.
+int cmTraversal(const Graph& g, int root, Work& w, int* out) {
   w.newSearch();
   const int* xadj = g.xadj.data();
   const int* adj = g.adj.data();
@@ -78,26 +60,15 @@ template <bool kReverse> Traversal cmTraversal(const Graph& g, int root, Work& w
   int* mark = w.mark.data();
   int* nb = w.fresh.data();
   const int base = w.base;
-  Traversal t;
   int head = 0, tail = 0;
   out[tail++] = root;
   mark[root] = base;
   for (; head < tail; ++head) {
-    const int v = out[head], p = head;
-    int mn = p, mx = p, vmin = v, cnt = 0;
+    const int v = out[head];
+    int cnt = 0;
     for (int k = xadj[v], k1 = xadj[v + 1]; k < k1; ++k) {
       const int u = adj[k];
-      const int m = mark[u];
-      vmin = std::min(vmin, u);
-      if (m >= base) {
-        if (kReverse)
-          mx = std::max(mx, m - base);
-        else
-          mn = std::min(mn, m - base);
-      } else {
-        mark[u] = base;
-        nb[cnt++] = u;
-      }
+      if (mark[u] < base) mark[u] = base, nb[cnt++] = u; // kMasked is never < base
     }
     for (int i = 1; i < cnt; ++i) { // stable insertion sort of the few new neighbours by degree
       const int u = nb[i], du = deg[u];
@@ -105,12 +76,9 @@ template <bool kReverse> Traversal cmTraversal(const Graph& g, int root, Work& w
       for (; j > 0 && deg[nb[j - 1]] > du; --j) nb[j] = nb[j - 1];
       nb[j] = u;
     }
-    for (int i = 0; i < cnt; ++i) mark[nb[i]] = base + tail, out[tail++] = nb[i];
-    if (cnt > 0) mx = tail - 1;
-    addRow<kReverse>(t, p, mn, mx, v, vmin);
+    for (int i = 0; i < cnt; ++i) out[tail++] = nb[i];
   }
-  t.size = tail;
-  return t;
+  return tail;
 }
 
 struct Levels {
@@ -171,42 +139,26 @@ int findRoot(const Graph& g, int root, Work& w, bool masked) {
   }
 }
 
-struct CmResult {
-  std::vector<int> order; // components one after the other (each reversed if reverse)
-  long long prof = 0, prof_nat = 0;
-  int bw = 0, bw_nat = 0;
-};
-
-// SPARSEPAK GENRCM (reverse) or its Cuthill-McKee order; the profile and bandwidth of that order and of the
-// input order.
-CmResult cuthillMcKee(const Graph& g, bool reverse) {
-  CmResult r;
-  r.order.resize(g.n);
-  if (g.n == 0) return r;
+// SPARSEPAK GENRCM (reverse) or its Cuthill-McKee order: components one after the other, each reversed on its
+// own if reverse.
+std::vector<int> cuthillMcKee(const Graph& g, bool reverse) {
+  std::vector<int> order(g.n);
+  if (g.n == 0) return order;
   Work w(g);
   std::vector<char> numbered; // only for graphs of several components
   int pos = 0;
   for (int v = 0; v < g.n && pos < g.n; ++v) {
     if (pos > 0 && numbered[v]) continue;
-    int* seg = r.order.data() + pos;
-    const int root = findRoot(g, v, w, false);
-    const Traversal t = reverse ? cmTraversal<true>(g, root, w, seg) : cmTraversal<false>(g, root, w, seg);
-    if (reverse) std::reverse(seg, seg + t.size);
-    pos += t.size;
-    r.prof += reverse ? t.prof_rcm : t.prof_cm, r.prof_nat += t.prof_nat;
-    r.bw = std::max(r.bw, reverse ? t.bw_rcm : t.bw_cm), r.bw_nat = std::max(r.bw_nat, t.bw_nat);
+    int* seg = order.data() + pos;
+    const int size = cmTraversal(g, findRoot(g, v, w, false), w, seg);
+    if (reverse) std::reverse(seg, seg + size);
+    pos += size;
     if (pos < g.n) {
       if (numbered.empty()) numbered.assign(g.n, 0);
-      for (int i = 0; i < t.size; ++i) numbered[seg[i]] = 1;
+      for (int i = 0; i < size; ++i) numbered[seg[i]] = 1;
     }
   }
-  return r;
-}
-
-// The order, or the input order where that has a smaller bandwidth or profile.
-std::vector<int> guarded(const Graph& g, CmResult&& r) {
-  if (r.prof > r.prof_nat || r.bw > r.bw_nat) return orderNatural(g);
-  return std::move(r.order);
+  return order;
 }
 
 } // namespace
@@ -219,11 +171,11 @@ int pseudoPeripheralNode(const Graph& g, int root, const std::vector<char>& mask
 }
 
 std::vector<int> orderCuthillMcKee(const Graph& g) {
-  return guarded(g, cuthillMcKee(g, false));
+  return cuthillMcKee(g, false);
 }
 
 std::vector<int> orderReverseCuthillMcKee(const Graph& g) {
-  return guarded(g, cuthillMcKee(g, true));
+  return cuthillMcKee(g, true);
 }
 
 } // namespace suite::fem

@@ -2,7 +2,8 @@
 """reorder on Harwell-Boeing matrices: every ordering is a permutation; RCM reduces the profile of the CAN/BCSSTK
 matrices listed below and never has a larger bandwidth; on bcsstk10, whose natural order is already banded, RCM
 keeps the bandwidth 37 (SPARSEPAK's GENRCM gives the same permutation: test_reorder_sparsepak.py); nnz(L) fits in
-the envelope; auto equals the smallest nnz(L) of rcm/amd/metis; AMD and METIS fill less than RCM on the 2D/3D FE
+the envelope; auto equals the smallest nnz(L) of natural/rcm/amd/metis (on bcsstk10 that is the input order:
+20771 against RCM's 21029); AMD and METIS fill less than RCM on the 2D/3D FE
 meshes can_1072, can_838 and bcsstk01 (measured nnz(L) amd / metis / rcm: 20548 / 22439 / 49406,
 18924 / 18379 / 37300, 489 / 481 / 617). Not asserted, because it does not hold: on the banded bcsstk10 both fill
 more than RCM (23689, 27702 vs 21029), on can_24 METIS does (125 vs 121)."""
@@ -52,7 +53,7 @@ def main(exe, mdir):
                 for k in ("amd", "metis"):
                     check(g[k]["nnz_L"][0] < g["rcm"]["nnz_L"][0],
                           f"{name}: {k} nnz(L) {g[k]['nnz_L'][0]} < rcm {g['rcm']['nnz_L'][0]}")
-            best = min(g[k]["nnz_L"][0] for k in ("rcm", "amd", "metis"))
+            best = min(g[k]["nnz_L"][0] for k in ("natural", "rcm", "amd", "metis"))
             check(g["auto"]["nnz_L"][0] == best, f"{name}: auto nnz(L) {g['auto']['nnz_L'][0]} = best {best}")
     print(f"{len(fails)} failure(s)")
     return 1 if fails else 0

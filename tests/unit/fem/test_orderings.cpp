@@ -1,8 +1,8 @@
 // Orderings and solvers: Boost's Cuthill-McKee example (bandwidth 8 -> 4), a shuffled beam mesh (RCM
-// bandwidth reduced >= 10x), RCM never worse than the input order, RCM equal to SPARSEPAK's GENRCM (a small
+// bandwidth reduced >= 10x), auto keeping an optimal input order, RCM equal to SPARSEPAK's GENRCM (a small
 // case worked by hand; PETSc's translation of SPARSEPAK on shuffled meshes), symbolic nnz(L) equal to CHOLMOD's
-// analysis, auto no worse than the best of rcm/amd/metis, and skyline and CHOLMOD solutions agreeing on a
-// beam stiffness matrix.
+// analysis, auto no worse than the best of natural/rcm/amd/metis and naming the one it took, and skyline and
+// CHOLMOD solutions agreeing on a beam stiffness matrix.
 #include "fem_test_util.hpp"
 
 #include "fem/linear_solver.hpp"
@@ -105,7 +105,7 @@ TEST(FemOrdering, RcmEqualsPetscSparsepak) {
   const int n = 2 * std::max(a.n, b.n) + 3; // odd or even ids beyond the smaller graph and 3 more: isolated
   const Graph g = graphOfEdges(n, once);
   const auto p = orderReverseCuthillMcKee(g);
-  ASSERT_LT(profileOf(g, p), profileOf(g, orderNatural(g))); // not the guard's input order
+  ASSERT_LT(profileOf(g, p), profileOf(g, orderNatural(g))); // a case where the order matters
   EXPECT_EQ(p, petscSparsepakRcm(g));
 }
 
@@ -141,14 +141,17 @@ TEST(FemOrdering, ShuffledBeamBandwidthReducedTenfold) {
   EXPECT_LE(b1, 60);
 }
 
-TEST(FemOrdering, NeverWorseThanInputOrder) {
-  // A path 0-1-...-9 with a chord (0,2): natural is optimal; RCM/CM keep it or improve on it.
+// Where the input order is already optimal, auto keeps it (takes natural on ties) and RCM finds an order as
+// good.
+TEST(FemOrdering, AutoKeepsAnOptimalInputOrder) {
+  // A path 0-1-...-9 with a chord (0,2): natural is optimal (no fill: nnz(L) = the 10 edges).
   std::vector<std::pair<int, int>> e;
   for (int i = 0; i < 9; ++i) e.push_back({i, i + 1});
   e.push_back({0, 2});
   const Graph g = graphOfEdges(10, e);
   for (OrderingFn fn : {orderCuthillMcKee, orderReverseCuthillMcKee})
     EXPECT_LE(profileOf(g, fn(g)), profileOf(g, orderNatural(g)));
+  EXPECT_EQ(chooseOrdering(g).name, "natural");
   // Structured beam numbered x fastest is already banded; RCM must not make the profile worse.
   const TetMesh m = beam(10, 3, 3);
   Graph gb;
@@ -180,10 +183,14 @@ TEST(FemOrdering, PermutationsSymbolicCountsAndAuto) {
     ASSERT_EQ(chol->analyze(PETSC_COMM_SELF, K, p), 0);
     EXPECT_EQ(met.nnz_L, chol->stats().nnz_L) << name;
     EXPECT_LE(met.nnz_L, met.profile + g.n) << name; // fill stays inside the envelope
-    if (name == "rcm" || name == "amd" || name == "metis")
+    if (name == "natural" || name == "rcm" || name == "amd" || name == "metis")
       best = best < 0 ? met.nnz_L : std::min(best, met.nnz_L);
     if (name == "auto") {
       EXPECT_EQ(met.nnz_L, best);
+      const OrderingChoice c = chooseOrdering(g);
+      OrderingFn taken;
+      ASSERT_EQ(findOrdering(PETSC_COMM_SELF, c.name, &taken), 0);
+      EXPECT_EQ(c.perm, taken(g)) << c.name; // the name auto reports is the ordering it took
     }
     // Skyline, banded (LAPACK) and CHOLMOD agree and solve K x = b.
     auto sky = makeSkylineSolver(), band = makeBandedSolver();
@@ -230,7 +237,7 @@ TEST(FemOrdering, NodeOrderExpandsToDofs) {
 }
 
 // Several components and isolated vertices: a permutation, each component numbered contiguously, never worse
-// than the input order by profileOf (the guard itself uses the profiles accumulated during the traversal).
+// than the input order by profileOf.
 TEST(FemOrdering, ComponentsAndIsolatedVertices) {
   const Graph a = shuffledBeamGraph(20, 2, 2, 7), b = shuffledBeamGraph(12, 3, 2, 9);
   std::vector<std::pair<int, int>> e;
