@@ -61,6 +61,30 @@ SUITE_ROW_INLINE void wenoZWeightsFromBeta(const T* v, const T beta[3], const do
   for (int k = 0; k < 3; ++k) w[k] /= sum;
 }
 
+// Henrick-mapped Jiang-Shu weights (Henrick, Aslam & Powers, J. Comput. Phys. 207 (2005) 542, eq. (8) on
+// Jiang & Shu's alpha_k = d_k / (beta_k + eps)^2, the epsilon of wenoZWeightsFromBeta) for the linear weights d[3]
+// from the indicators beta of v. The mapping g_k(w) = w (d_k + d_k^2 - 3 d_k w + w^2) / (d_k^2 + w (1 - 2 d_k))
+// has g_k(d_k) = d_k and g_k' = g_k'' = 0 there: the weights meet d_k to O(dx^6) where the Jiang-Shu weights
+// miss them by O(dx^2) or, at critical points, O(dx).
+template <class T>
+SUITE_ROW_INLINE void mappedWeightsFromBeta(const T* v, const T beta[3], const double d[3], T w[3]) {
+  const T eps =
+      kWenoEpsAbs + kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
+  T a[3], sum = T{} + 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const T e = beta[k] + eps;
+    a[k] = d[k] / (e * e);
+    sum += a[k];
+  }
+  T msum = T{} + 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const T x = a[k] / sum;
+    a[k] = x * (d[k] + d[k] * d[k] - 3.0 * d[k] * x + x * x) / (d[k] * d[k] + x * (1.0 - 2.0 * d[k]));
+    msum += a[k];
+  }
+  for (int k = 0; k < 3; ++k) w[k] = a[k] / msum;
+}
+
 // The CRWENO5 row of candidate weights w[0..2].
 template <class T> SUITE_ROW_INLINE RowOf<T> crweno5RowFromWeights(const T* v, const T w[3]) {
   return {(2.0 * w[0] + w[1]) / 3.0, (w[0] + 2.0 * w[1] + 2.0 * w[2]) / 3.0, w[2] / 3.0,
@@ -72,6 +96,14 @@ template <class T> SUITE_ROW_INLINE RowOf<T> crweno5Row(const T* v) {
   T beta[3], w[3];
   weno5Smoothness(v, beta);
   wenoZWeightsFromBeta(v, beta, kCrweno5Optimal, w);
+  return crweno5RowFromWeights(v, w);
+}
+
+// The CRWENO5 row of v[0..5] with Henrick-mapped weights (the `crweno5` scheme's rows).
+template <class T> SUITE_ROW_INLINE RowOf<T> crweno5MappedRow(const T* v) {
+  T beta[3], w[3];
+  weno5Smoothness(v, beta);
+  mappedWeightsFromBeta(v, beta, kCrweno5Optimal, w);
   return crweno5RowFromWeights(v, w);
 }
 

@@ -18,6 +18,9 @@ using kernels::RowOf;
 struct Crweno5 {
   template <class T> static SUITE_ROW_INLINE RowOf<T> row(const T* v) { return kernels::crweno5Row(v); }
 };
+struct Crweno5Mapped {
+  template <class T> static SUITE_ROW_INLINE RowOf<T> row(const T* v) { return kernels::crweno5MappedRow(v); }
+};
 struct EnoPadeBlend {
   template <class T> static SUITE_ROW_INLINE RowOf<T> row(const T* v) { return kernels::enoPadeBlendRow(v); }
 };
@@ -59,12 +62,17 @@ SUITE_KERNEL void crweno5Rows(int n, const double* __restrict v, double* __restr
   scalarRowsLoop<Crweno5>(0, n, v, out);
 }
 
+SUITE_KERNEL void crweno5MappedRows(int n, const double* __restrict v, double* __restrict out) {
+  scalarRowsLoop<Crweno5Mapped>(0, n, v, out);
+}
+
 SUITE_KERNEL void enoPadeBlendRows(int n, const double* __restrict v, double* __restrict out) {
   lanesRowsLoop<EnoPadeBlend>(n, v, out);
 }
 
 RowsFunction batchedRows(RowFunction fn) {
   if (fn == crweno5Row) return crweno5Rows;
+  if (fn == crweno5MappedRow) return crweno5MappedRows;
   if (fn == enoPadeBlendRow) return enoPadeBlendRows;
   return nullptr;
 }

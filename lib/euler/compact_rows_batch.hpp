@@ -13,8 +13,9 @@ namespace suite::euler {
 // its row.
 using RowsFunction = void (*)(int n, const double* v, double* out);
 
-void crweno5Rows(int n, const double* v, double* out);      // crweno5Row (crweno5.hpp)
-void enoPadeBlendRows(int n, const double* v, double* out); // enoPadeBlendRow (crweno_cu6.hpp)
+void crweno5Rows(int n, const double* v, double* out);       // crweno5Row (crweno5.hpp)
+void crweno5MappedRows(int n, const double* v, double* out); // crweno5MappedRow (crweno5.hpp)
+void enoPadeBlendRows(int n, const double* v, double* out);  // enoPadeBlendRow (crweno_cu6.hpp)
 
 // The batched form of fn, or nullptr when it has none.
 RowsFunction batchedRows(RowFunction fn);

@@ -29,8 +29,8 @@
 // 1.868e-3 / 5.43e-4 / 7.01e-3 / 1.71e-3, with its square 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3 at C = 30).
 // C = 30 instead of Hu et al.'s 20: scanned over 15, 20, 30, 40 on those four figures, 30 is the only value that
 // met the four HyPar CRWENO5 figures (docs/euler_extremes.md). epsilon as in weno5.hpp (relative).
-// p = 1 in the upwind part (Borges et al.'s original exponent; crweno5's own rows keep p = 2, weno5.hpp): less
-// dissipative at shocks and contacts, with crweno5's row at the supersonic faces (direction_sweep.cpp) the four
+// p = 1 in the upwind part (Borges et al.'s original exponent; the CRWENO5-Z rows keep p = 2, weno5.hpp): less
+// dissipative at shocks and contacts, with the CRWENO5-Z row at the supersonic faces (direction_sweep.cpp) the four
 // figures above are 1.765e-3 / 4.92e-4 / 6.26e-3 / 1.48e-3 and every 1D battery case is at or below
 // crweno5 (with p = 2: 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3, and four near-vacuum cases 0.5-0.7% above).
 #pragma once

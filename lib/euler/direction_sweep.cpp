@@ -245,8 +245,8 @@ void DirectionSweep<NV>::lineCompactRows(const V* q, long long n, long long xs, 
 // its Roe eigensystem and projected stencils (as splitRows), the rows of all of them in one call of the
 // scheme's batched row function (compact_rows_batch.hpp: bitwise its RowFunction's), then the block rows
 // (writeSplitRow). Stencil lane (2 j + s) NV + c: face j of the call, f+ (s = 0) or mirrored f- (s = 1), field
-// c. With rf-char, the hybrid's faces where every field is upwinded the same way (supersonicFace) take
-// crweno5's CRWENO5-Z rows instead (a second call).
+// c. With rf-char, the hybrid's faces where every field is upwinded the same way (supersonicFace) take the
+// CRWENO5-Z rows (crweno5Row: WENO-Z weights, p = 2) instead (a second call).
 template <int NV>
 void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool unsplit,
                                           CompactLineRows out) {
@@ -258,7 +258,7 @@ void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool
     componentwise_[j] = illConditioned(q + batch_[j]);
     stats_.componentwise_faces += componentwise_[j];
   }
-  supersonic_.assign(nb, 0); // per face: 1 when its rows are crweno5's
+  supersonic_.assign(nb, 0); // per face: 1 when its rows are CRWENO5-Z rows
   if (scheme_->hybrid && rfChar())
     for (int j = 0; j < nb; ++j) supersonic_[j] = supersonicFace(q + batch_[j], eig_[j]);
   for (char pass : {0, 1}) {
@@ -274,7 +274,7 @@ void DirectionSweep<NV>::batchedSplitRows(const V* q, RowsFunction rows_fn, bool
 // every characteristic wave runs downstream, and the central CU6 part of the ENO-Pade row, whose downwind
 // candidate reaches against all of them, carries the errors that the near-vacuum rarefactions' start-up
 // leaves in their supersonic parts (docs/euler_extremes.md: with the ENO-Pade row there, L1(rho) is 0.5-0.7%
-// above crweno5 on the four near-vacuum cases); the row is crweno5's there.
+// above crweno5 on the four near-vacuum cases); the row is the CRWENO5-Z row there.
 template <int NV>
 bool DirectionSweep<NV>::supersonicFace(const V* qs, const typename LineGas<NV>::Eigen& e) const {
   using RF = RfChar<NV>;

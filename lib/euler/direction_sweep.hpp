@@ -161,7 +161,7 @@ private:
   std::vector<int> batch_;                       // its faces whose rows go through batchedSplitRows
   std::vector<typename LineGas<NV>::Eigen> eig_; // their Roe eigensystems
   std::vector<int> faces_;                       // the faces (indices into batch_) of one splitRowsCall
-  std::vector<char> supersonic_;                 // per face of batch_: supersonicFace (its rows crweno5's)
+  std::vector<char> supersonic_;                 // per face of batch_: supersonicFace (CRWENO5-Z rows)
   std::vector<char> componentwise_;              // per face of batch_: illConditioned (component-wise rows)
   double stage_flux_scale_ = 0.0;                // faceFluxes' flux_scale
   std::vector<double> stencil_, brow_;           // their stencils and rows (structure of arrays)

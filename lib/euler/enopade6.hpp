@@ -13,7 +13,7 @@
 // interior row, characteristic-wise and upwinded per field by the sign of its Roe speed (rf-char,
 // rf_char.hpp): a central-upwind compact WENO row whose smooth limit is this Pade row, blended into the
 // CRWENO5-Z row (Ghosh & Baeder 2012) where its downwind candidate is rejected; at a face where rf-char
-// upwinds every field the same way (supersonic), crweno5's CRWENO5-Z row (DirectionSweep::supersonicFace:
+// upwinds every field the same way (supersonic), the CRWENO5-Z row (crweno5Row; DirectionSweep::supersonicFace:
 // every wave runs downstream there, and the central part kept the near-vacuum rarefactions' start-up errors).
 // Why not a row-wise switch (Pade rows, CRWENO5-Z rows on the flagged rows only): the Pade rows
 // between and next to the flagged rows carry the grid-scale waves that the shocks and contacts shed, undamped

@@ -12,8 +12,10 @@ namespace {
 const SchemeInfo kSchemes[] = {
     {"enopade6", "6th-order Pade core, CRWENO-CU6 / CRWENO5-Z rows on lines with discontinuities (ENO-Pade)",
      true, true, false, padeRow, enoPadeBlendRow, central6Row, weno5Row, 6, true},
-    {"crweno5", "5th-order compact-reconstruction WENO-Z (Ghosh & Baeder 2012)", true, false, false,
-     crweno5Row, crweno5Row, weno5Row, weno5Row, 5, true},
+    {"crweno5",
+     "5th-order compact-reconstruction WENO, Henrick-mapped weights (Ghosh & Baeder 2012; Henrick et al. "
+     "2005)",
+     true, false, false, crweno5MappedRow, crweno5MappedRow, weno5Row, weno5Row, 5, true},
     {"weno5", "5th-order WENO-Z, explicit (Jiang & Shu 1996; Borges et al. 2008)", false, false, false,
      weno5Row, weno5Row, weno5Row, weno5Row, 5, true},
     {"muscl2", "2nd-order MUSCL (van Leer limiter) + HLLC", false, false, true, nullptr, nullptr, nullptr,

@@ -59,10 +59,10 @@ def leblanc():
                 check(e <= bound, f"{scheme} {np_} rank(s): L1(rho) {e:.3e} <= {bound}")
                 counts.append(retries)
             check(counts[0] == counts[1], f"{scheme}: steps retried {counts[0]} at 1 and 2 ranks")
-        # crweno5 and enopade6 with Lax-Friedrichs splitting (their default before rf-char): step 1's stages pass
-        # the limiter's CFL bound (crweno5: 0.70), so the retry is exercised at 1 and 2 ranks (with rf-char the
-        # stage speeds stay below the bound: no retry).
-        for scheme in ("crweno5", "enopade6"):
+        # enopade6 with Lax-Friedrichs splitting: step 1's stages pass the limiter's CFL bound, so the retry is
+        # exercised at 1 and 2 ranks (with rf-char, and for crweno5 with either upwinding, the stage speeds stay
+        # below the bound: no retry).
+        for scheme in ("enopade6",):
             counts = []
             for np_ in (1, 2):
                 h5 = os.path.join(d, f"{scheme}_llf{np_}.h5")
@@ -136,14 +136,23 @@ def conservation_zero():
         check(re.search(rf"conservation {q}: .* rel_change \S+", out) is not None, f"Sod: {q} keeps rel_change")
 
 
+# enopade6 against crweno5 where it is not at or below it (crweno5's Henrick-mapped weights, closer to the
+# linear weights than the WENO-Z weights of enopade6's upwind rows): Toro 123 (measured 1.037), the rf-char loss
+# of the compact schemes on its near-vacuum centre (docs/euler_extremes.md, "rf-char against local
+# Lax-Friedrichs upwinding"), which the mapped weights reduce more; contact_1e6 (1.014), the moving contact at
+# density ratio 1e6.
+ENOPADE6_OVER_CRWENO5 = {"toro2_123": 1.04, "contact_1e6": 1.02}
+
+
 def enopade6_vs_crweno5(ranks="1"):
     """On every 1D deck of the battery (inputs/euler/extreme_*.yaml with an exact solution,
     N = 200, the decks' settings) enopade6's L1(rho) is at or below crweno5's, at `ranks` ranks (the tests: 1
-    and 2). Measured: ratios 0.80-0.996, the closest the near-vacuum rarefactions (near_vacuum_left 0.9956,
-    initial_vacuum_right 0.9943), the same at 1, 2 and 3 ranks. The same at every rank count because faces with an
-    ill-conditioned characteristic basis are treated component-wise (lib/euler/characteristic_conditioning.hpp;
-    docs/euler_extremes.md): projected characteristic-wise there, pressure_1e10's compact-scheme noise in its cold
-    gas depends on round-off (ratio 0.90 / 1.29 / 1.38 at 1 / 2 / 3 ranks)."""
+    and 2), except on the cases of ENOPADE6_OVER_CRWENO5, where it is within the ratio given. Measured: ratios
+    0.83-0.993 (the closest pressure_1e10 0.993 and near_vacuum_left 0.990), the same at 1 and 2 ranks. The same at
+    every rank count because faces with an ill-conditioned characteristic basis are treated component-wise
+    (lib/euler/characteristic_conditioning.hpp; docs/euler_extremes.md): projected characteristic-wise there,
+    pressure_1e10's compact-scheme noise in its cold gas depends on round-off (ratio 0.90 / 1.29 / 1.38 at 1 / 2 /
+    3 ranks)."""
     decks = sorted(glob.glob(os.path.join(SRC, "inputs", "euler", "extreme_*.yaml")))
     decks = [d for d in decks if re.search(r"^error: true", open(d).read(), re.M)]
     check(len(decks) == 16, f"{len(decks)} 1D battery decks with an exact solution (16)")
@@ -153,8 +162,9 @@ def enopade6_vs_crweno5(ranks="1"):
             out = run(["-options_file", deck, "-scheme", scheme, "-quiet"], np_=int(ranks))  # no file: -error prints
             e[scheme] = float(re.search(r"error rho: L1 (\S+)", out).group(1))
         name = os.path.basename(deck)[len("extreme_"):-len(".yaml")]
-        check(e["enopade6"] <= e["crweno5"], f"{name}, {ranks} rank(s): enopade6 L1(rho) {e['enopade6']:.4e} <= "
-              f"crweno5's {e['crweno5']:.4e} (ratio {e['enopade6'] / e['crweno5']:.4f})")
+        bound = ENOPADE6_OVER_CRWENO5.get(name, 1.0)
+        check(e["enopade6"] <= bound * e["crweno5"], f"{name}, {ranks} rank(s): enopade6 L1(rho) "
+              f"{e['enopade6']:.4e} <= {bound} x crweno5's {e['crweno5']:.4e} (ratio {e['enopade6'] / e['crweno5']:.4f})")
 
 
 if __name__ == "__main__":

@@ -102,6 +102,12 @@ TEST(CompactRowsBatch, Crweno5RowsAreTheScalarRowsBitwise) {
   for (int n : {1, 2, 3, 4, 5, 7, 18, 37, 64}) expectSameRows(crweno5Row, batch, n);
 }
 
+TEST(CompactRowsBatch, Crweno5MappedRowsAreTheScalarRowsBitwise) {
+  const RowsFunction batch = batchedRows(crweno5MappedRow);
+  ASSERT_NE(batch, nullptr);
+  for (int n : {1, 2, 3, 4, 5, 7, 18, 37, 64}) expectSameRows(crweno5MappedRow, batch, n);
+}
+
 TEST(CompactRowsBatch, EnoPadeBlendRowsAreTheScalarRowsBitwise) {
   const RowsFunction batch = batchedRows(enoPadeBlendRow);
   ASSERT_NE(batch, nullptr);

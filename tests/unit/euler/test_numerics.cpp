@@ -84,6 +84,30 @@ TEST(EulerReconstruction, EnoPadeShockRowsKeepFifthOrderAtCriticalPoints) {
   EXPECT_GE(o, 4.8);
 }
 
+// crweno5's rows (Henrick-mapped weights) on Henrick et al.'s critical-point profile tend to the linear compact
+// scheme (compactUpwind5Row): error above the linear scheme's by 53% at N = 80 and 12% at N = 160 (the excess
+// falls 4.3x per halving), where the WENO-Z rows' is 120% and 34%; order from N = 160 to 320 5.17.
+TEST(EulerReconstruction, MappedCrweno5RowsTendToTheLinearScheme) {
+  double excess[2];
+  for (int i = 0; i < 2; ++i) {
+    const int n = 80 << i;
+    const double lin = derivativeError(n, critF, critDF, compactUpwind5Row);
+    const double mapped = derivativeError(n, critF, critDF, crweno5MappedRow);
+    const double z = derivativeError(n, critF, critDF, crweno5Row);
+    excess[i] = mapped / lin - 1;
+    std::printf("  N = %d: linear %.6e, mapped %.6e (%+.3f), WENO-Z %.6e (%+.3f)\n", n, lin, mapped,
+                excess[i], z, z / lin - 1);
+  }
+  EXPECT_LT(excess[0], 0.6);
+  EXPECT_LT(excess[1], 0.14);
+  EXPECT_GT(excess[0], 4.0 * excess[1]);
+  std::vector<double> e;
+  const double o =
+      order([](int n) { return derivativeError(n, critF, critDF, crweno5MappedRow); }, 40, 4, &e);
+  std::printf("  crweno5 (mapped) order at critical points %.2f\n", o);
+  EXPECT_GE(o, 5.1);
+}
+
 // The ENO-Pade rows of enopade6's shocked lines (crweno_cu6.hpp).
 TEST(EulerReconstruction, Cu6OptimalWeightsGiveThePadeRow) {
   const double d[4] = {0.1, 0.4, 0.4, 0.1};
