@@ -32,7 +32,8 @@
 // p = 1 in the upwind part (Borges et al.'s original exponent; the CRWENO5-Z rows keep p = 2, weno5.hpp): less
 // dissipative at shocks and contacts, with the CRWENO5-Z row at the supersonic faces (direction_sweep.cpp) the four
 // figures above are 1.765e-3 / 4.92e-4 / 6.26e-3 / 1.48e-3 and every 1D battery case is at or below
-// crweno5 (with p = 2: 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3, and four near-vacuum cases 0.5-0.7% above).
+// crweno5 with WENO-Z weights (with p = 2: 1.859e-3 / 5.47e-4 / 7.03e-3 / 1.71e-3, and four near-vacuum cases
+// 0.5-0.7% above).
 #pragma once
 
 #include "euler/row.hpp"

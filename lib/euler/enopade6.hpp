@@ -22,7 +22,8 @@
 // those waves where they arise and reach the Pade weights where the data are smooth. Measured (HyPar's Sod /
 // Lax settings, docs/euler_extremes.md): L1(rho) Sod N = 200 / 800 1.765e-3 / 4.92e-4 (row-wise switch
 // 2.401e-3 / 7.16e-4), Lax 6.26e-3 / 1.48e-3 (row-wise switch 8.74e-3 / 2.07e-3), all 5-19% below HyPar's
-// CRWENO5; at or below this suite's crweno5 on all 16 1D battery cases (ratios 0.80-0.99).
+// CRWENO5; below this suite's crweno5 (mapped weights) on 14 of the 16 1D battery cases (ratios 0.83-0.99;
+// Toro 123 1.037, contact_1e6 1.014).
 // Boundary closure (non-periodic lines): the first and last interface of the line use the explicit
 // sixth-order central formula (f_{j-2} - 8 f_{j-1} + 37 f_j + 37 f_{j+1} - 8 f_{j+2} + f_{j+3})/60 on ghost
 // cells (shock rows: explicit WENO5-Z), so the closure is sixth (fifth) order given ghost values of that
