@@ -44,14 +44,19 @@ template <class T> SUITE_ROW_INLINE void weno5Smoothness(const T* v, T beta[3]) 
   beta[2] = 13.0 / 12.0 * t2 * t2 + 0.25 * s2 * s2;
 }
 
+// The weights' epsilon on v[0..4], relative to the stencil's mean square (weno5.hpp).
+template <class T> SUITE_ROW_INLINE T weno5Epsilon(const T* v) {
+  return kWenoEpsAbs +
+         kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
+}
+
 // WENO-Z weights with exponent P (2: the CRWENO5 rows; 1: the upwind part of the ENO-Pade row) for the linear
 // weights d[3] from the indicators beta of v.
 template <int P = 2, class T>
 SUITE_ROW_INLINE void wenoZWeightsFromBeta(const T* v, const T beta[3], const double d[3], T w[3]) {
   static_assert(P == 1 || P == 2, "WENO-Z exponent 1 or 2");
   const T tau = absOf(beta[0] - beta[2]);
-  const T eps =
-      kWenoEpsAbs + kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
+  const T eps = weno5Epsilon(v);
   T sum = T{} + 0.0;
   for (int k = 0; k < 3; ++k) {
     const T q = tau / (beta[k] + eps);
@@ -68,8 +73,7 @@ SUITE_ROW_INLINE void wenoZWeightsFromBeta(const T* v, const T beta[3], const do
 // miss them by O(dx^2) or, at critical points, O(dx).
 template <class T>
 SUITE_ROW_INLINE void mappedWeightsFromBeta(const T* v, const T beta[3], const double d[3], T w[3]) {
-  const T eps =
-      kWenoEpsAbs + kWenoEpsRel * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]) / 5.0;
+  const T eps = weno5Epsilon(v);
   T a[3], sum = T{} + 0.0;
   for (int k = 0; k < 3; ++k) {
     const T e = beta[k] + eps;
