@@ -44,6 +44,9 @@ struct Body {
   Vec3 x = Vec3::Zero();                   // centre of mass (world)
   Quat q = Quat::Identity();               // orientation body -> world
   Vec3 v = Vec3::Zero(), w = Vec3::Zero(); // linear and angular velocity (world)
+  // Collision filter (MJCF contype / conaffinity): bodies a and b collide when (contype_a & conaffinity_b) or
+  // (contype_b & conaffinity_a) is non-zero.
+  unsigned contype = 1, conaffinity = 1;
 
   Mat3 R() const { return q.toRotationMatrix(); }
   Mat3 invInertiaWorld() const;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "contact/body.hpp"
+#include "contact/joint.hpp"
 #include "core/named_choice.hpp"
 
 #include <string>
@@ -35,6 +36,16 @@ struct SceneParams {
   double log_radius = 0.1, log_length = 1.0;
   unsigned seed = 1;
   std::string file; // scene file for scene "file"
+};
+
+// A scene as a model: its bodies, the joints among them, and the settings a model file carries (MJCF's
+// <option>: time step and gravity; unset here means the app's options decide).
+struct Model {
+  std::vector<Body> bodies;
+  std::vector<Joint> joints;
+  double timestep = 0.0; // > 0: the file's time step
+  bool has_gravity = false;
+  Vec3 gravity = Vec3(0, 0, -9.81);
 };
 
 std::vector<std::string> sceneNames();
