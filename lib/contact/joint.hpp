@@ -37,6 +37,14 @@ struct Joint {
   // frame when b = -1); equal in the world at assembly.
   Mat3 fa = Mat3::Identity(), fb = Mat3::Identity();
   double length = 0.0; // distance joint: the anchors' distance
+  // Limit (hinge: the angle of b relative to a about the axis, rad; slider: the travel of b relative to a along
+  // the axis, m; both zero at assembly): a unilateral row that acts only when reached.
+  bool limited = false;
+  double lower = 0.0, upper = 0.0;
+  // Velocity motor (hinge, slider): drives the relative speed about / along the axis to target_speed (rad/s,
+  // m/s) with a force (torque) bounded by max_force (N, N m; > 0): a box row.
+  bool motor = false;
+  double target_speed = 0.0, max_force = 0.0;
 };
 
 // A joint assembled at the bodies' current poses: anchor and axis in the world (axis: hinge and slider; any
