@@ -61,6 +61,12 @@ find_library(MUPARSER_LIBRARY muparser)
 suite_require(MUPARSER_INCLUDE_DIR "muParser headers (muParser.h)" "libmuparser-dev")
 suite_require(MUPARSER_LIBRARY "muParser library" "libmuparser-dev")
 
+# tinyxml2: the contact app's MJCF model files (lib/contact/mjcf).
+find_path(TINYXML2_INCLUDE_DIR tinyxml2.h)
+find_library(TINYXML2_LIBRARY tinyxml2)
+suite_require(TINYXML2_INCLUDE_DIR "tinyxml2 headers (tinyxml2.h)" "libtinyxml2-dev")
+suite_require(TINYXML2_LIBRARY "tinyxml2 library" "libtinyxml2-dev")
+
 find_path(METIS_INCLUDE_DIR metis.h)
 find_library(METIS_LIBRARY metis)
 suite_require(METIS_INCLUDE_DIR "METIS headers" "libmetis-dev")

@@ -17,8 +17,12 @@ namespace {
 // One-line option declarations inside the PetscOptionsBegin/End block (each documented by -help).
 struct Reader {
   PetscOptionItems* po;
-  PetscErrorCode real(const char* name, const char* text, double* v) const {
-    return suite::optionsReal(po, name, text, nullptr, *v, v, nullptr);
+  PetscErrorCode real(const char* name, const char* text, double* v, bool* given = nullptr) const {
+    PetscBool set = PETSC_FALSE;
+    PetscFunctionBeginUser;
+    PetscCall(suite::optionsReal(po, name, text, nullptr, *v, v, &set));
+    if (given) *given = set;
+    PetscFunctionReturn(0);
   }
   template <class I> PetscErrorCode integer(const char* name, const char* text, I* v) const {
     PetscInt x = (PetscInt)*v;
@@ -51,7 +55,9 @@ struct Reader {
 PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoice(r.po, "-scene", "Scene", sceneChoices(), &s->scene));
-  PetscCall(r.string("-scene_file", "Scene file for -scene file (format: docs/contact.md#scene-file-format)",
+  PetscCall(r.string("-scene_file",
+                     "Scene file for -scene file (format: docs/contact.md#scene-file-format) or -scene mjcf "
+                     "(an MJCF model, docs/contact.md#mjcf-models)",
                      &s->file));
   PetscCall(r.real("-theta", "Incline angle (degrees)", &s->theta_deg));
   PetscCall(r.real("-size", "Box edge / sphere diameter (m)", &s->size));
@@ -69,17 +75,31 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscCall(r.real("-log_radius", "log_heap: log radius (m)", &s->log_radius));
   PetscCall(r.real("-log_length", "log_heap: log length (m)", &s->log_length));
   PetscCall(r.integer("-seed", "log_heap: random seed", &s->seed));
+  PetscCall(r.integer("-links", "chain: number of links", &s->links));
+  PetscCall(suite::optionsChoice(r.po, "-joint_type", "chain: joint between links",
+                                 {{"hinge", "about y (planar motion)"}, {"ball", "spherical"}},
+                                 &s->joint_type));
+  PetscCall(r.real("-angle",
+                   "pendulum, double_pendulum, chain: release angle from the downward vertical "
+                   "(degrees)",
+                   &s->angle_deg));
+  PetscCall(r.real("-end_mass_ratio", "chain: end sphere's mass / a link's mass (0: no end sphere)",
+                   &s->end_mass_ratio));
+  PetscCall(r.real("-link_length", "pendulum, double_pendulum, chain: joint spacing (m)", &s->link_length));
+  PetscCall(r.real("-link_radius", "pendulum, double_pendulum, chain: capsule radius (m)", &s->link_radius));
+  PetscCall(r.real("-link_mass", "pendulum, double_pendulum, chain: link mass (kg)", &s->link_mass));
   PetscFunctionReturn(0);
 }
 
 // Friction model and the LCP solvers.
-PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
+PetscErrorCode frictionOptions(const Reader& r, MPI_Comm comm, StepperOptions* t, ModelOverrides* given) {
   std::string friction = frictionName(t->friction);
   PetscFunctionBeginUser;
   PetscCall(suite::optionsChoice(r.po, "-friction", "Friction model", frictionChoices(), &friction));
   PetscCheck(frictionFromName(friction, &t->friction), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-friction %s: unknown friction model", friction.c_str());
-  PetscCall(r.real("-mu", "Friction coefficient", &t->mu));
+  PetscCall(r.real("-mu", "Friction coefficient (-scene mjcf: overrides the file's geom friction)", &t->mu,
+                   &given->mu));
   PetscBool target_set = PETSC_FALSE;
   PetscCall(suite::optionsReal(r.po, "-target_error",
                                "-friction auto: largest cone violation sum max(0, |l_t| - mu l_n) / sum l_n "
@@ -136,12 +156,14 @@ PetscErrorCode accuracyOptions(const Reader& r, MPI_Comm comm, StepperOptions* t
 }
 
 // Integration, stabilisation, splitting, polyhedral cone and sleeping.
-PetscErrorCode stepperOptions(const Reader& r, MPI_Comm comm, StepperOptions* t) {
+PetscErrorCode stepperOptions(const Reader& r, MPI_Comm comm, StepperOptions* t, ModelOverrides* given) {
   std::string start = splitStartName(t->split_start);
   double g = 9.81;
   PetscFunctionBeginUser;
-  PetscCall(r.real("-dt", "Time step (s)", &t->dt));
-  PetscCall(r.real("-gravity", "Gravity (m/s^2, along -z)", &g));
+  PetscCall(
+      r.real("-dt", "Time step (s; -scene mjcf: overrides the file's option timestep)", &t->dt, &given->dt));
+  PetscCall(r.real("-gravity", "Gravity (m/s^2, along -z; -scene mjcf: overrides the file's option gravity)",
+                   &g, &given->gravity));
   t->gravity = Vec3(0, 0, -g);
   PetscCall(r.real("-baumgarte", "Baumgarte factor for penetration (0, 1]", &t->baumgarte));
   PetscCall(r.real("-regularisation", "Relative compliance of the normal rows", &t->regularisation));
@@ -167,6 +189,9 @@ PetscErrorCode stepperOptions(const Reader& r, MPI_Comm comm, StepperOptions* t)
   PetscCall(r.real("-sleep_velocity", "Sleep: speed |v| + |w| r below which a body is at rest (m/s)",
                    &t->sleep_velocity));
   PetscCall(r.integer("-sleep_steps", "Sleep: steps at rest before sleeping", &t->sleep_steps));
+  PetscCall(r.real("-joint_tol", "Joints: position projection until max |Phi| <= tol (m)", &t->joint_tol));
+  PetscCall(r.integer("-joint_max_projections", "Joints: most Newton iterations of the position projection",
+                      &t->joint_max_projections));
   PetscFunctionReturn(0);
 }
 
@@ -233,6 +258,8 @@ PetscErrorCode checkRanges(MPI_Comm comm, const AppOptions& o) {
       {"-contact_sweeps", (double)t.contact_sweeps, '[', 0, inf, ']', true},
       {"-contact_budget_baumgarte", t.budget_baumgarte, '(', 0, 1, ']'},
       {"-contact_dense_max_rows", (double)t.dense_max_rows, '[', 0, inf, ']', true},
+      {"-joint_tol", t.joint_tol, '(', 0, inf, ')'},
+      {"-joint_max_projections", (double)t.joint_max_projections, '[', 0, inf, ']', true},
   };
   PetscFunctionBeginUser;
   for (const Range& c : ranges) PetscCall(checkRange(comm, c));
@@ -247,8 +274,8 @@ PetscErrorCode readOptions(MPI_Comm comm, AppOptions* o) {
   PetscOptionsBegin(comm, nullptr, "Contact app options", nullptr);
   const Reader r{PetscOptionsObject};
   PetscCall(sceneOptions(r, &o->scene));
-  PetscCall(frictionOptions(r, comm, &o->step));
-  PetscCall(stepperOptions(r, comm, &o->step));
+  PetscCall(frictionOptions(r, comm, &o->step, &o->given));
+  PetscCall(stepperOptions(r, comm, &o->step, &o->given));
   PetscCall(accuracyOptions(r, comm, &o->step));
   PetscCall(runOptions(r, o));
   PetscOptionsEnd();

@@ -13,8 +13,14 @@ namespace contact_app {
 
 using namespace suite::contact;
 
+// The options given on the command line that a model file's settings would otherwise set (-scene mjcf).
+struct ModelOverrides {
+  bool dt = false, gravity = false, mu = false;
+};
+
 struct AppOptions {
   SceneParams scene;
+  ModelOverrides given;
   StepperOptions step;
   PetscInt steps = 200, output_every = 10, dump_max = 1000;
   PetscReal overlap_tol = 1e-3;

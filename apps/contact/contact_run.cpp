@@ -30,9 +30,10 @@ namespace {
 // the problems of each step dumped on request, a failed step's problem dumped next to the output.
 class ContactStepping : public suite::TimeStepped {
 public:
-  ContactStepping(const suite::RunContext& ctx, const AppOptions& o, std::vector<Body> bodies)
-      : ctx_(ctx), o_(o), bodies_(std::move(bodies)), stepper_(o.step),
+  ContactStepping(const suite::RunContext& ctx, const AppOptions& o, Model model)
+      : ctx_(ctx), o_(o), bodies_(std::move(model.bodies)), stepper_(o.step),
         scheme_(checkpointScheme(o.scene.scene, o.step.friction)) {
+    stepper_.setJoints(std::move(model.joints)); // checked by buildModel below
     stepper_.keepProblems(!o.dump.empty());
     if (o.step.friction == FrictionModel::Auto)
       for (const std::string& n : autoRungNames(o.step))
@@ -109,6 +110,7 @@ PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suit
   out->status = suite::StepStatus::Done;
   out->t_new = t + dt;
   rec_.step(st, out->t_new, mechanicalEnergy(bodies_, o_.step.gravity), wall);
+  if (!stepper_.joints().empty()) rec_.jointStep(st, stepper_, bodies_);
   PetscFunctionReturn(0);
 }
 
@@ -218,13 +220,44 @@ PetscErrorCode ContactStepping::phaseSummary() const {
   PetscFunctionReturn(0);
 }
 
-// The scene, validated (a collective error on a bad one).
-PetscErrorCode buildBodies(MPI_Comm comm, const AppOptions& o, std::vector<Body>* bodies) {
+// A model file's settings (time step, gravity, friction) where the command line gave none, logged.
+PetscErrorCode applyModelSettings(MPI_Comm comm, bool quiet, const Model& m, AppOptions* o) {
+  PetscFunctionBeginUser;
+  if (m.timestep > 0 && !o->given.dt) {
+    o->step.dt = m.timestep;
+    PetscCall(suite::logInfo(comm, quiet, "contact: time step %g from the model file", m.timestep));
+  }
+  if (m.has_gravity && !o->given.gravity) {
+    PetscCheck(
+        m.gravity.x() == 0 && m.gravity.y() == 0 && m.gravity.z() <= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+        "the model file's gravity (%g, %g, %g) is not along -z, the only direction the contact app takes",
+        m.gravity.x(), m.gravity.y(), m.gravity.z());
+    o->step.gravity = m.gravity;
+    PetscCall(suite::logInfo(comm, quiet, "contact: gravity %g m/s^2 from the model file", -m.gravity.z()));
+  }
+  if (m.friction >= 0 && !o->given.mu) {
+    o->step.mu = m.friction;
+    PetscCall(
+        suite::logInfo(comm, quiet, "contact: friction coefficient %g from the model file", m.friction));
+  }
+  PetscFunctionReturn(0);
+}
+
+// The scene, validated, its settings applied, and its joints accepted by the stepper (a collective error on a
+// bad one).
+PetscErrorCode buildModel(MPI_Comm comm, bool quiet, AppOptions* o, Model* model) {
   std::string scene_error;
   PetscFunctionBeginUser;
   try {
-    *bodies = buildValidScene(o.scene, o.overlap_tol);
-  } catch (const SceneError& e) {
+    *model = buildValidModel(o->scene, o->overlap_tol);
+  } catch (const std::runtime_error& e) {
+    scene_error = e.what();
+  }
+  PetscCheck(scene_error.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", scene_error.c_str());
+  PetscCall(applyModelSettings(comm, quiet, *model, o));
+  try {
+    Stepper(o->step).setJoints(model->joints);
+  } catch (const std::runtime_error& e) {
     scene_error = e.what();
   }
   PetscCheck(scene_error.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", scene_error.c_str());
@@ -250,17 +283,17 @@ PetscErrorCode run(suite::RunContext& ctx) {
   if (!o.output.empty()) PetscCall(suite::checkOutputWritable(ctx.comm(), o.output, "output"));
   const SceneSize size = sceneSize(o.scene); // known before the scene is built, except from a file
   if (size.bodies > 0) PetscCall(checkContactSizes(ctx.comm(), o, size));
-  std::vector<Body> bodies;
-  PetscCall(buildBodies(ctx.comm(), o, &bodies));
-  if (size.bodies <= 0) PetscCall(checkContactSizes(ctx.comm(), o, sceneSize(bodies)));
+  Model model;
+  PetscCall(buildModel(ctx.comm(), ctx.quiet(), &o, &model));
+  if (size.bodies <= 0) PetscCall(checkContactSizes(ctx.comm(), o, sceneSize(model.bodies)));
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
-                           "contact: scene %s, %zu bodies, friction %s (mu %g), solver %s",
-                           o.scene.scene.c_str(), bodies.size(), frictionName(o.step.friction), o.step.mu,
-                           o.step.lcp_solver.c_str()));
+                           "contact: scene %s, %zu bodies, %zu joints, friction %s (mu %g), solver %s",
+                           o.scene.scene.c_str(), model.bodies.size(), model.joints.size(),
+                           frictionName(o.step.friction), o.step.mu, o.step.lcp_solver.c_str()));
   PetscCall(PetscLogStagePop());
 
   PetscCall(PetscLogStagePush(stages.solve));
-  ContactStepping app(ctx, o, std::move(bodies));
+  ContactStepping app(ctx, o, std::move(model));
   suite::TimeLoopSettings set;
   set.app = "contact";
   set.max_steps = o.steps;

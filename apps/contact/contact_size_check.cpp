@@ -40,7 +40,8 @@ std::string sizeOptions(const SceneParams& s) {
   if (s.scene == "pile_grid")
     return "-piles " + std::to_string(s.piles) + " -pyramid_base " + std::to_string(s.pyramid_base);
   if (s.scene == "log_heap") return "-n_logs " + std::to_string(s.n_logs);
-  if (s.scene == "file") return "-scene_file " + s.file;
+  if (s.scene == "file" || s.scene == "mjcf") return "-scene_file " + s.file;
+  if (s.scene == "chain") return "-links " + std::to_string(s.links);
   return "-scene " + s.scene;
 }
 } // namespace
@@ -51,7 +52,8 @@ SceneSize sceneSize(const SceneParams& s) {
   if (s.scene == "pyramid") return {1.0 + boxes, 8.0 * boxes};
   if (s.scene == "pile_grid") return {1.0 + s.piles * boxes, 8.0 * s.piles * boxes, 8.0 * boxes};
   if (s.scene == "log_heap") return {5.0 + s.n_logs, 4.0 * s.n_logs};
-  if (s.scene == "file") return {-1.0, -1.0};
+  if (s.scene == "file" || s.scene == "mjcf") return {-1.0, -1.0};
+  if (s.scene == "chain") return {s.links + 1.0, 8.0 * (s.links + 1.0)};
   return {2.0, 8.0}; // incline, drop: one body on a plane
 }
 

@@ -153,4 +153,10 @@ void unpackState(const double* r, Body* b) {
   b->w = Vec3(r[10], r[11], r[12]);
 }
 
+void advancePose(Body* b, const Vec3& v, const Vec3& w, double dt) {
+  b->x += dt * v;
+  const double ang = w.norm() * dt;
+  if (ang > 0) b->q = (Quat(Eigen::AngleAxisd(ang, w.normalized())) * b->q).normalized();
+}
+
 } // namespace suite::contact

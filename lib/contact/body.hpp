@@ -67,6 +67,9 @@ struct Body {
 Body makeBody(const std::string& name, const Shape& shape, double density, double mass, const Vec3& x,
               const Quat& q, bool is_static);
 
+// One step of the pose with velocities v, w: x += dt v, q <- exp(dt w / 2) q (normalised).
+void advancePose(Body* b, const Vec3& v, const Vec3& w, double dt);
+
 // The dynamic state of a body as kStateSize numbers (checkpoints): x (3), q (x, y, z, w), v (3), w (3).
 constexpr int kStateSize = 13;
 void packState(const Body& b, double* r);

@@ -62,4 +62,18 @@ void Recorder::step(const StepStats& s, double t, double energy_value, double wa
   problem_offset.push_back((long long)problem_rung.size());
 }
 
+void Recorder::jointStep(const StepStats& s, const Stepper& stepper, const std::vector<Body>& bodies) {
+  if (joints.empty()) joints = stepper.joints();
+  joint_error.push_back(s.joint_error);
+  joint_velocity_error.push_back(s.joint_velocity_error);
+  projection_iterations.push_back(s.projection_iterations);
+  shake_iterations.push_back(s.shake_iterations);
+  for (int k = 0; k < (int)joints.size(); ++k) {
+    Vec3 f, m;
+    stepper.jointReaction(k, bodies, &f, &m);
+    joint_force.insert(joint_force.end(), {f.x(), f.y(), f.z()});
+    joint_torque.insert(joint_torque.end(), {m.x(), m.y(), m.z()});
+  }
+}
+
 } // namespace suite::contact

@@ -36,10 +36,18 @@ struct Recorder {
   std::vector<double> problem_rung, problem_rows, problem_time, problem_violation;
   std::vector<long long> problem_offset{0};
   std::string auto_rungs; // the ladder's names, comma-separated ("": not auto)
+  // joints: the joint table, per step the largest |Phi| after the projection, its iterations, the largest
+  // |G v|, and per step and joint the reaction force and torque (about the anchor) on body a (steps x nj x 3)
+  std::vector<Joint> joints;
+  std::vector<double> joint_error, joint_velocity_error, joint_force, joint_torque;
+  std::vector<int> projection_iterations, shake_iterations;
 
   void frame(const std::vector<Body>& bodies, long long step, double t);
   void step(const StepStats& s, double t, double energy_value, double wall);
-  // Writes the body table and everything recorded (recorder_h5.cpp): /bodies, /frames, /steps, /splitting.
+  // The joint record of the step just recorded by step() (a run with joints calls both, every step).
+  void jointStep(const StepStats& s, const Stepper& stepper, const std::vector<Body>& bodies);
+  // Writes the body table and everything recorded (recorder_h5.cpp): /bodies, /frames, /steps, /splitting,
+  // /friction_auto and /joints.
   PetscErrorCode write(H5Output& out, const std::vector<Body>& bodies) const;
 };
 

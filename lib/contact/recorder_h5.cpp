@@ -128,6 +128,37 @@ PetscErrorCode writeFrictionAuto(H5Output& out, const Recorder& rec) {
                                "step_rung: the highest rung of the step (-1: no contact)"));
   PetscFunctionReturn(0);
 }
+// Joints: /joints (the table, the per-step errors and reactions; see Recorder).
+PetscErrorCode writeJoints(H5Output& out, const Recorder& rec) {
+  using U = unsigned long long;
+  const U nj = rec.joints.size(), ns = rec.joint_error.size();
+  std::vector<int> type(nj), pair(2 * nj);
+  std::vector<std::string> name(nj);
+  PetscFunctionBeginUser;
+  if (!nj || !ns) PetscFunctionReturn(0);
+  for (U k = 0; k < nj; ++k) {
+    type[k] = (int)rec.joints[k].type;
+    pair[2 * k] = rec.joints[k].a, pair[2 * k + 1] = rec.joints[k].b;
+    name[k] = rec.joints[k].name;
+  }
+  PetscCall(out.writeReplicated("/joints/type", type.data(), {nj}, ""));
+  PetscCall(out.writeReplicated("/joints/bodies", pair.data(), {nj, 2}, ""));
+  PetscCall(out.writeReplicatedStrings("/joints/name", name));
+  PetscCall(out.writeReplicated("/joints/error", rec.joint_error.data(), {ns}, "m"));
+  PetscCall(out.writeReplicated("/joints/velocity_error", rec.joint_velocity_error.data(), {ns}, "m/s"));
+  PetscCall(out.writeReplicated("/joints/projection_iterations", rec.projection_iterations.data(), {ns}, ""));
+  PetscCall(out.writeReplicated("/joints/shake_iterations", rec.shake_iterations.data(), {ns}, ""));
+  PetscCall(out.writeReplicated("/joints/force", rec.joint_force.data(), {ns, nj, 3}, "N"));
+  PetscCall(out.writeReplicated("/joints/torque", rec.joint_torque.data(), {ns, nj, 3}, "N m"));
+  PetscCall(out.writeAttribute("/joints", "types", "0 ball, 1 hinge, 2 slider, 3 fixed, 4 distance"));
+  PetscCall(out.writeAttribute("/joints", "layout",
+                               "bodies: (a, b) body indices, b = -1 the world; per step: shake_iterations "
+                               "(-1: SHAKE stopped contracting, the velocity projection alone) "
+                               "of the velocities, error = max |Phi| after the position projection "
+                               "(projection_iterations), velocity_error = max |G v| at the step's end, "
+                               "force and torque (about the anchor) of the joint on body a, world frame"));
+  PetscFunctionReturn(0);
+}
 } // namespace
 
 PetscErrorCode Recorder::write(H5Output& out, const std::vector<Body>& bodies) const {
@@ -137,6 +168,7 @@ PetscErrorCode Recorder::write(H5Output& out, const std::vector<Body>& bodies) c
   PetscCall(writeSteps(out, *this));
   PetscCall(writeSplitting(out, *this));
   PetscCall(writeFrictionAuto(out, *this));
+  PetscCall(writeJoints(out, *this));
   PetscFunctionReturn(0);
 }
 

@@ -4,6 +4,7 @@
 #include "contact/scenes.hpp"
 
 #include "contact/collision.hpp"
+#include "contact/mjcf.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -165,27 +166,97 @@ std::vector<Body> logHeapScene(const SceneParams& p) {
   return b;
 }
 
-std::vector<Body> fileScene(const SceneParams& p) {
+Model fileScene(const SceneParams& p) {
   require(!p.file.empty(), "-scene file needs -scene_file PATH");
   return readSceneFile(p.file);
+}
+
+Model mjcfScene(const SceneParams& p) {
+  require(!p.file.empty(), "-scene mjcf needs -scene_file PATH (an MJCF model)");
+  return readMjcfFile(p.file);
+}
+
+// n capsule links hinged to the world at the origin (see SceneParams), the end sphere of chain.
+Model linkChain(const SceneParams& p, int n, bool end_load) {
+  require(n >= 1, "-links " + std::to_string(n) + ": must be >= 1");
+  require(p.link_length > 0 && std::isfinite(p.link_length),
+          "-link_length " + num(p.link_length) + ": must be > 0");
+  require(p.link_radius > 0 && std::isfinite(p.link_radius),
+          "-link_radius " + num(p.link_radius) + ": must be > 0");
+  require(p.link_mass > 0 && std::isfinite(p.link_mass), "-link_mass " + num(p.link_mass) + ": must be > 0");
+  require(p.end_mass_ratio >= 0 && std::isfinite(p.end_mass_ratio),
+          "-end_mass_ratio " + num(p.end_mass_ratio) + ": must be >= 0");
+  require(std::isfinite(p.angle_deg), "-angle: must be finite");
+  const JointType type = jointFromName(p.joint_type);
+  require(type == JointType::Hinge || type == JointType::Ball,
+          "-joint_type " + p.joint_type + ": the chain scenes take hinge or ball");
+  const double L = p.link_length, th = p.angle_deg * kDeg;
+  const Vec3 d(std::sin(th), 0.0, -std::cos(th)); // along the chain, from the world anchor
+  Shape s;
+  s.type = ShapeType::Capsule;
+  s.radius = p.link_radius;
+  s.half_length = 0.5 * L;
+  const Quat q = Quat::FromTwoVectors(Vec3::UnitZ(), d);
+  Model m;
+  for (int k = 0; k < n; ++k) {
+    m.bodies.push_back(
+        makeBody("link" + std::to_string(k), s, 0.0, p.link_mass, (k + 0.5) * L * d, q, false));
+    m.joints.push_back(makeJoint("joint" + std::to_string(k), type, m.bodies, k, k > 0 ? k - 1 : -1,
+                                 k * L * d, Vec3::UnitY()));
+  }
+  if (end_load && p.end_mass_ratio > 0) {
+    Shape ball;
+    ball.type = ShapeType::Sphere;
+    ball.radius = 2 * p.link_radius;
+    m.bodies.push_back(makeBody("load", ball, 0.0, p.end_mass_ratio * p.link_mass, (n * L + ball.radius) * d,
+                                Quat::Identity(), false));
+    m.joints.push_back(makeJoint("joint_load", type, m.bodies, n, n - 1, n * L * d, Vec3::UnitY()));
+  }
+  for (Body& b : m.bodies)
+    b.contype = 2, b.conaffinity = 1; // links collide with other bodies, not each other
+  return m;
+}
+
+Model pendulumScene(const SceneParams& p) {
+  return linkChain(p, 1, false);
+}
+Model doublePendulumScene(const SceneParams& p) {
+  return linkChain(p, 2, false);
+}
+Model chainScene(const SceneParams& p) {
+  return linkChain(p, p.links, true);
+}
+
+// A builder of bodies only, as a model without joints.
+template <std::vector<Body> (*F)(const SceneParams&)> Model bodiesOnly(const SceneParams& p) {
+  Model m;
+  m.bodies = F(p);
+  return m;
 }
 
 // The scene registry: one line per scene (name, one-line description for -help, builder).
 struct SceneEntry {
   const char* name;
   const char* description;
-  std::vector<Body> (*build)(const SceneParams&);
+  Model (*build)(const SceneParams&);
 };
 
 const std::vector<SceneEntry>& registry() {
   static const std::vector<SceneEntry> r = {
-      {"incline", "a box on a plane inclined by -theta degrees", inclineScene},
-      {"drop", "one -drop_body dropped from -height onto a plane", dropScene},
-      {"box_stack", "a column of -stack_height boxes on the ground", boxStackScene},
-      {"pyramid", "a pyramid of boxes, -pyramid_base in the bottom row", pyramidScene},
-      {"pile_grid", "-piles pyramids of base -pyramid_base on a grid (independent piles)", pileGridScene},
-      {"log_heap", "-n_logs capsule logs dropped between four walls (Lacoursiere 2003)", logHeapScene},
-      {"file", "the bodies of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
+      {"incline", "a box on a plane inclined by -theta degrees", bodiesOnly<inclineScene>},
+      {"drop", "one -drop_body dropped from -height onto a plane", bodiesOnly<dropScene>},
+      {"box_stack", "a column of -stack_height boxes on the ground", bodiesOnly<boxStackScene>},
+      {"pyramid", "a pyramid of boxes, -pyramid_base in the bottom row", bodiesOnly<pyramidScene>},
+      {"pile_grid", "-piles pyramids of base -pyramid_base on a grid (independent piles)",
+       bodiesOnly<pileGridScene>},
+      {"log_heap", "-n_logs capsule logs dropped between four walls (Lacoursiere 2003)",
+       bodiesOnly<logHeapScene>},
+      {"pendulum", "one capsule link on a hinge to the world, released at -angle degrees", pendulumScene},
+      {"double_pendulum", "two capsule links on hinges, released at -angle degrees", doublePendulumScene},
+      {"chain", "-links capsule links on -joint_type joints with an end load of -end_mass_ratio", chainScene},
+      {"file", "the bodies and joints of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
+      {"mjcf", "the MJCF model -scene_file (MuJoCo's XML; the subset: docs/contact.md#mjcf-models)",
+       mjcfScene},
   };
   return r;
 }
@@ -203,6 +274,10 @@ std::vector<Choice> sceneChoices() {
 }
 
 std::vector<Body> buildScene(const SceneParams& p) {
+  return buildModel(p).bodies;
+}
+
+Model buildModel(const SceneParams& p) {
   require(p.size > 0 && std::isfinite(p.size), "-size " + num(p.size) + ": must be > 0");
   require(p.density > 0 && std::isfinite(p.density), "-density " + num(p.density) + ": must be > 0");
   require(p.mass >= 0 && std::isfinite(p.mass), "-mass " + num(p.mass) + ": must be > 0 (0 = from -density)");
@@ -232,7 +307,7 @@ Vec3 parseVec(const std::string& where, const std::string& key, const std::strin
 }
 } // namespace
 
-std::vector<Body> readSceneFile(const std::string& path) {
+Model readSceneFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   require((bool)in, "scene file " + path + ": cannot open");
   in.seekg(0, std::ios::end);
@@ -242,7 +317,7 @@ std::vector<Body> readSceneFile(const std::string& path) {
   in.seekg(0);
   std::string text((size_t)size, '\0');
   in.read(&text[0], size);
-  return parseScene(text, path);
+  return parseSceneModel(text, path);
 }
 
 namespace {
@@ -326,13 +401,84 @@ Body parseBody(const std::string& where, const std::string& type, std::stringstr
     throw SceneError(where + ": " + e.what());
   }
 }
+// A joint line (scene file): its keys, the bodies by name until every body is read.
+struct JointLine {
+  std::string where, name, type, a, b = "world";
+  Vec3 anchor = Vec3::Zero(), axis = Vec3::Zero(), anchor_b = Vec3::Zero();
+  bool has_anchor = false, has_anchor_b = false;
+};
+
+JointLine parseJointLine(const std::string& where, std::stringstream& ss, size_t index) {
+  JointLine j;
+  j.where = where;
+  j.name = "joint" + std::to_string(index);
+  for (std::string tok; ss >> tok;) {
+    const auto eq = tok.find('=');
+    require(eq != std::string::npos, where + ": expected key=value, got '" + tok + "'");
+    const std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
+    if (k == "name")
+      j.name = v;
+    else if (k == "type")
+      j.type = v;
+    else if (k == "a")
+      j.a = v;
+    else if (k == "b")
+      j.b = v;
+    else if (k == "anchor")
+      j.anchor = parseVec(where, k, v, 3, nullptr), j.has_anchor = true;
+    else if (k == "axis")
+      j.axis = parseVec(where, k, v, 3, nullptr);
+    else if (k == "anchor_b")
+      j.anchor_b = parseVec(where, k, v, 3, nullptr), j.has_anchor_b = true;
+    else
+      throw SceneError(where + ": unknown joint key '" + k + "'");
+  }
+  require(!j.type.empty(), where + ": joint needs type=ball|hinge|slider|fixed|distance");
+  require(!j.a.empty(), where + ": joint needs a=BODY");
+  require(j.has_anchor, where + ": joint needs anchor=x,y,z");
+  return j;
+}
+
+// The index of the body named name (-1 for "world"); a missing or ambiguous name is an error at where.
+int bodyIndex(const std::vector<Body>& bodies, const std::string& name, const std::string& where) {
+  if (name == "world") return -1;
+  int found = -1;
+  for (int i = 0; i < (int)bodies.size(); ++i)
+    if (bodies[i].name == name) {
+      require(found < 0, where + ": body name '" + name + "' is not unique");
+      found = i;
+    }
+  require(found >= 0, where + ": no body named '" + name + "'");
+  return found;
+}
+
+std::vector<Joint> resolveJoints(const std::vector<JointLine>& lines, const std::vector<Body>& bodies) {
+  std::vector<Joint> joints;
+  for (const JointLine& l : lines) {
+    try {
+      const JointType type = jointFromName(l.type);
+      require(type != JointType::Distance || l.has_anchor_b, "a distance joint needs anchor_b=x,y,z");
+      const int a = bodyIndex(bodies, l.a, l.where), b = bodyIndex(bodies, l.b, l.where);
+      joints.push_back(makeJoint(l.name, type, bodies, a, b, l.anchor, l.axis, l.anchor_b));
+    } catch (const SceneError& e) {
+      const std::string msg = e.what();
+      throw SceneError(msg.rfind(l.where, 0) == 0 ? msg : l.where + ": " + msg);
+    }
+  }
+  return joints;
+}
 } // namespace
 
 std::vector<Body> parseScene(const std::string& text, const std::string& path) {
+  return parseSceneModel(text, path).bodies;
+}
+
+Model parseSceneModel(const std::string& text, const std::string& path) {
   require(text.size() <= (size_t)kMaxSceneBytes,
           "scene file " + path + ": larger than " + std::to_string(kMaxSceneBytes) + " bytes");
   std::istringstream in(text);
   std::vector<Body> bodies;
+  std::vector<JointLine> joint_lines;
   std::string line;
   for (int lineno = 1; std::getline(in, line); ++lineno) {
     require(bodies.size() < (size_t)kMaxSceneBodies, path + ":" + std::to_string(lineno) + ": more than " +
@@ -342,21 +488,29 @@ std::vector<Body> parseScene(const std::string& text, const std::string& path) {
     std::stringstream ss(line);
     std::string type;
     if (!(ss >> type)) continue;
-    bodies.push_back(parseBody(path + ":" + std::to_string(lineno), type, ss, bodies.size()));
+    const std::string where = path + ":" + std::to_string(lineno);
+    if (type == "joint")
+      joint_lines.push_back(parseJointLine(where, ss, joint_lines.size()));
+    else
+      bodies.push_back(parseBody(where, type, ss, bodies.size()));
   }
   require(!bodies.empty(), "scene file " + path + ": no bodies");
-  return bodies;
+  Model m;
+  m.joints = resolveJoints(joint_lines, bodies);
+  m.bodies = std::move(bodies);
+  return m;
 }
 
-std::vector<Body> buildValidScene(const SceneParams& p, double overlap_tol) {
-  std::vector<Body> bodies = buildScene(p);
+Model buildValidModel(const SceneParams& p, double overlap_tol) {
+  Model m = buildModel(p);
+  std::vector<Body>& bodies = m.bodies;
   validateScene(bodies, overlap_tol);
   for (size_t i = 0; i < bodies.size(); ++i) // every pair the scene can produce has a contact generator
     for (size_t j = i + 1; j < bodies.size(); ++j) {
       std::vector<Contact> tmp;
       collide(bodies, (int)i, (int)j, -INFINITY, &tmp);
     }
-  return bodies;
+  return m;
 }
 
 void validateScene(const std::vector<Body>& bodies, double tol) {

@@ -7,6 +7,8 @@
 //   box      name=b half=0.5,0.5,0.5 pos=0,0,0.5 [axis_angle=ax,ay,az,deg] [density=1000 | mass=2]
 //            [vel=vx,vy,vz] [omega=wx,wy,wz] [static]
 //   sphere   radius=R ...;  capsule / cylinder  radius=R half_length=H ... (axis = local z)
+//   joint    type=ball|hinge|slider|fixed|distance a=BODY [b=BODY|world] anchor=x,y,z [axis=x,y,z]
+//            [anchor_b=x,y,z (distance)] [name=j]   (assembled at the bodies' poses; b defaults to the world)
 #pragma once
 
 #include "contact/body.hpp"
@@ -36,6 +38,16 @@ struct SceneParams {
   double log_radius = 0.1, log_length = 1.0;
   unsigned seed = 1;
   std::string file; // scene file for scene "file"
+  // pendulum, double_pendulum, chain: capsule links (segment -link_length between the joints at its ends,
+  // radius -link_radius, mass -link_mass) hinged to the world at the origin, released at -angle degrees from
+  // the downward vertical in the x-z plane; chain: -links links on -joint_type joints and an end sphere (radius
+  // 2 link radii) of -end_mass_ratio times a link's mass (0: none). The links and the end sphere collide with
+  // other bodies but not with each other (contype 2, conaffinity 1: a rope or chain model).
+  int links = 10;
+  std::string joint_type = "hinge";
+  double angle_deg = 90.0;
+  double end_mass_ratio = 0.0;
+  double link_length = 0.1, link_radius = 0.01, link_mass = 1.0;
 };
 
 // A scene as a model: its bodies, the joints among them, and the settings a model file carries (MJCF's
@@ -46,23 +58,26 @@ struct Model {
   double timestep = 0.0; // > 0: the file's time step
   bool has_gravity = false;
   Vec3 gravity = Vec3(0, 0, -9.81);
+  double friction = -1.0; // >= 0: the file's friction coefficient (one for every contact; < 0: unset)
 };
 
 std::vector<std::string> sceneNames();
 // The registered scenes with their one-line descriptions (the -scene choices, scenes.cpp's registry).
 std::vector<Choice> sceneChoices();
 // Throws SceneError with a one-line message for bad parameters or an unknown scene.
-std::vector<Body> buildScene(const SceneParams& p);
-std::vector<Body> readSceneFile(const std::string& path);
+Model buildModel(const SceneParams& p);
+std::vector<Body> buildScene(const SceneParams& p); // buildModel(p).bodies
+Model readSceneFile(const std::string& path);
 // The parser itself, MPI- and PETSc-free, on the file content (path names the errors): throws SceneError
 // (a std::runtime_error) on any bad input; memory is bounded by the limits below.
 constexpr long long kMaxSceneBytes = 64LL << 20;
 constexpr int kMaxSceneBodies = 1000000;
-std::vector<Body> parseScene(const std::string& text, const std::string& path = "scene");
+Model parseSceneModel(const std::string& text, const std::string& path = "scene");
+std::vector<Body> parseScene(const std::string& text, const std::string& path = "scene"); // its bodies
 // Throws SceneError if two static bodies (other than planes) overlap by more than tol.
 void validateScene(const std::vector<Body>& bodies, double tol);
-// buildScene, validateScene, and a check that every pair of bodies has a contact generator (throws SceneError).
-std::vector<Body> buildValidScene(const SceneParams& p, double overlap_tol);
+// buildModel, validateScene, and a check that every pair of bodies has a contact generator (throws SceneError).
+Model buildValidModel(const SceneParams& p, double overlap_tol);
 // A static plane with world normal n through point.
 Body makePlane(const std::string& name, const Vec3& n, const Vec3& point);
 

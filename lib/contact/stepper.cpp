@@ -7,6 +7,7 @@
 #include "contact/delassus.hpp"
 #include "contact/friction_auto.hpp"
 #include "contact/friction_formulation.hpp"
+#include "contact/joint_system.hpp"
 
 #include <algorithm>
 #include <array>
@@ -111,9 +112,7 @@ bool integrate(const std::vector<Vec3>& v, const std::vector<Vec3>& w, double dt
     if (B.is_static) continue;
     B.v = v[i];
     B.w = w[i];
-    B.x += dt * B.v;
-    const double ang = B.w.norm() * dt;
-    if (ang > 0) B.q = (Quat(Eigen::AngleAxisd(ang, B.w.normalized())) * B.q).normalized();
+    advancePose(&B, B.v, B.w, dt);
     if (!B.x.allFinite() || !B.v.allFinite() || !B.w.allFinite() || !B.q.coeffs().allFinite()) {
       *bad = B.name;
       return false;
@@ -261,13 +260,19 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
   const std::vector<ConstraintRow> rows = form.rows(in.cs);
   const bool exact = o.accuracy == ContactAccuracy::Exact;
-  const bool sparse =
-      o.friction != FrictionModel::Polyhedral && (!exact || (int)rows.size() > o.dense_max_rows);
+  bool on_joints = false; // contacts on jointed bodies: the dense A with the joint block's Schur complement
+  for (const ConstraintRow& r : rows)
+    on_joints =
+        on_joints ||
+        (joint_sys_ && (joint_sys_->touches(in.cs[r.contact].a) || joint_sys_->touches(in.cs[r.contact].b)));
+  const bool sparse = !on_joints && o.friction != FrictionModel::Polyhedral &&
+                      (!exact || (int)rows.size() > o.dense_max_rows);
   StepperOptions ob = o; // balanced / fast: their own Baumgarte factor (contact_accuracy.hpp)
   if (!exact) ob.baumgarte = o.budget_baumgarte;
   // S deferred (sparseMatrix()): the block PGS sweeps of fast and balanced and the exact path's body-space
   // solves need only the rows, masses and compliance; a fallback builds it when it needs it
-  const DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse, true);
+  DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse, true);
+  if (on_joints) joint_sys_->correctDelassus(&sys);
   const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
   if (!exact) {
@@ -278,6 +283,89 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   }
   applyImpulses(sys, imp.z, v, w);
   *lam = imp.lambda;
+  return true;
+}
+
+void Stepper::setJoints(std::vector<Joint> joints) {
+  if (!joints.empty() && o_.accuracy != ContactAccuracy::Exact)
+    throw std::runtime_error("joints need -contact_accuracy exact (the block PGS of balanced and fast has no "
+                             "joint blocks)");
+  if (!joints.empty() && o_.islands)
+    throw std::runtime_error("joints need -contact_islands off (islands do not follow joints)");
+  for (const Joint& j : joints)
+    if (j.limited || j.motor)
+      throw std::runtime_error("joint '" + j.name + "': limits and motors are not supported by the stepper");
+  joined_.clear();
+  for (const Joint& j : joints)
+    if (j.b >= 0) joined_.push_back({std::min(j.a, j.b), std::max(j.a, j.b)});
+  std::sort(joined_.begin(), joined_.end());
+  joints_ = std::move(joints);
+}
+
+void Stepper::jointReaction(int k, const std::vector<Body>& bodies, Vec3* force, Vec3* torque) const {
+  *force = *torque = Vec3::Zero();
+  if (joint_impulse_.size() == 0) return;
+  const int end = k + 1 < (int)joint_first_.size() ? joint_first_[k + 1] : (int)joint_rows_.size();
+  for (int r = joint_first_[k]; r < end; ++r) {
+    *force += joint_rows_[r].ja.head<3>() * joint_impulse_[r] / o_.dt;
+    *torque += joint_rows_[r].ja.tail<3>() * joint_impulse_[r] / o_.dt;
+  }
+  const Body& A = bodies[joints_[k].a];
+  *torque -= (A.R() * joints_[k].ra).cross(*force); // about the anchor instead of the centre of mass
+}
+
+namespace {
+// The contacts the collision bits (body.hpp) and the joints (no contact between two bodies a joint connects)
+// allow.
+std::vector<Contact> allowedContacts(std::vector<Contact> cs, const std::vector<Body>& bodies,
+                                     const std::vector<std::pair<int, int>>& joined) {
+  std::vector<Contact> out;
+  out.reserve(cs.size());
+  for (Contact& c : cs) {
+    const Body &A = bodies[c.a], &B = bodies[c.b];
+    if (!(A.contype & B.conaffinity) && !(B.contype & A.conaffinity)) continue;
+    const std::pair<int, int> p{std::min(c.a, c.b), std::max(c.a, c.b)};
+    if (!joined.empty() && std::binary_search(joined.begin(), joined.end(), p)) continue;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+} // namespace
+
+// The joint part of a step's end: the poses projected onto the joints, the errors recorded. False (with the
+// message) on a non-finite state.
+bool Stepper::finishJoints(std::vector<Body>* next, const JointSystem& js, StepStats* st) {
+  st->joint_rows = js.rows();
+  const std::vector<Body> drifted = *next;
+  st->projection_iterations =
+      projectPositions(joints_, o_.joint_tol, o_.joint_max_projections, next, &st->joint_error);
+  if (st->shake_iterations < 0) // without SHAKE the velocities follow the projected poses (as SHAKE's would)
+    for (size_t i = 0; i < next->size(); ++i) {
+      Body& B = (*next)[i];
+      if (B.is_static) continue;
+      B.v += (B.x - drifted[i].x) / o_.dt;
+      const Eigen::AngleAxisd turn(B.q * drifted[i].q.conjugate());
+      B.w += turn.angle() * turn.axis() / o_.dt;
+    }
+  std::vector<Vec3> v(next->size()), w(next->size());
+  for (size_t i = 0; i < next->size(); ++i) v[i] = (*next)[i].v, w[i] = (*next)[i].w;
+  std::vector<JRow> rows;
+  std::vector<double> phi;
+  std::vector<int> first;
+  std::vector<Mat3> inv_i(next->size(), Mat3::Zero());
+  jointJacobian(*next, inv_i, joints_, &rows, &phi, &first);
+  for (const JRow& J : rows) {
+    double s = 0.0;
+    if (J.ba >= 0) s += J.ja.head<3>().dot(v[J.ba]) + J.ja.tail<3>().dot(w[J.ba]);
+    if (J.bb >= 0) s += J.jb.head<3>().dot(v[J.bb]) + J.jb.tail<3>().dot(w[J.bb]);
+    st->joint_velocity_error = std::max(st->joint_velocity_error, std::abs(s));
+  }
+  for (const Body& B : *next)
+    if (!B.x.allFinite() || !B.q.coeffs().allFinite()) {
+      st->failed = true;
+      st->message = "non-finite state of body '" + B.name + "' after the joint projection";
+      return false;
+    }
   return true;
 }
 
@@ -292,7 +380,7 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   const double slip_eps = o_.accuracy == ContactAccuracy::Exact ? 1e-9 : lcp::kInf;
   auto t = std::chrono::steady_clock::now();
   const double cpu0 = threadCpu();
-  contacts_ = findContacts(bodies, o_.margin, o_.gravity, o_.dt, slip_eps);
+  contacts_ = allowedContacts(findContacts(bodies, o_.margin, o_.gravity, o_.dt, slip_eps), bodies, joined_);
   phases_.collision += lap(&t);
   const int nc = (int)contacts_.size();
   st.contacts = nc;
@@ -302,8 +390,27 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
     vstar[i] = bodies[i].is_static ? bodies[i].v : Vec3(bodies[i].v + o_.dt * o_.gravity);
     wnew[i] = bodies[i].w;
   }
+  std::unique_ptr<JointSystem> js; // the joint block: v* projected, then v* + M^-1 N^T z (joint_system.hpp)
+  Eigen::VectorXd jlam;
+  if (!joints_.empty()) {
+    std::vector<Mat3> inv_i(nb);
+    for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
+    js = std::make_unique<JointSystem>(bodies, inv_i, joints_);
+    double free_energy = 0.0;
+    for (int i = 0; i < nb; ++i)
+      if (!bodies[i].is_static)
+        free_energy +=
+            0.5 * (bodies[i].mass * vstar[i].squaredNorm() + wnew[i].dot(bodies[i].inertiaWorld() * wnew[i]));
+    js->project(&vstar, &wnew, &jlam);
+    st.shake_iterations = js->shake(bodies, joints_, o_.dt, o_.joint_tol, o_.joint_max_projections,
+                                    free_energy * (1 + 1e-12), &vstar, &wnew, &jlam);
+  }
+  joint_sys_ = js.get();
   if (nc == 0) ids_.clear();
-  if (nc > 0 && !solveContacts(bodies, &vstar, &wnew, &lam, &st)) return st;
+  const bool solved = nc == 0 || solveContacts(bodies, &vstar, &wnew, &lam, &st);
+  joint_sys_ = nullptr;
+  if (!solved) return st;
+  if (js && nc > 0) js->project(&vstar, &wnew, &jlam);
   lap(&t); // solveContacts timed its phases
   std::vector<Body> next = bodies;
   std::string bad;
@@ -312,6 +419,10 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
     st.message = "non-finite state of body '" + bad + "' after the contact solve";
     return st;
   }
+  if (js && !finishJoints(&next, *js, &st)) return st;
+  if (js) joint_rows_ = js->jacobian(), joint_first_.clear(), joint_impulse_ = jlam;
+  if (js)
+    for (int k = 0; k < (int)joints_.size(); ++k) joint_first_.push_back(js->firstRow(k));
   bodies.swap(next);
   impulses_ = lam;
   forceMeasures(contacts_, lam, o_.mu, &st.force_ratio, &st.cone_violation, &st.normal_impulse);

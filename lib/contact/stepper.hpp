@@ -13,6 +13,8 @@
 #pragma once
 
 #include "contact/collision.hpp"
+#include "contact/delassus.hpp"
+#include "contact/joint.hpp"
 #include "contact/phase_times.hpp"
 #include "core/named_choice.hpp"
 #include "lcp/problem.hpp"
@@ -43,6 +45,7 @@ bool accuracyFromName(const std::string& name, ContactAccuracy* a);
 std::vector<Choice> accuracyChoices();
 
 class FrictionFormulation;
+class JointSystem;
 class AutoFriction;
 struct Island;
 
@@ -113,6 +116,13 @@ struct StepperOptions {
   bool islands = false;
   // -friction auto (friction_auto.hpp): the cone violation each problem's model must meet.
   double target_error = 1e-3;
+  // Joints (joint_system.hpp): the position projection ends at max |Phi| <= joint_tol (m; unit-vector dot
+  // products for the axis rows) or after joint_max_projections Newton iterations (then the step records its
+  // error and goes on); SHAKE takes at most as many. 30: the 200-link chain falling from horizontal at dt = 0.01
+  // (tip rotations of order 1 rad per step) needed up to 20 damped Newton iterations (measured), 10 left
+  // 1.3e-2 m.
+  double joint_tol = 1e-11;
+  int joint_max_projections = 30;
 };
 
 // Runs tasks 0..n-1 (solve(k)) and returns every result at its index; "" or an error message. The default
@@ -160,6 +170,15 @@ struct StepStats {
   int auto_solves = 0;
   int target_missed = 0;
   std::vector<double> problem_rungs, problem_rows, problem_times, problem_violations;
+  // Joints: their rows, the SHAKE iterations of the velocities (-1: SHAKE stopped contracting and the step kept
+  // the velocity projection alone, joint_system.hpp), the largest |Phi| after the position
+  // projection (m, see joint_system.hpp) and its Newton iterations, and the largest |G v| of the step's end
+  // velocities at the projected poses (m/s).
+  int joint_rows = 0;
+  int shake_iterations = 0;
+  double joint_error = 0.0;
+  int projection_iterations = 0;
+  double joint_velocity_error = 0.0;
   bool failed = false;
   std::string message; // failure: which solver, status, why
 };
@@ -202,9 +221,17 @@ public:
   const PhaseTimes& phaseTimes() const { return phases_; }
   // The time step of the next steps (the app's retry of a failed step at half dt).
   void setDt(double dt);
+  // The joints among the bodies (joint.hpp); contacts between two bodies a joint connects are not generated.
+  // Throws std::runtime_error for what the joint path does not support (see stepper.cpp).
+  void setJoints(std::vector<Joint> joints);
+  const std::vector<Joint>& joints() const { return joints_; }
+  // Per joint: the force and the torque (about the joint's anchor on a) that the joint exerted on its body a
+  // over the last step (impulse / dt; N, N m).
+  void jointReaction(int joint, const std::vector<Body>& bodies, Vec3* force, Vec3* torque) const;
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
+  bool finishJoints(std::vector<Body>* next, const JointSystem& js, StepStats* st);
   void matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
                              std::vector<bool>* has_prev, std::vector<int>* prev_rung);
   bool solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
@@ -259,6 +286,12 @@ private:
   std::vector<long long> ids_, prev_ids_; // persistent contact identities (contactIds())
   long long next_id_ = 0;
   std::vector<lcp::Problem> problems_;
+  std::vector<Joint> joints_;
+  std::vector<std::pair<int, int>> joined_; // the body pairs a joint connects (sorted)
+  std::vector<JRow> joint_rows_;            // the last step's joint rows (at its start) ...
+  std::vector<int> joint_first_;            // ... the first row of each joint ...
+  Eigen::VectorXd joint_impulse_;           // ... and their impulses
+  const JointSystem* joint_sys_ = nullptr;  // during a step: its joint block
   lcp::Vec solution_;
   bool keep_problems_ = false;
 };
