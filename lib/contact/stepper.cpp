@@ -292,6 +292,8 @@ void Stepper::setJoints(std::vector<Joint> joints) {
                              "joint blocks)");
   if (!joints.empty() && o_.islands)
     throw std::runtime_error("joints need -contact_islands off (islands do not follow joints)");
+  if (!joints.empty() && o_.sleep)
+    throw std::runtime_error("joints need sleeping off (-sleep: a sleeping body would freeze its joints)");
   for (const Joint& j : joints)
     if (j.limited || j.motor)
       throw std::runtime_error("joint '" + j.name + "': limits and motors are not supported by the stepper");
