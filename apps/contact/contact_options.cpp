@@ -86,8 +86,19 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscCall(r.real("-end_mass_ratio", "chain: end sphere's mass / a link's mass (0: no end sphere)",
                    &s->end_mass_ratio));
   PetscCall(r.real("-link_length", "pendulum, double_pendulum, chain: joint spacing (m)", &s->link_length));
-  PetscCall(r.real("-link_radius", "pendulum, double_pendulum, chain: capsule radius (m)", &s->link_radius));
-  PetscCall(r.real("-link_mass", "pendulum, double_pendulum, chain: link mass (kg)", &s->link_mass));
+  PetscCall(r.real("-link_radius",
+                   "pendulum, double_pendulum, chain, four_bar, slider_crank: capsule radius (m)",
+                   &s->link_radius));
+  PetscCall(r.real("-link_mass", "pendulum, double_pendulum, chain, four_bar, slider_crank: link mass (kg)",
+                   &s->link_mass));
+  PetscCall(r.real("-crank_length", "four_bar, slider_crank: crank length (m)", &s->crank_length));
+  PetscCall(r.real("-coupler_length", "four_bar: coupler length; slider_crank: rod length (m)",
+                   &s->coupler_length));
+  PetscCall(r.real("-rocker_length", "four_bar: rocker length (m)", &s->rocker_length));
+  PetscCall(r.real("-ground_length", "four_bar: distance between the ground pivots (m)", &s->ground_length));
+  PetscCall(r.real("-crank_angle", "four_bar, slider_crank: initial crank angle from +x towards +z (degrees)",
+                   &s->crank_angle_deg));
+  PetscCall(r.real("-crank_speed", "four_bar, slider_crank: initial crank speed (rad/s)", &s->crank_speed));
   PetscFunctionReturn(0);
 }
 

@@ -227,6 +227,64 @@ Model chainScene(const SceneParams& p) {
   return linkChain(p, p.links, true);
 }
 
+// A capsule link of radius r and mass m from p to q (its axis along q - p).
+Body linkBetween(const std::string& name, const Vec3& p, const Vec3& q, double r, double m) {
+  Shape s;
+  s.type = ShapeType::Capsule;
+  s.radius = r;
+  s.half_length = 0.5 * (q - p).norm();
+  Body b = makeBody(name, s, 0.0, m, 0.5 * (p + q), Quat::FromTwoVectors(Vec3::UnitZ(), q - p), false);
+  b.contype = 2, b.conaffinity = 1; // the links collide with other bodies, not with each other
+  return b;
+}
+
+// The four-bar (SceneParams): crank O2-A, coupler A-B, rocker O4-B in the x-z plane, hinges about y at the
+// ground pivots O2 = 0 and O4 = (ground, 0, 0), the crank at -crank_angle from +x towards +z.
+Model fourBarScene(const SceneParams& p) {
+  const double a = p.crank_length, b = p.coupler_length, c = p.rocker_length, d = p.ground_length;
+  require(a > 0 && b > 0 && c > 0 && d > 0,
+          "-crank_length, -coupler_length, -rocker_length, -ground_length: must be > 0");
+  const Vec3 A(a * std::cos(p.crank_angle_deg * kDeg), 0, a * std::sin(p.crank_angle_deg * kDeg)),
+      O4(d, 0, 0);
+  Vec3 B;
+  require(fourBarJoint(A, b, O4, c, &B),
+          "four_bar: the links do not close at -crank_angle " + num(p.crank_angle_deg));
+  Model m;
+  m.bodies = {linkBetween("crank", Vec3::Zero(), A, p.link_radius, p.link_mass),
+              linkBetween("coupler", A, B, p.link_radius, p.link_mass),
+              linkBetween("rocker", O4, B, p.link_radius, p.link_mass)};
+  m.bodies[0].w = Vec3(0, -p.crank_speed, 0); // a turn about -y raises the angle from +x towards +z
+  m.joints = {makeJoint("O2", JointType::Hinge, m.bodies, 0, -1, Vec3::Zero(), Vec3::UnitY()),
+              makeJoint("A", JointType::Hinge, m.bodies, 1, 0, A, Vec3::UnitY()),
+              makeJoint("O4", JointType::Hinge, m.bodies, 2, -1, O4, Vec3::UnitY()),
+              makeJoint("B", JointType::Hinge, m.bodies, 1, 2, B, Vec3::UnitY())};
+  return m;
+}
+
+// The slider-crank (SceneParams): crank O-A, connecting rod A-B, a box slider at B on a slider joint along x
+// (to the world) hinged to the rod.
+Model sliderCrankScene(const SceneParams& p) {
+  const double a = p.crank_length, b = p.coupler_length;
+  require(a > 0 && b > a, "slider_crank: needs -coupler_length > -crank_length > 0");
+  const double th = p.crank_angle_deg * kDeg;
+  const Vec3 A(a * std::cos(th), 0, a * std::sin(th));
+  const Vec3 B(sliderCrankPosition(a, b, th), 0, 0);
+  Shape box;
+  box.type = ShapeType::Box;
+  box.half = Vec3(2, 1, 1) * p.link_radius;
+  Model m;
+  m.bodies = {linkBetween("crank", Vec3::Zero(), A, p.link_radius, p.link_mass),
+              linkBetween("rod", A, B, p.link_radius, p.link_mass),
+              makeBody("slider", box, 0.0, p.link_mass, B, Quat::Identity(), false)};
+  m.bodies[2].contype = 2, m.bodies[2].conaffinity = 1;
+  m.bodies[0].w = Vec3(0, -p.crank_speed, 0);
+  m.joints = {makeJoint("O", JointType::Hinge, m.bodies, 0, -1, Vec3::Zero(), Vec3::UnitY()),
+              makeJoint("A", JointType::Hinge, m.bodies, 1, 0, A, Vec3::UnitY()),
+              makeJoint("B", JointType::Hinge, m.bodies, 2, 1, B, Vec3::UnitY()),
+              makeJoint("guide", JointType::Slider, m.bodies, 2, -1, B, Vec3::UnitX())};
+  return m;
+}
+
 // A builder of bodies only, as a model without joints.
 template <std::vector<Body> (*F)(const SceneParams&)> Model bodiesOnly(const SceneParams& p) {
   Model m;
@@ -254,6 +312,11 @@ const std::vector<SceneEntry>& registry() {
       {"pendulum", "one capsule link on a hinge to the world, released at -angle degrees", pendulumScene},
       {"double_pendulum", "two capsule links on hinges, released at -angle degrees", doublePendulumScene},
       {"chain", "-links capsule links on -joint_type joints with an end load of -end_mass_ratio", chainScene},
+      {"four_bar", "a four-bar linkage of capsule links (closed loop), the crank turning at -crank_speed",
+       fourBarScene},
+      {"slider_crank",
+       "a crank, connecting rod and slider on a guide (closed loop), the crank at -crank_speed",
+       sliderCrankScene},
       {"file", "the bodies and joints of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
       {"mjcf", "the MJCF model -scene_file (MuJoCo's XML; the subset: docs/contact.md#mjcf-models)",
        mjcfScene},
@@ -468,6 +531,20 @@ std::vector<Joint> resolveJoints(const std::vector<JointLine>& lines, const std:
   return joints;
 }
 } // namespace
+
+bool fourBarJoint(const Vec3& A, double b, const Vec3& O4, double c, Vec3* B) {
+  const Vec3 e = O4 - A; // in the x-z plane; B on the circles |B - A| = b, |B - O4| = c, the upper branch
+  const double d = e.norm();
+  if (!(d > 0) || d > b + c || d < std::abs(b - c)) return false;
+  const double along = (b * b - c * c + d * d) / (2 * d), h = std::sqrt(std::max(0.0, b * b - along * along));
+  const Vec3 u = e / d, n(-u.z(), 0, u.x()); // n: u turned by +90 degrees towards +z
+  *B = A + along * u + h * n;
+  return true;
+}
+
+double sliderCrankPosition(double a, double b, double th) {
+  return a * std::cos(th) + std::sqrt(b * b - a * a * std::sin(th) * std::sin(th));
+}
 
 std::vector<Body> parseScene(const std::string& text, const std::string& path) {
   return parseSceneModel(text, path).bodies;

@@ -48,6 +48,14 @@ struct SceneParams {
   double angle_deg = 90.0;
   double end_mass_ratio = 0.0;
   double link_length = 0.1, link_radius = 0.01, link_mass = 1.0;
+  // four_bar, slider_crank: capsule links (-link_radius, -link_mass each) in the x-z plane on hinges about y; the
+  // crank starts at -crank_angle degrees from +x towards +z, turning at -crank_speed rad/s (the other links
+  // start at rest: the first step's projection makes the velocities consistent). four_bar: ground pivots at 0
+  // and (-ground_length, 0, 0), the coupler's joint with the rocker on the upper branch (fourBarJoint); a
+  // Grashof crank-rocker by default. slider_crank: -crank_length, -coupler_length (the rod), a box slider on
+  // the x axis.
+  double crank_length = 0.1, coupler_length = 0.35, rocker_length = 0.2, ground_length = 0.3;
+  double crank_angle_deg = 90.0, crank_speed = 10.0;
 };
 
 // A scene as a model: its bodies, the joints among them, and the settings a model file carries (MJCF's
@@ -78,6 +86,11 @@ std::vector<Body> parseScene(const std::string& text, const std::string& path = 
 void validateScene(const std::vector<Body>& bodies, double tol);
 // buildModel, validateScene, and a check that every pair of bodies has a contact generator (throws SceneError).
 Model buildValidModel(const SceneParams& p, double overlap_tol);
+// Closed-form kinematics of the four_bar and slider_crank scenes (x-z plane). fourBarJoint: the coupler-rocker
+// joint B with |B - A| = b, |B - O4| = c on the branch left of A -> O4 (false: the links do not close).
+// sliderCrankPosition: the slider's x at crank angle th (rad), a cos th + sqrt(b^2 - a^2 sin^2 th).
+bool fourBarJoint(const Vec3& A, double b, const Vec3& O4, double c, Vec3* B);
+double sliderCrankPosition(double a, double b, double th);
 // A static plane with world normal n through point.
 Body makePlane(const std::string& name, const Vec3& n, const Vec3& point);
 

@@ -248,3 +248,65 @@ TEST(ContactJoints, SceneFileJointLines) {
   EXPECT_NE(msg("joint type=distance a=s anchor=0,0,0\n").find("t.scene:3: a distance joint needs anchor_b"),
             std::string::npos);
 }
+
+namespace {
+// Angle of a link's axis in the x-z plane from +x towards +z, and its end point farther from p.
+Vec3 farEnd(const Body& b, const Vec3& p) {
+  const Vec3 e = b.x + b.shape.half_length * b.axis(), f = b.x - b.shape.half_length * b.axis();
+  return (e - p).norm() > (f - p).norm() ? e : f;
+}
+} // namespace
+
+// The four-bar (a Grashof crank-rocker, closed loop with 3 redundant hinge rows), turning under gravity at
+// dt = 1e-3 for 2 s: at every step the coupler-rocker joint lies where the closed-form position analysis puts it
+// for the crank's angle, and the loop stays closed. Measured: largest distance 3.1e-11 m, joint error 1e-11, the
+// crank turned 17.4 rad.
+TEST(ContactJoints, FourBarFollowsItsClosedFormKinematics) {
+  SceneParams p;
+  p.scene = "four_bar";
+  p.crank_speed = 40.0; // the first step shares it with the coupler and rocker: enough to go round
+  Model m = buildModel(p);
+  Stepper st(jointOptions(1e-3));
+  st.setJoints(m.joints);
+  const Vec3 O4(p.ground_length, 0, 0);
+  double worst = 0.0, joint_error = 0.0, turned = 0.0, last = 0.0;
+  for (int k = 0; k < 2000; ++k) {
+    const StepStats s = st.step(&m.bodies);
+    ASSERT_FALSE(s.failed) << s.message;
+    joint_error = std::max(joint_error, s.joint_error);
+    const Vec3 A = farEnd(m.bodies[0], Vec3::Zero());
+    Vec3 B;
+    ASSERT_TRUE(fourBarJoint(A, p.coupler_length, O4, p.rocker_length, &B));
+    worst = std::max(worst, (farEnd(m.bodies[2], O4) - B).norm());
+    const double th = std::atan2(A.z(), A.x());
+    turned += std::remainder(th - last, 2 * M_PI) * (k > 0);
+    last = th;
+  }
+  std::printf("four-bar: rocker joint against closed form %.2e m, joint error %.2e, crank turned %.1f rad\n",
+              worst, joint_error, turned);
+  EXPECT_GT(std::abs(turned), 2 * M_PI); // the crank went round at least once
+  EXPECT_LE(joint_error, 1e-9);
+  EXPECT_LE(worst, 1e-9);
+}
+
+// The slider-crank under gravity at dt = 1e-3 for 2 s: the slider's x against a cos th + sqrt(b^2 - a^2 sin^2 th)
+// at the crank's angle. Measured: largest difference 2.0e-11 m.
+TEST(ContactJoints, SliderCrankFollowsItsClosedFormKinematics) {
+  SceneParams p;
+  p.scene = "slider_crank";
+  Model m = buildModel(p);
+  Stepper st(jointOptions(1e-3));
+  st.setJoints(m.joints);
+  double worst = 0.0, joint_error = 0.0;
+  for (int k = 0; k < 2000; ++k) {
+    const StepStats s = st.step(&m.bodies);
+    ASSERT_FALSE(s.failed) << s.message;
+    joint_error = std::max(joint_error, s.joint_error);
+    const Vec3 A = farEnd(m.bodies[0], Vec3::Zero());
+    const double x = sliderCrankPosition(p.crank_length, p.coupler_length, std::atan2(A.z(), A.x()));
+    worst = std::max(worst, (m.bodies[2].x - Vec3(x, 0, 0)).norm());
+  }
+  std::printf("slider-crank: slider against closed form %.2e m, joint error %.2e\n", worst, joint_error);
+  EXPECT_LE(joint_error, 1e-9);
+  EXPECT_LE(worst, 1e-9);
+}
