@@ -99,6 +99,9 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
   PetscCall(r.real("-crank_angle", "four_bar, slider_crank: initial crank angle from +x towards +z (degrees)",
                    &s->crank_angle_deg));
   PetscCall(r.real("-crank_speed", "four_bar, slider_crank: initial crank speed (rad/s)", &s->crank_speed));
+  PetscCall(r.integer("-bridge_boxes", "rope_bridge: boxes dropped onto the bridge", &s->bridge_boxes));
+  PetscCall(r.real("-sag_angle", "rope_bridge: the planks' angle from the horizontal (degrees)",
+                   &s->sag_angle_deg));
   PetscFunctionReturn(0);
 }
 

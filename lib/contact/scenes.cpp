@@ -285,6 +285,40 @@ Model sliderCrankScene(const SceneParams& p) {
   return m;
 }
 
+// The rope bridge (SceneParams): -links planks hinged edge to edge about y, the end edges hinged to the world,
+// hanging in a V of -sag_angle degrees, and -bridge_boxes boxes dropped onto its middle.
+Model ropeBridgeScene(const SceneParams& p) {
+  require(p.links >= 2, "-links " + std::to_string(p.links) + ": rope_bridge needs >= 2 planks");
+  require(p.bridge_boxes >= 0, "-bridge_boxes " + std::to_string(p.bridge_boxes) + ": must be >= 0");
+  require(p.sag_angle_deg > 0 && p.sag_angle_deg < 90,
+          "-sag_angle " + num(p.sag_angle_deg) + ": must be in (0, 90)");
+  const double L = p.link_length, al = p.sag_angle_deg * kDeg;
+  Shape plank;
+  plank.type = ShapeType::Box;
+  plank.half = Vec3(0.5 * L, 2 * L, 0.1 * L);
+  Model m;
+  Vec3 at = Vec3::Zero(), low = at;
+  for (int k = 0; k < p.links; ++k) { // the left half goes down, the right half up
+    const Vec3 d(std::cos(al), 0, 2 * k < p.links ? -std::sin(al) : std::sin(al));
+    m.bodies.push_back(makeBody("plank" + std::to_string(k), plank, 0.0, p.link_mass, at + 0.5 * L * d,
+                                Quat::FromTwoVectors(Vec3::UnitX(), d), false));
+    m.bodies.back().contype = 2, m.bodies.back().conaffinity = 1; // planks collide with the boxes only
+    m.joints.push_back(makeJoint("hinge" + std::to_string(k), JointType::Hinge, m.bodies, k,
+                                 k > 0 ? k - 1 : -1, at, Vec3::UnitY()));
+    at += L * d;
+    if (at.z() < low.z()) low = at;
+  }
+  m.joints.push_back(makeJoint("hinge" + std::to_string(p.links), JointType::Hinge, m.bodies, p.links - 1, -1,
+                               at, Vec3::UnitY()));
+  Shape box;
+  box.type = ShapeType::Box;
+  box.half = Vec3::Constant(0.25 * L);
+  for (int i = 0; i < p.bridge_boxes; ++i)
+    m.bodies.push_back(makeBody("box" + std::to_string(i), box, 0.0, p.link_mass,
+                                low + Vec3(0, 0, (1.5 + 1.0 * i) * L), Quat::Identity(), false));
+  return m;
+}
+
 // A builder of bodies only, as a model without joints.
 template <std::vector<Body> (*F)(const SceneParams&)> Model bodiesOnly(const SceneParams& p) {
   Model m;
@@ -317,6 +351,9 @@ const std::vector<SceneEntry>& registry() {
       {"slider_crank",
        "a crank, connecting rod and slider on a guide (closed loop), the crank at -crank_speed",
        sliderCrankScene},
+      {"rope_bridge",
+       "-links planks hinged in a V between two world hinges, -bridge_boxes boxes dropped on it",
+       ropeBridgeScene},
       {"file", "the bodies and joints of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
       {"mjcf", "the MJCF model -scene_file (MuJoCo's XML; the subset: docs/contact.md#mjcf-models)",
        mjcfScene},

@@ -56,6 +56,11 @@ struct SceneParams {
   // the x axis.
   double crank_length = 0.1, coupler_length = 0.35, rocker_length = 0.2, ground_length = 0.3;
   double crank_angle_deg = 90.0, crank_speed = 10.0;
+  // rope_bridge: -links planks (-link_length along the bridge, 4 -link_length wide, -link_mass) hinged edge to
+  // edge, hanging in a V of -sag_angle degrees between two world hinges, and -bridge_boxes cubes (edge
+  // -link_length / 2, -link_mass) dropped one above the other onto its lowest joint.
+  int bridge_boxes = 3;
+  double sag_angle_deg = 15.0;
 };
 
 // A scene as a model: its bodies, the joints among them, and the settings a model file carries (MJCF's

@@ -6,6 +6,8 @@
 - 1 and 2 ranks: positions and joint forces bitwise identical (the joint block is solved identically on every rank);
 - the hanging chain with an end load of 1e4 link masses: each joint's force is the weight below it (1e-12 relative;
   measured 4e-14);
+- the rope bridge (10 planks, 3 boxes dropped on it; contacts on jointed bodies through the joint block's Schur
+  complement): the joint error bound, and the boxes end resting on the planks (measured: 16 contacts);
 - the MJCF model inputs/contact/chain25.xml: its time step (0.01) and gravity are the run's (/steps/time), and the
   joint error bound holds.
 """
@@ -54,4 +56,11 @@ dt = np.diff(f["/steps/time"][:])
 check(np.allclose(dt, 0.01, rtol=1e-12, atol=0), "chain25.xml: the run takes the file's time step 0.01")
 err = f["/joints/error"][:].max()
 check(err <= 1e-9, f"chain25.xml: max joint error {err:.2e} m <= 1e-9")
+f = run("bridge", "-scene", "rope_bridge", "-links", 10, "-bridge_boxes", 3, "-dt", 0.01, "-steps", STEPS)
+err = f["/joints/error"][:].max()
+check(err <= 1e-9, f"rope bridge with 3 boxes dropped on it (contacts on jointed bodies): joint error {err:.2e} m <= 1e-9")
+x = f["/frames/positions"][-1]
+held = x[10:, 2].min() > x[:10, 2].min() and f["/steps/contacts"][-1] >= 12
+check(held, f"rope bridge: the boxes rest on the planks at the end (lowest box z {x[10:, 2].min():.3f} m above the "
+      f"lowest plank {x[:10, 2].min():.3f} m, {f['/steps/contacts'][-1]} contacts)")
 H.finish("joint")
