@@ -2,7 +2,8 @@
 // LCP / box LCP per step (lib/contact on lib/lcp). After Lacoursiere, SIGRAD 2003 (box MLCPs, splitting).
 // The scene is replicated on every rank (identical deterministic computation); rank 0 writes the output.
 // With -contact_islands on, each step's independent islands are solved as separate problems dealt over the
-// ranks and gathered to every rank (lib/contact/islands.hpp, lib/core/task_dealer.hpp).
+// ranks and gathered to every rank (lib/contact/islands.hpp, lib/core/task_dealer.hpp). Joints (exact mode) are
+// rows of the same step's MLCP, solved exactly and projected (lib/contact/joint_system.hpp).
 //
 // Sample runs (tests/sample_runs.py executes each line):
 //   contact -scene incline -theta 30 -mu 0.3 -friction splitting -steps 100 -output incline.h5
@@ -13,6 +14,10 @@
 //   contact -scene log_heap -n_logs 8 -steps 60 -regularisation 1e-4 -lcp_solver lemke -output heap.h5
 //   contact -scene drop -drop_body box -tilt 20 -spin 3 -steps 200 -output drop.h5
 //   contact -scene file -scene_file inputs/contact/two_spheres.scene -steps 100 -output file.h5
+//   contact -scene chain -links 50 -dt 0.01 -steps 200 -output chain.h5
+//   contact -scene four_bar -crank_speed 40 -dt 0.001 -steps 500 -output four_bar.h5
+//   contact -scene rope_bridge -links 10 -bridge_boxes 3 -steps 200 -output bridge.h5
+//   contact -scene mjcf -scene_file inputs/contact/chain25.xml -steps 100 -output mjcf.h5
 //   contact -options_file inputs/contact/default.yaml -output out/contact.h5
 #include "contact_run.hpp"
 
