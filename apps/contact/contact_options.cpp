@@ -100,6 +100,8 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
                    &s->crank_angle_deg));
   PetscCall(r.real("-crank_speed", "four_bar, slider_crank: initial crank speed (rad/s)", &s->crank_speed));
   PetscCall(r.integer("-bridge_boxes", "rope_bridge: boxes dropped onto the bridge", &s->bridge_boxes));
+  PetscCall(r.real("-ball_radius", "wrecking_ball: the end sphere's radius and the cubes' edge (m)",
+                   &s->ball_radius));
   PetscCall(r.real("-sag_angle", "rope_bridge: the planks' angle from the horizontal (degrees)",
                    &s->sag_angle_deg));
   PetscFunctionReturn(0);

@@ -177,7 +177,9 @@ Model mjcfScene(const SceneParams& p) {
 }
 
 // n capsule links hinged to the world at the origin (see SceneParams), the end sphere of chain.
-Model linkChain(const SceneParams& p, int n, bool end_load) {
+// The end sphere has radius ball_radius (0: 2 link radii) and the chain hangs from origin.
+Model linkChain(const SceneParams& p, int n, bool end_load, const Vec3& origin = Vec3::Zero(),
+                double ball_radius = 0.0) {
   require(n >= 1, "-links " + std::to_string(n) + ": must be >= 1");
   require(p.link_length > 0 && std::isfinite(p.link_length),
           "-link_length " + num(p.link_length) + ": must be > 0");
@@ -200,17 +202,17 @@ Model linkChain(const SceneParams& p, int n, bool end_load) {
   Model m;
   for (int k = 0; k < n; ++k) {
     m.bodies.push_back(
-        makeBody("link" + std::to_string(k), s, 0.0, p.link_mass, (k + 0.5) * L * d, q, false));
+        makeBody("link" + std::to_string(k), s, 0.0, p.link_mass, origin + (k + 0.5) * L * d, q, false));
     m.joints.push_back(makeJoint("joint" + std::to_string(k), type, m.bodies, k, k > 0 ? k - 1 : -1,
-                                 k * L * d, Vec3::UnitY()));
+                                 origin + k * L * d, Vec3::UnitY()));
   }
   if (end_load && p.end_mass_ratio > 0) {
     Shape ball;
     ball.type = ShapeType::Sphere;
-    ball.radius = 2 * p.link_radius;
-    m.bodies.push_back(makeBody("load", ball, 0.0, p.end_mass_ratio * p.link_mass, (n * L + ball.radius) * d,
-                                Quat::Identity(), false));
-    m.joints.push_back(makeJoint("joint_load", type, m.bodies, n, n - 1, n * L * d, Vec3::UnitY()));
+    ball.radius = ball_radius > 0 ? ball_radius : 2 * p.link_radius;
+    m.bodies.push_back(makeBody("load", ball, 0.0, p.end_mass_ratio * p.link_mass,
+                                origin + (n * L + ball.radius) * d, Quat::Identity(), false));
+    m.joints.push_back(makeJoint("joint_load", type, m.bodies, n, n - 1, origin + n * L * d, Vec3::UnitY()));
   }
   for (Body& b : m.bodies)
     b.contype = 2, b.conaffinity = 1; // links collide with other bodies, not each other
@@ -225,6 +227,23 @@ Model doublePendulumScene(const SceneParams& p) {
 }
 Model chainScene(const SceneParams& p) {
   return linkChain(p, p.links, true);
+}
+
+// The wrecking ball (SceneParams): the chain of -links links with an end sphere of -ball_radius and
+// -end_mass_ratio link masses, hung so that the sphere passes just above the ground, released at -angle, and a
+// pyramid of -pyramid_base cubes (edge -ball_radius, -density) in its path.
+Model wreckingBallScene(const SceneParams& p) {
+  require(p.end_mass_ratio > 0, "wrecking_ball: needs -end_mass_ratio > 0 (the ball)");
+  require(p.ball_radius > 0 && std::isfinite(p.ball_radius),
+          "-ball_radius " + num(p.ball_radius) + ": must be > 0");
+  require(p.pyramid_base >= 1, "-pyramid_base " + std::to_string(p.pyramid_base) + ": must be >= 1");
+  const double r = p.ball_radius, h = p.links * p.link_length + 2 * r + 0.1 * r;
+  Model m = linkChain(p, p.links, true, Vec3(0, 0, h), r);
+  m.bodies.push_back(makePlane("ground", Vec3::UnitZ(), Vec3::Zero()));
+  SceneParams q = p;
+  q.size = r;
+  addPyramid(q, p.pyramid_base, 0.55 * p.pyramid_base * r + 1.5 * r, 0.0, "", &m.bodies);
+  return m;
 }
 
 // A capsule link of radius r and mass m from p to q (its axis along q - p).
@@ -354,6 +373,9 @@ const std::vector<SceneEntry>& registry() {
       {"rope_bridge",
        "-links planks hinged in a V between two world hinges, -bridge_boxes boxes dropped on it",
        ropeBridgeScene},
+      {"wrecking_ball",
+       "a chain with a heavy sphere (-end_mass_ratio, -ball_radius) swung into a box pyramid",
+       wreckingBallScene},
       {"file", "the bodies and joints of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
       {"mjcf", "the MJCF model -scene_file (MuJoCo's XML; the subset: docs/contact.md#mjcf-models)",
        mjcfScene},

@@ -61,6 +61,10 @@ struct SceneParams {
   // -link_length / 2, -link_mass) dropped one above the other onto its lowest joint.
   int bridge_boxes = 3;
   double sag_angle_deg = 15.0;
+  // wrecking_ball: the chain (-links, -joint_type, -angle, -link_*) hangs from a pivot so that its end sphere
+  // (radius -ball_radius, -end_mass_ratio link masses) passes 0.1 radius above the ground, and swings into a
+  // pyramid of -pyramid_base cubes (edge -ball_radius, -density) standing just past the lowest point (+x).
+  double ball_radius = 0.1;
 };
 
 // A scene as a model: its bodies, the joints among them, and the settings a model file carries (MJCF's
