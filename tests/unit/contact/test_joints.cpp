@@ -42,6 +42,22 @@ double energy(const std::vector<Body>& bodies) {
   return e;
 }
 
+// Steps the model n times at dt (frictionless, exact), calling after() after each step; returns the largest
+// joint error of the steps (infinite when a step failed).
+template <class F> double stepModel(Model* m, double dt, int n, F after) {
+  Stepper st(jointOptions(dt));
+  st.setJoints(m->joints);
+  double joint_error = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const StepStats s = st.step(&m->bodies);
+    EXPECT_FALSE(s.failed) << s.message;
+    if (s.failed) return INFINITY;
+    joint_error = std::max(joint_error, s.joint_error);
+    after();
+  }
+  return joint_error;
+}
+
 // Angle of a link from the downward vertical, in the x-z plane.
 double linkAngle(const Body& b) {
   const Vec3 d = b.axis();
@@ -181,15 +197,9 @@ TEST(ContactJoints, HangingChainTensionsAreTheWeightBelow) {
 TEST(ContactJoints, TenLinkChainEnergyStaysBounded) {
   Model m = chain("chain", 10, 45.0);
   const double e0 = energy(m.bodies);
-  Stepper st(jointOptions(1e-3));
-  st.setJoints(m.joints);
-  double worst = 0.0, joint_error = 0.0;
-  for (int k = 0; k < 10000; ++k) {
-    const StepStats s = st.step(&m.bodies);
-    ASSERT_FALSE(s.failed) << s.message;
-    worst = std::max(worst, std::abs(energy(m.bodies) - e0));
-    joint_error = std::max(joint_error, s.joint_error);
-  }
+  double worst = 0.0;
+  const double joint_error =
+      stepModel(&m, 1e-3, 10000, [&] { worst = std::max(worst, std::abs(energy(m.bodies) - e0)); });
   std::printf("10-link chain, 10 s at dt 1e-3: largest |E - E0| %.3e J, joint error %.2e\n", worst,
               joint_error);
   EXPECT_LE(joint_error, 1e-9);
@@ -202,15 +212,8 @@ TEST(ContactJoints, TenLinkChainEnergyStaysBounded) {
 TEST(ContactJoints, LongChainAtLargeStepStaysOnTheManifold) {
   Model m = chain("chain", 100, 90.0);
   const double e0 = energy(m.bodies);
-  Stepper st(jointOptions(0.01));
-  st.setJoints(m.joints);
-  double joint_error = 0.0, rise = 0.0;
-  for (int k = 0; k < 300; ++k) {
-    const StepStats s = st.step(&m.bodies);
-    ASSERT_FALSE(s.failed) << s.message;
-    joint_error = std::max(joint_error, s.joint_error);
-    rise = std::max(rise, energy(m.bodies) - e0);
-  }
+  double rise = 0.0;
+  const double joint_error = stepModel(&m, 0.01, 300, [&] { rise = std::max(rise, energy(m.bodies) - e0); });
   std::printf("100-link chain from horizontal, dt 0.01: joint error %.2e m, energy rise %.2e J\n",
               joint_error, rise);
   EXPECT_LE(joint_error, 1e-9);
@@ -266,22 +269,18 @@ TEST(ContactJoints, FourBarFollowsItsClosedFormKinematics) {
   p.scene = "four_bar";
   p.crank_speed = 40.0; // the first step shares it with the coupler and rocker: enough to go round
   Model m = buildModel(p);
-  Stepper st(jointOptions(1e-3));
-  st.setJoints(m.joints);
   const Vec3 O4(p.ground_length, 0, 0);
-  double worst = 0.0, joint_error = 0.0, turned = 0.0, last = 0.0;
-  for (int k = 0; k < 2000; ++k) {
-    const StepStats s = st.step(&m.bodies);
-    ASSERT_FALSE(s.failed) << s.message;
-    joint_error = std::max(joint_error, s.joint_error);
+  double worst = 0.0, turned = 0.0, last = M_PI / 2; // the crank starts at -crank_angle 90
+  const double joint_error = stepModel(&m, 1e-3, 2000, [&] {
     const Vec3 A = farEnd(m.bodies[0], Vec3::Zero());
     Vec3 B;
-    ASSERT_TRUE(fourBarJoint(A, p.coupler_length, O4, p.rocker_length, &B));
-    worst = std::max(worst, (farEnd(m.bodies[2], O4) - B).norm());
+    worst = fourBarJoint(A, p.coupler_length, O4, p.rocker_length, &B)
+                ? std::max(worst, (farEnd(m.bodies[2], O4) - B).norm())
+                : INFINITY;
     const double th = std::atan2(A.z(), A.x());
-    turned += std::remainder(th - last, 2 * M_PI) * (k > 0);
+    turned += std::remainder(th - last, 2 * M_PI);
     last = th;
-  }
+  });
   std::printf("four-bar: rocker joint against closed form %.2e m, joint error %.2e, crank turned %.1f rad\n",
               worst, joint_error, turned);
   EXPECT_GT(std::abs(turned), 2 * M_PI); // the crank went round at least once
@@ -295,17 +294,12 @@ TEST(ContactJoints, SliderCrankFollowsItsClosedFormKinematics) {
   SceneParams p;
   p.scene = "slider_crank";
   Model m = buildModel(p);
-  Stepper st(jointOptions(1e-3));
-  st.setJoints(m.joints);
-  double worst = 0.0, joint_error = 0.0;
-  for (int k = 0; k < 2000; ++k) {
-    const StepStats s = st.step(&m.bodies);
-    ASSERT_FALSE(s.failed) << s.message;
-    joint_error = std::max(joint_error, s.joint_error);
+  double worst = 0.0;
+  const double joint_error = stepModel(&m, 1e-3, 2000, [&] {
     const Vec3 A = farEnd(m.bodies[0], Vec3::Zero());
     const double x = sliderCrankPosition(p.crank_length, p.coupler_length, std::atan2(A.z(), A.x()));
     worst = std::max(worst, (m.bodies[2].x - Vec3(x, 0, 0)).norm());
-  }
+  });
   std::printf("slider-crank: slider against closed form %.2e m, joint error %.2e\n", worst, joint_error);
   EXPECT_LE(joint_error, 1e-9);
   EXPECT_LE(worst, 1e-9);
