@@ -1,4 +1,4 @@
-// MJCF (MuJoCo XML) reader and writer for the contact library's Model: a subset of MJCF whose every element
+// MJCF (MuJoCo XML) reader (mjcf.cpp) and writer (mjcf_write.cpp) for the contact library's Model: a subset of MJCF whose every element
 // maps onto our bodies (one shape each, centred at the centre of mass) and maximal-coordinate joints.
 // Reference: MuJoCo XML Reference, mujoco.readthedocs.io/en/stable/XMLreference.html (MuJoCo 3.x).
 //
