@@ -80,7 +80,7 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
                                  {{"hinge", "about y (planar motion)"}, {"ball", "spherical"}},
                                  &s->joint_type));
   PetscCall(r.real("-angle",
-                   "pendulum, double_pendulum, chain: release angle from the downward vertical "
+                   "pendulum, double_pendulum, chain, motor_limit: release angle from the downward vertical "
                    "(degrees)",
                    &s->angle_deg));
   PetscCall(r.real("-end_mass_ratio", "chain: end sphere's mass / a link's mass (0: no end sphere)",
@@ -104,6 +104,11 @@ PetscErrorCode sceneOptions(const Reader& r, SceneParams* s) {
                    &s->ball_radius));
   PetscCall(r.real("-sag_angle", "rope_bridge: the planks' angle from the horizontal (degrees)",
                    &s->sag_angle_deg));
+  PetscCall(r.real("-limit_angle", "motor_limit: the hinge's limits about the start pose (+-, degrees)",
+                   &s->limit_angle_deg));
+  PetscCall(r.real("-motor_speed", "motor_limit: the motor's target speed (rad/s, > 0 raises the link)",
+                   &s->motor_speed));
+  PetscCall(r.real("-motor_torque", "motor_limit: the motor's torque bound (N m)", &s->motor_torque));
   PetscFunctionReturn(0);
 }
 
@@ -217,6 +222,10 @@ PetscErrorCode runOptions(const Reader& r, AppOptions* o) {
   PetscCall(r.real("-overlap_tol", "Largest allowed overlap of static bodies (m)", &o->overlap_tol));
   PetscCall(r.integer("-output_every", "Frame interval in steps", &o->output_every));
   PetscCall(r.string("-output", "HDF5 output file", &o->output));
+  PetscCall(r.string("-write_mjcf",
+                     "Write the scene (with the run's -dt, -gravity, -mu) as an MJCF model to this file and "
+                     "exit without stepping (MuJoCo loads it; docs/contact.md#mjcf-models)",
+                     &o->write_mjcf));
   PetscCall(
       r.string("-dump_problems", "Prefix: every contact problem -> PREFIX_step<N>_pass<K>.h5", &o->dump));
   PetscCall(r.integer("-dump_max", "Most problems dumped", &o->dump_max));

@@ -25,6 +25,7 @@ struct AppOptions {
   PetscInt steps = 200, output_every = 10, dump_max = 1000;
   PetscReal overlap_tol = 1e-3;
   std::string output, dump; // dump: -dump_problems prefix ("": none)
+  std::string write_mjcf;   // -write_mjcf: the model written as MJCF, no steps
   bool phase_times = false; // -contact_phase_times: each rank's time per phase at the end
 };
 

@@ -11,8 +11,11 @@
 #include "contact_size_check.hpp"
 
 #include "contact/friction_auto.hpp"
+#include "contact/mjcf.hpp"
 #include "core/log.hpp"
 #include "core/log_stages.hpp"
+
+#include <cstdio>
 #include "core/task_dealer.hpp"
 #include "core/time_loop.hpp"
 #include "io/checkpoint_policy.hpp"
@@ -264,6 +267,37 @@ PetscErrorCode buildModel(MPI_Comm comm, bool quiet, AppOptions* o, Model* model
   PetscFunctionReturn(0);
 }
 
+// -write_mjcf: the model with the run's time step, gravity and friction, written by rank 0 under PATH.tmp and
+// renamed (every rank builds the same text, so a model MJCF cannot express fails on all of them).
+PetscErrorCode writeModelFile(MPI_Comm comm, bool quiet, const AppOptions& o, Model model) {
+  std::string text, error;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  model.timestep = o.step.dt, model.has_gravity = true, model.gravity = o.step.gravity;
+  model.friction = o.step.mu;
+  try {
+    text = writeMjcf(model, o.scene.scene);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  PetscCheck(error.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "-write_mjcf: %s", error.c_str());
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  int ok = 1;
+  if (rank == 0) {
+    const std::string tmp = o.write_mjcf + ".tmp";
+    std::FILE* f = std::fopen(tmp.c_str(), "w");
+    ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (f) ok = std::fclose(f) == 0 && ok;
+    ok = ok && std::rename(tmp.c_str(), o.write_mjcf.c_str()) == 0;
+    if (!ok) std::remove(tmp.c_str());
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "-write_mjcf %s: cannot write the file", o.write_mjcf.c_str());
+  PetscCall(suite::logInfo(comm, quiet, "contact: wrote the %s model (%zu bodies, %zu joints) to %s",
+                           o.scene.scene.c_str(), model.bodies.size(), model.joints.size(),
+                           o.write_mjcf.c_str()));
+  PetscFunctionReturn(0);
+}
 } // namespace
 
 PetscErrorCode run(suite::RunContext& ctx) {
@@ -286,6 +320,11 @@ PetscErrorCode run(suite::RunContext& ctx) {
   Model model;
   PetscCall(buildModel(ctx.comm(), ctx.quiet(), &o, &model));
   if (size.bodies <= 0) PetscCall(checkContactSizes(ctx.comm(), o, sceneSize(model.bodies)));
+  if (!o.write_mjcf.empty()) {
+    PetscCall(writeModelFile(ctx.comm(), ctx.quiet(), o, std::move(model)));
+    PetscCall(PetscLogStagePop());
+    PetscFunctionReturn(0);
+  }
   PetscCall(suite::logInfo(ctx.comm(), ctx.quiet(),
                            "contact: scene %s, %zu bodies, %zu joints, friction %s (mu %g), solver %s",
                            o.scene.scene.c_str(), model.bodies.size(), model.joints.size(),

@@ -18,6 +18,8 @@
 //   contact -scene four_bar -crank_speed 40 -dt 0.001 -steps 500 -output four_bar.h5
 //   contact -scene rope_bridge -links 10 -bridge_boxes 3 -steps 200 -output bridge.h5
 //   contact -scene mjcf -scene_file inputs/contact/chain25.xml -steps 100 -output mjcf.h5
+//   contact -scene motor_limit -motor_torque 0.2 -steps 200 -output lever.h5
+//   contact -scene double_pendulum -angle 40 -write_mjcf double_pendulum.xml
 //   contact -options_file inputs/contact/default.yaml -output out/contact.h5
 #include "contact_run.hpp"
 

@@ -35,11 +35,14 @@ int anchor(const std::vector<Body>& bodies, const Contact& c) {
 
 } // namespace
 
-std::vector<Island> splitIslands(const std::vector<Body>& bodies, const std::vector<Contact>& cs) {
+std::vector<Island> splitIslands(const std::vector<Body>& bodies, const std::vector<Contact>& cs,
+                                 const std::vector<std::pair<int, int>>& joined) {
   const int nb = (int)bodies.size();
   DisjointSets sets(nb);
   for (const Contact& c : cs)
     if (!bodies[c.a].is_static && !bodies[c.b].is_static) sets.unite(c.a, c.b);
+  for (const auto& [a, b] : joined)
+    if (!bodies[a].is_static && !bodies[b].is_static) sets.unite(a, b);
   std::vector<int> slot(nb, -1); // root -> island
   std::vector<Island> islands;
   for (int k = 0; k < (int)cs.size(); ++k) {

@@ -169,4 +169,16 @@ void jointRows(const Joint& j, const std::vector<Body>& bodies, std::vector<Join
   }
 }
 
+JointRow jointCoordinate(const Joint& j, const std::vector<Body>& bodies) {
+  const Side A = sideA(j, bodies), B = sideB(j, bodies);
+  const Mat3 ea = A.R * j.fa, fb = B.R * j.fb;
+  const Vec3 axis = ea.col(2);
+  if (j.type == JointType::Slider) return sliderRow(A, B, axis);
+  JointRow r; // hinge
+  r.phi = std::atan2(axis.dot(ea.col(0).cross(fb.col(0))), ea.col(0).dot(fb.col(0)));
+  r.ja << Vec3::Zero(), -axis;
+  r.jb << Vec3::Zero(), axis;
+  return r;
+}
+
 } // namespace suite::contact

@@ -62,4 +62,9 @@ struct JointRow {
 // The rows of joint j at the bodies' poses, appended to rows.
 void jointRows(const Joint& j, const std::vector<Body>& bodies, std::vector<JointRow>* rows);
 
+// The coordinate of a hinge or slider joint (phi) and its rate row (d phi / dt = ja . (v_a, w_a) + jb . (v_b,
+// w_b)): hinge, the angle of b's frame relative to a's about a's axis, atan2 of the frames' first columns, in
+// (-pi, pi]; slider, the travel u . (p_b - p_a) along a's axis u. Both zero at assembly (makeJoint).
+JointRow jointCoordinate(const Joint& j, const std::vector<Body>& bodies);
+
 } // namespace suite::contact

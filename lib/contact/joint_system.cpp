@@ -47,6 +47,13 @@ void moveBodies(const V6s& dq, std::vector<Body>* bodies) {
   }
 }
 
+double maxAbs(const std::vector<double>& x) {
+  double m = 0.0;
+  for (double v : x) m = std::max(m, std::abs(v));
+  return m;
+}
+} // namespace
+
 double kineticEnergy(const std::vector<Body>& bodies, const std::vector<Vec3>& v,
                      const std::vector<Vec3>& w) {
   double e = 0.0;
@@ -55,13 +62,6 @@ double kineticEnergy(const std::vector<Body>& bodies, const std::vector<Vec3>& v
       e += 0.5 * (bodies[i].mass * v[i].squaredNorm() + w[i].dot(bodies[i].inertiaWorld() * w[i]));
   return e;
 }
-
-double maxAbs(const std::vector<double>& x) {
-  double m = 0.0;
-  for (double v : x) m = std::max(m, std::abs(v));
-  return m;
-}
-} // namespace
 
 double maxError(const std::vector<Body>& bodies, const std::vector<Joint>& joints) {
   std::vector<JointRow> jr;
@@ -101,16 +101,20 @@ void jointJacobian(const std::vector<Body>& bodies, const std::vector<Mat3>& inv
 }
 
 JointSystem::JointSystem(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
-                         const std::vector<Joint>& joints) {
+                         const std::vector<Joint>& joints, const ActuationRows* extra) {
   std::vector<double> phi;
   jointJacobian(bodies, inv_i, joints, &rows_, &phi, &first_);
   max_error_ = maxAbs(phi);
+  holonomic_ = (int)rows_.size();
+  if (extra) rows_.insert(rows_.end(), extra->rows.begin(), extra->rows.end());
   jointed_.assign(bodies.size(), 0);
   for (const JRow& J : rows_) {
     if (J.ba >= 0) jointed_[J.ba] = 1;
     if (J.bb >= 0) jointed_[J.bb] = 1;
   }
-  bias_ = Eigen::VectorXd::Zero(rows());
+  base_bias_ = Eigen::VectorXd::Zero(rows());
+  for (int k = holonomic_; k < rows(); ++k) base_bias_[k] = extra->bias[k - holonomic_];
+  bias_ = base_bias_;
   if (rows_.empty()) return;
   ldlt_.compute(jointMatrix(rows_, (int)bodies.size()));
   ok_ = ldlt_.info() == Eigen::Success;
@@ -163,38 +167,31 @@ int JointSystem::shake(const std::vector<Body>& bodies, const std::vector<Joint>
     if (err <= tol || !(err < kShakeContraction * last) || it + 1 == max_it) { // a spurious root (energy),
       // not contracting, or not converged: the velocity step alone
       *v = v0, *w = w0, *lambda = lambda0;
-      bias_.setZero();
+      bias_ = base_bias_;
       return -1;
     }
     last = err;
     // G v + beta = 0 holds: the new bias changes it by Phi / dt, which project removes
-    for (int k = 0; k < this->rows(); ++k) bias_[k] += phi[k] / dt;
+    for (int k = 0; k < holonomic_; ++k) bias_[k] += phi[k] / dt;
     project(v, w, lambda);
   }
   return it;
 }
 
-double JointSystem::velocityError(const std::vector<Vec3>& v, const std::vector<Vec3>& w) const {
-  double e = 0.0;
-  for (const JRow& J : rows_) {
-    double s = 0.0;
-    if (J.ba >= 0) s += J.ja.head<3>().dot(v[J.ba]) + J.ja.tail<3>().dot(w[J.ba]);
-    if (J.bb >= 0) s += J.jb.head<3>().dot(v[J.bb]) + J.jb.tail<3>().dot(w[J.bb]);
-    e = std::max(e, std::abs(s));
-  }
-  return e;
-}
-
-void JointSystem::correctDelassus(DelassusSystem* sys) const {
+void JointSystem::correctDelassus(DelassusSystem* sys, const std::vector<int>* global) const {
   const int m = rows(), n = (int)sys->rows.size();
-  std::vector<int> cols; // the contact rows on jointed bodies: the others have X = 0
-  for (int r = 0; r < n; ++r)
-    if (touches(sys->rows[r].ba) || touches(sys->rows[r].bb)) cols.push_back(r);
+  auto to_global = [&](int b) { return b < 0 || !global ? b : (*global)[b]; };
+  std::vector<int> cols;   // the contact rows on jointed bodies: the others have X = 0
+  std::vector<JRow> jcols; // ... with global body indices
+  for (int r = 0; r < n; ++r) {
+    JRow q = sys->rows[r];
+    q.ba = to_global(q.ba), q.bb = to_global(q.bb);
+    if (touches(q.ba) || touches(q.bb)) cols.push_back(r), jcols.push_back(q);
+  }
   if (m == 0 || cols.empty()) return;
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(m, (Eigen::Index)cols.size());
   for (int k = 0; k < m; ++k)
-    for (size_t c = 0; c < cols.size(); ++c)
-      X(k, (Eigen::Index)c) = rowCoupling(rows_[k], sys->rows[cols[c]]);
+    for (size_t c = 0; c < cols.size(); ++c) X(k, (Eigen::Index)c) = rowCoupling(rows_[k], jcols[c]);
   const Eigen::MatrixXd Y = ldlt_.solve(X);
   const Eigen::MatrixXd C = X.transpose() * Y;
   for (size_t p = 0; p < cols.size(); ++p)

@@ -29,6 +29,7 @@
 
 #include "contact/delassus.hpp"
 #include "contact/joint.hpp"
+#include "contact/joint_actuation.hpp"
 
 #include <Eigen/SparseCholesky>
 
@@ -39,9 +40,12 @@ namespace suite::contact {
 class JointSystem {
 public:
   // The joint rows at the bodies' poses and S factorised. inv_i: world inverse inertia per body (0 static).
+  // extra: equality rows with their bias after the holonomic ones (the active limits and free motors of
+  // joint_actuation.hpp); SHAKE and maxError concern the holonomic rows only.
   JointSystem(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
-              const std::vector<Joint>& joints);
+              const std::vector<Joint>& joints, const ActuationRows* extra = nullptr);
   int rows() const { return (int)rows_.size(); }
+  int holonomicRows() const { return holonomic_; }
   // max_k |Phi_k| at the poses the system was built at.
   double maxError() const { return max_error_; }
   // v, w <- project(v, w); lambda += the impulses of the rows (the joint impulse on the bodies is G^T lambda).
@@ -55,12 +59,11 @@ public:
   int shake(const std::vector<Body>& bodies, const std::vector<Joint>& joints, double dt, double tol,
             int max_it, double energy_bound, std::vector<Vec3>* v, std::vector<Vec3>* w,
             Eigen::VectorXd* lambda);
-  // max_k |G_k v| of velocities v, w.
-  double velocityError(const std::vector<Vec3>& v, const std::vector<Vec3>& w) const;
   // Does any joint row act on body i (dynamic)?
   bool touches(int body) const { return body >= 0 && body < (int)jointed_.size() && jointed_[body]; }
   // sys.A (dense) -= X^T S^-1 X, X = G M^-1 J^T of sys's rows; sys.b: built from projected velocities already.
-  void correctDelassus(DelassusSystem* sys) const;
+  // global: the global index of each of sys's bodies (an island's problem), or nullptr (the whole scene).
+  void correctDelassus(DelassusSystem* sys, const std::vector<int>* global = nullptr) const;
   // The joint's first row and its count in the rows (and in lambda).
   int firstRow(int joint) const { return first_[joint]; }
   const std::vector<JRow>& jacobian() const { return rows_; }
@@ -71,7 +74,8 @@ private:
   std::vector<int> first_;
   std::vector<char> jointed_;
   double max_error_ = 0.0;
-  Eigen::VectorXd bias_;
+  int holonomic_ = 0;
+  Eigen::VectorXd bias_, base_bias_; // base: the extra rows' bias (zero on the holonomic rows)
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   bool ok_ = true;
 };
@@ -80,6 +84,9 @@ private:
 void jointJacobian(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
                    const std::vector<Joint>& joints, std::vector<JRow>* rows, std::vector<double>* phi,
                    std::vector<int>* first);
+
+// The kinetic energy of the dynamic bodies at velocities v, w.
+double kineticEnergy(const std::vector<Body>& bodies, const std::vector<Vec3>& v, const std::vector<Vec3>& w);
 
 // max_k |Phi_k| of the joints at the bodies' poses.
 double maxError(const std::vector<Body>& bodies, const std::vector<Joint>& joints);

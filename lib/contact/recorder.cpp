@@ -68,7 +68,11 @@ void Recorder::jointStep(const StepStats& s, const Stepper& stepper, const std::
   joint_velocity_error.push_back(s.joint_velocity_error);
   projection_iterations.push_back(s.projection_iterations);
   shake_iterations.push_back(s.shake_iterations);
+  actuation_solves.push_back(s.actuation_solves);
   for (int k = 0; k < (int)joints.size(); ++k) {
+    const bool axial = joints[k].type == JointType::Hinge || joints[k].type == JointType::Slider;
+    joint_coordinate.push_back(axial ? jointCoordinate(joints[k], bodies).phi : 0.0);
+    motor_power.push_back(stepper.motorPower(k));
     Vec3 f, m;
     stepper.jointReaction(k, bodies, &f, &m);
     joint_force.insert(joint_force.end(), {f.x(), f.y(), f.z()});

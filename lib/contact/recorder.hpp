@@ -37,9 +37,13 @@ struct Recorder {
   std::vector<long long> problem_offset{0};
   std::string auto_rungs; // the ladder's names, comma-separated ("": not auto)
   // joints: the joint table, per step the largest |Phi| after the projection, its iterations, the largest
-  // |G v|, and per step and joint the reaction force and torque (about the anchor) on body a (steps x nj x 3)
+  // |G v|, the solves of the velocities (the limits' and motors' active set), per step and joint the reaction
+  // force and torque (about the anchor) on body a (steps x nj x 3), the coordinate (hinge, slider; 0 for the
+  // others) at the step's end and the motor's power (0 without a motor) (steps x nj)
   std::vector<Joint> joints;
-  std::vector<double> joint_error, joint_velocity_error, joint_force, joint_torque;
+  std::vector<double> joint_error, joint_velocity_error, joint_force, joint_torque, joint_coordinate,
+      motor_power;
+  std::vector<int> actuation_solves;
   std::vector<int> projection_iterations, shake_iterations;
 
   void frame(const std::vector<Body>& bodies, long long step, double t);

@@ -150,13 +150,20 @@ PetscErrorCode writeJoints(H5Output& out, const Recorder& rec) {
   PetscCall(out.writeReplicated("/joints/shake_iterations", rec.shake_iterations.data(), {ns}, ""));
   PetscCall(out.writeReplicated("/joints/force", rec.joint_force.data(), {ns, nj, 3}, "N"));
   PetscCall(out.writeReplicated("/joints/torque", rec.joint_torque.data(), {ns, nj, 3}, "N m"));
+  PetscCall(out.writeReplicated("/joints/coordinate", rec.joint_coordinate.data(), {ns, nj}, "rad or m"));
+  PetscCall(out.writeReplicated("/joints/motor_power", rec.motor_power.data(), {ns, nj}, "W"));
+  PetscCall(out.writeReplicated("/joints/actuation_solves", rec.actuation_solves.data(), {ns}, ""));
   PetscCall(out.writeAttribute("/joints", "types", "0 ball, 1 hinge, 2 slider, 3 fixed, 4 distance"));
   PetscCall(out.writeAttribute("/joints", "layout",
                                "bodies: (a, b) body indices, b = -1 the world; per step: shake_iterations "
                                "(-1: SHAKE stopped contracting, the velocity projection alone) "
                                "of the velocities, error = max |Phi| after the position projection "
                                "(projection_iterations), velocity_error = max |G v| at the step's end, "
-                               "force and torque (about the anchor) of the joint on body a, world frame"));
+                               "force and torque (about the anchor) of the joint on body a, world frame, "
+                               "limit and motor included; coordinate: hinge angle (rad) or slider travel "
+                               "(m) of b relative to a at the step's end (0: other types); motor_power: "
+                               "motor torque (force) times the rate it drove; actuation_solves: the "
+                               "solves of the step's velocities (limits' and motors' active set)"));
   PetscFunctionReturn(0);
 }
 } // namespace

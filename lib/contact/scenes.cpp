@@ -229,6 +229,27 @@ Model chainScene(const SceneParams& p) {
   return linkChain(p, p.links, true);
 }
 
+// The lever of motor_limit (SceneParams): the pendulum's link with a limit and a motor on its hinge. The hinge
+// coordinate is the world's turn relative to the link about y (joint.hpp): raising the link (turning it about
+// -y) increases it, so the motor's target speed is +motor_speed.
+Model motorLimitScene(const SceneParams& p) {
+  require(p.limit_angle_deg > 0 && p.limit_angle_deg < 180,
+          "-limit_angle " + num(p.limit_angle_deg) + ": must be in (0, 180) degrees");
+  require(std::isfinite(p.motor_speed), "-motor_speed: must be finite");
+  require(p.motor_torque > 0 && std::isfinite(p.motor_torque),
+          "-motor_torque " + num(p.motor_torque) + ": must be > 0");
+  Model m = linkChain(p, 1, false);
+  Joint& j = m.joints[0];
+  j.name = "lever";
+  j.limited = true;
+  j.lower = -p.limit_angle_deg * kDeg;
+  j.upper = p.limit_angle_deg * kDeg;
+  j.motor = true;
+  j.target_speed = p.motor_speed;
+  j.max_force = p.motor_torque;
+  return m;
+}
+
 // The wrecking ball (SceneParams): the chain of -links links with an end sphere of -ball_radius and
 // -end_mass_ratio link masses, hung so that the sphere passes just above the ground, released at -angle, and a
 // pyramid of -pyramid_base cubes (edge -ball_radius, -density) in its path.
@@ -376,6 +397,10 @@ const std::vector<SceneEntry>& registry() {
       {"wrecking_ball",
        "a chain with a heavy sphere (-end_mass_ratio, -ball_radius) swung into a box pyramid",
        wreckingBallScene},
+      {"motor_limit",
+       "a link on a hinge driven by a bounded motor (-motor_speed, -motor_torque) against a limit "
+       "(-limit_angle)",
+       motorLimitScene},
       {"file", "the bodies and joints of -scene_file (format: docs/contact.md#scene-file-format)", fileScene},
       {"mjcf", "the MJCF model -scene_file (MuJoCo's XML; the subset: docs/contact.md#mjcf-models)",
        mjcfScene},
@@ -425,7 +450,7 @@ Vec3 parseVec(const std::string& where, const std::string& key, const std::strin
   require((int)x.size() == n,
           where + ": " + key + " needs " + std::to_string(n) + " comma-separated numbers");
   if (extra && n == 4) *extra = x[3];
-  return Vec3(x[0], x[1], x[2]);
+  return Vec3(x[0], x[1], n > 2 ? x[2] : 0.0); // n = 2: (x0, x1, 0)
 }
 } // namespace
 
@@ -528,6 +553,8 @@ struct JointLine {
   std::string where, name, type, a, b = "world";
   Vec3 anchor = Vec3::Zero(), axis = Vec3::Zero(), anchor_b = Vec3::Zero();
   bool has_anchor = false, has_anchor_b = false;
+  Vec3 limit = Vec3::Zero(), motor = Vec3::Zero(); // (lower, upper, 0), (speed, bound, 0)
+  bool has_limit = false, has_motor = false;
 };
 
 JointLine parseJointLine(const std::string& where, std::stringstream& ss, size_t index) {
@@ -552,6 +579,10 @@ JointLine parseJointLine(const std::string& where, std::stringstream& ss, size_t
       j.axis = parseVec(where, k, v, 3, nullptr);
     else if (k == "anchor_b")
       j.anchor_b = parseVec(where, k, v, 3, nullptr), j.has_anchor_b = true;
+    else if (k == "limit")
+      j.limit = parseVec(where, k, v, 2, nullptr), j.has_limit = true;
+    else if (k == "motor")
+      j.motor = parseVec(where, k, v, 2, nullptr), j.has_motor = true;
     else
       throw SceneError(where + ": unknown joint key '" + k + "'");
   }
@@ -581,7 +612,13 @@ std::vector<Joint> resolveJoints(const std::vector<JointLine>& lines, const std:
       const JointType type = jointFromName(l.type);
       require(type != JointType::Distance || l.has_anchor_b, "a distance joint needs anchor_b=x,y,z");
       const int a = bodyIndex(bodies, l.a, l.where), b = bodyIndex(bodies, l.b, l.where);
-      joints.push_back(makeJoint(l.name, type, bodies, a, b, l.anchor, l.axis, l.anchor_b));
+      Joint j = makeJoint(l.name, type, bodies, a, b, l.anchor, l.axis, l.anchor_b);
+      const bool axial = type == JointType::Hinge || type == JointType::Slider;
+      require(axial || !(l.has_limit || l.has_motor), "limit= and motor= need a hinge or a slider");
+      const double unit = type == JointType::Hinge ? M_PI / 180 : 1.0; // hinge limits in degrees
+      if (l.has_limit) j.limited = true, j.lower = l.limit[0] * unit, j.upper = l.limit[1] * unit;
+      if (l.has_motor) j.motor = true, j.target_speed = l.motor[0], j.max_force = l.motor[1];
+      joints.push_back(j);
     } catch (const SceneError& e) {
       const std::string msg = e.what();
       throw SceneError(msg.rfind(l.where, 0) == 0 ? msg : l.where + ": " + msg);

@@ -65,6 +65,10 @@ struct SceneParams {
   // (radius -ball_radius, -end_mass_ratio link masses) passes 0.1 radius above the ground, and swings into a
   // pyramid of -pyramid_base cubes (edge -ball_radius, -density) standing just past the lowest point (+x).
   double ball_radius = 0.1;
+  // motor_limit: one capsule link (-link_*) on a hinge to the world about y, starting at rest at -angle
+  // degrees from the downward vertical, limited to +-limit_angle degrees about that pose and driven by a
+  // velocity motor of target -motor_speed rad/s (raising the link) and bound -motor_torque N m.
+  double limit_angle_deg = 60.0, motor_speed = 2.0, motor_torque = 1.0;
 };
 
 // A scene as a model: its bodies, the joints among them, and the settings a model file carries (MJCF's

@@ -260,11 +260,10 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
   const std::vector<ConstraintRow> rows = form.rows(in.cs);
   const bool exact = o.accuracy == ContactAccuracy::Exact;
+  auto jointed = [&](int b) { return joint_sys_->touches(in.global ? (*in.global)[b] : b); };
   bool on_joints = false; // contacts on jointed bodies: the dense A with the joint block's Schur complement
   for (const ConstraintRow& r : rows)
-    on_joints =
-        on_joints ||
-        (joint_sys_ && (joint_sys_->touches(in.cs[r.contact].a) || joint_sys_->touches(in.cs[r.contact].b)));
+    on_joints = on_joints || (joint_sys_ && (jointed(in.cs[r.contact].a) || jointed(in.cs[r.contact].b)));
   const bool sparse = !on_joints && o.friction != FrictionModel::Polyhedral &&
                       (!exact || (int)rows.size() > o.dense_max_rows);
   StepperOptions ob = o; // balanced / fast: their own Baumgarte factor (contact_accuracy.hpp)
@@ -272,7 +271,7 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   // S deferred (sparseMatrix()): the block PGS sweeps of fast and balanced and the exact path's body-space
   // solves need only the rows, masses and compliance; a fallback builds it when it needs it
   DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse, true);
-  if (on_joints) joint_sys_->correctDelassus(&sys);
+  if (on_joints) joint_sys_->correctDelassus(&sys, in.global);
   const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
   if (!exact) {
@@ -290,18 +289,32 @@ void Stepper::setJoints(std::vector<Joint> joints) {
   if (!joints.empty() && o_.accuracy != ContactAccuracy::Exact)
     throw std::runtime_error("joints need -contact_accuracy exact (the block PGS of balanced and fast has no "
                              "joint blocks)");
-  if (!joints.empty() && o_.islands)
-    throw std::runtime_error("joints need -contact_islands off (islands do not follow joints)");
   if (!joints.empty() && o_.sleep)
     throw std::runtime_error("joints need sleeping off (-sleep: a sleeping body would freeze its joints)");
-  for (const Joint& j : joints)
-    if (j.limited || j.motor)
-      throw std::runtime_error("joint '" + j.name + "': limits and motors are not supported by the stepper");
+  for (const Joint& j : joints) {
+    const bool axial = j.type == JointType::Hinge || j.type == JointType::Slider;
+    if ((j.limited || j.motor) && !axial)
+      throw std::runtime_error("joint '" + j.name + "': limits and motors need a hinge or a slider");
+    if (j.limited && !(j.lower < j.upper && std::isfinite(j.lower) && std::isfinite(j.upper)))
+      throw std::runtime_error("joint '" + j.name + "': its limit needs lower < upper (finite)");
+    if (j.limited && j.type == JointType::Hinge && !(j.lower > -M_PI && j.upper < M_PI))
+      throw std::runtime_error("joint '" + j.name + "': hinge limits must lie in (-pi, pi) (the angle is " +
+                               "measured in (-pi, pi])");
+    if (j.motor && !(j.max_force > 0 && std::isfinite(j.max_force) && std::isfinite(j.target_speed)))
+      throw std::runtime_error("joint '" + j.name +
+                               "': a motor needs 0 < max_force < inf and a finite speed");
+  }
   joined_.clear();
   for (const Joint& j : joints)
     if (j.b >= 0) joined_.push_back({std::min(j.a, j.b), std::max(j.a, j.b)});
   std::sort(joined_.begin(), joined_.end());
   joints_ = std::move(joints);
+  actuation_.reset(joints_);
+}
+
+double Stepper::motorPower(int k) const {
+  if (actuation_.empty() || !joints_[k].motor) return 0.0;
+  return actuation_.motorImpulse(k) / o_.dt * actuation_.rate(k);
 }
 
 void Stepper::jointReaction(int k, const std::vector<Body>& bodies, Vec3* force, Vec3* torque) const {
@@ -311,6 +324,11 @@ void Stepper::jointReaction(int k, const std::vector<Body>& bodies, Vec3* force,
   for (int r = joint_first_[k]; r < end; ++r) {
     *force += joint_rows_[r].ja.head<3>() * joint_impulse_[r] / o_.dt;
     *torque += joint_rows_[r].ja.tail<3>() * joint_impulse_[r] / o_.dt;
+  }
+  if (!actuation_.empty()) { // the limit's and the motor's impulse along the rate row
+    const double z = actuation_.limitImpulse(k) + actuation_.motorImpulse(k);
+    *force += actuation_.rateRow(k).ja.head<3>() * z / o_.dt;
+    *torque += actuation_.rateRow(k).ja.tail<3>() * z / o_.dt;
   }
   const Body& A = bodies[joints_[k].a];
   *torque -= (A.R() * joints_[k].ra).cross(*force); // about the anchor instead of the centre of mass
@@ -371,6 +389,56 @@ bool Stepper::finishJoints(std::vector<Body>* next, const JointSystem& js, StepS
   return true;
 }
 
+// The step's velocities from v*: the joint block with SHAKE (joint_system.hpp), the contacts, the joint block
+// again; with limits or motors, once per guess of their active set until it holds (joint_actuation.hpp). js,
+// jlam: the accepted solve's joint block and its impulses. False: a solve failed (st->message).
+bool Stepper::solveVelocities(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
+                              std::vector<Vec3>* lam, StepStats* st, std::unique_ptr<JointSystem>* js,
+                              Eigen::VectorXd* jlam) {
+  const int nb = (int)bodies.size(), nc = (int)contacts_.size();
+  if (nc == 0) ids_.clear();
+  if (joints_.empty()) return nc == 0 || solveContacts(bodies, v, w, lam, st);
+  std::vector<Mat3> inv_i(nb);
+  for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
+  actuation_.prepare(bodies, inv_i, joints_, o_.dt);
+  const std::vector<Vec3> v0 = *v, w0 = *w;
+  const int max_solves = JointActuation::kBlockSwitches + 4 * (int)joints_.size() + 10;
+  for (int attempt = 1;; ++attempt) {
+    *v = v0, *w = w0;
+    lam->assign(nc, Vec3::Zero());
+    jlam->resize(0);
+    actuation_.applyFixed(v, w);
+    const double free_energy = kineticEnergy(bodies, *v, *w); // the joint impulses do no work
+    const ActuationRows extra = actuation_.rows();
+    *js = std::make_unique<JointSystem>(bodies, inv_i, joints_, &extra);
+    if (!(*js)->ok()) {
+      st->failed = true;
+      st->message = "the joint block G M^-1 G^T did not factorise (dependent joint rows)";
+      return false;
+    }
+    (*js)->project(v, w, jlam);
+    // free motors do work: the bound is the larger of the free and the projected energy
+    const double bound = std::max(free_energy, kineticEnergy(bodies, *v, *w)) * (1 + 1e-12);
+    st->shake_iterations =
+        (*js)->shake(bodies, joints_, o_.dt, o_.joint_tol, o_.joint_max_projections, bound, v, w, jlam);
+    joint_sys_ = js->get();
+    const bool solved = nc == 0 || solveContacts(bodies, v, w, lam, st);
+    joint_sys_ = nullptr;
+    if (!solved) return false;
+    if (nc > 0) (*js)->project(v, w, jlam);
+    st->actuation_solves = attempt;
+    if (actuation_.empty()) return true;
+    const int h = (*js)->holonomicRows();
+    if (actuation_.update(jlam->tail(jlam->size() - h), *v, *w, attempt)) return true;
+    if (attempt == max_solves) {
+      st->failed = true;
+      st->message = "joint limits and motors: the active set did not settle in " +
+                    std::to_string(max_solves) + " solves";
+      return false;
+    }
+  }
+}
+
 StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   std::vector<Body>& bodies = *bodies_ptr;
   StepStats st;
@@ -394,25 +462,7 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
   }
   std::unique_ptr<JointSystem> js; // the joint block: v* projected, then v* + M^-1 N^T z (joint_system.hpp)
   Eigen::VectorXd jlam;
-  if (!joints_.empty()) {
-    std::vector<Mat3> inv_i(nb);
-    for (int i = 0; i < nb; ++i) inv_i[i] = bodies[i].is_static ? Mat3::Zero() : bodies[i].invInertiaWorld();
-    js = std::make_unique<JointSystem>(bodies, inv_i, joints_);
-    double free_energy = 0.0;
-    for (int i = 0; i < nb; ++i)
-      if (!bodies[i].is_static)
-        free_energy +=
-            0.5 * (bodies[i].mass * vstar[i].squaredNorm() + wnew[i].dot(bodies[i].inertiaWorld() * wnew[i]));
-    js->project(&vstar, &wnew, &jlam);
-    st.shake_iterations = js->shake(bodies, joints_, o_.dt, o_.joint_tol, o_.joint_max_projections,
-                                    free_energy * (1 + 1e-12), &vstar, &wnew, &jlam);
-  }
-  joint_sys_ = js.get();
-  if (nc == 0) ids_.clear();
-  const bool solved = nc == 0 || solveContacts(bodies, &vstar, &wnew, &lam, &st);
-  joint_sys_ = nullptr;
-  if (!solved) return st;
-  if (js && nc > 0) js->project(&vstar, &wnew, &jlam);
+  if (!solveVelocities(bodies, &vstar, &wnew, &lam, &st, &js, &jlam)) return st;
   lap(&t); // solveContacts timed its phases
   std::vector<Body> next = bodies;
   std::string bad;
@@ -422,9 +472,12 @@ StepStats Stepper::stepBodies(std::vector<Body>* bodies_ptr) {
     return st;
   }
   if (js && !finishJoints(&next, *js, &st)) return st;
-  if (js) joint_rows_ = js->jacobian(), joint_first_.clear(), joint_impulse_ = jlam;
-  if (js)
+  if (js) {
+    joint_rows_.assign(js->jacobian().begin(), js->jacobian().begin() + js->holonomicRows());
+    joint_impulse_ = jlam.head(js->holonomicRows());
+    joint_first_.clear();
     for (int k = 0; k < (int)joints_.size(); ++k) joint_first_.push_back(js->firstRow(k));
+  }
   bodies.swap(next);
   impulses_ = lam;
   forceMeasures(contacts_, lam, o_.mu, &st.force_ratio, &st.cone_violation, &st.normal_impulse);

@@ -15,6 +15,7 @@
 #include "contact/collision.hpp"
 #include "contact/delassus.hpp"
 #include "contact/joint.hpp"
+#include "contact/joint_actuation.hpp"
 #include "contact/phase_times.hpp"
 #include "core/named_choice.hpp"
 #include "lcp/problem.hpp"
@@ -174,7 +175,10 @@ struct StepStats {
   // the velocity projection alone, joint_system.hpp), the largest |Phi| after the position
   // projection (m, see joint_system.hpp) and its Newton iterations, and the largest |G v| of the step's end
   // velocities at the projected poses (m/s).
+  // actuation_solves: the solves of the step's velocities (more than 1: the limits' and motors' active set
+  // changed, joint_actuation.hpp).
   int joint_rows = 0;
+  int actuation_solves = 0;
   int shake_iterations = 0;
   double joint_error = 0.0;
   int projection_iterations = 0;
@@ -228,10 +232,15 @@ public:
   // Per joint: the force and the torque (about the joint's anchor on a) that the joint exerted on its body a
   // over the last step (impulse / dt; N, N m).
   void jointReaction(int joint, const std::vector<Body>& bodies, Vec3* force, Vec3* torque) const;
+  // The motor's power over the last step (W; 0 without a motor): its force (torque) times the rate it drove.
+  double motorPower(int joint) const;
 
 private:
   StepStats stepBodies(std::vector<Body>* bodies);
   bool finishJoints(std::vector<Body>* next, const JointSystem& js, StepStats* st);
+  bool solveVelocities(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
+                       std::vector<Vec3>* lam, StepStats* st, std::unique_ptr<JointSystem>* js,
+                       Eigen::VectorXd* jlam);
   void matchPreviousImpulses(const std::vector<Body>& bodies, std::vector<Vec3>* prev,
                              std::vector<bool>* has_prev, std::vector<int>* prev_rung);
   bool solveContacts(const std::vector<Body>& bodies, std::vector<Vec3>* v, std::vector<Vec3>* w,
@@ -242,6 +251,7 @@ private:
     const std::vector<Vec3>& prev;
     const std::vector<bool>& has_prev;
     const std::vector<int>& prev_rung;
+    const std::vector<int>* global = nullptr; // an island's problem: the global index of each body
   };
   // The contacts among bodies as one problem: impulses lam, applied to v, w; problems / solution as
   // ChainSolve keeps them (keep_problems_). -friction auto: solveAuto (friction_auto.cpp).
@@ -292,6 +302,7 @@ private:
   std::vector<int> joint_first_;            // ... the first row of each joint ...
   Eigen::VectorXd joint_impulse_;           // ... and their impulses
   const JointSystem* joint_sys_ = nullptr;  // during a step: its joint block
+  JointActuation actuation_;                // the joints' limits and motors
   lcp::Vec solution_;
   bool keep_problems_ = false;
 };

@@ -119,8 +119,8 @@ std::vector<double> Stepper::solveIsland(const std::vector<Body>& bodies, const 
   for (int c : isl.contacts)
     kprev.push_back(in.prev[c]), khas.push_back(in.has_prev[c]), krung.push_back(in.prev_rung[c]);
   StepStats ks;
-  const bool ok =
-      solveProblem(s.bodies, {s.contacts, kprev, khas, krung}, &kv, &kw, &klam, &ks, problems, solution);
+  const bool ok = solveProblem(s.bodies, {s.contacts, kprev, khas, krung, &s.global}, &kv, &kw, &klam, &ks,
+                               problems, solution);
   std::vector<double> out{ok ? 1.0 : 0.0};
   for (const std::vector<Vec3>* x : {&kv, &kw})
     for (size_t i = 0; ok && i < s.global.size(); ++i)
@@ -136,7 +136,7 @@ bool Stepper::solveIslands(const std::vector<Body>& bodies, const std::vector<Ve
                            std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam,
                            StepStats* st) {
   auto t = std::chrono::steady_clock::now();
-  const std::vector<Island> islands = splitIslands(bodies, contacts_);
+  const std::vector<Island> islands = splitIslands(bodies, contacts_, joined_);
   const int n = (int)islands.size();
   st->islands = n;
   st->largest_island_bodies = n ? (int)islands[0].bodies.size() : 0;

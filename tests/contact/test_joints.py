@@ -9,14 +9,24 @@
 - the rope bridge (10 planks, 3 boxes dropped on it; contacts on jointed bodies through the joint block's Schur
   complement): the joint error bound, and the boxes end resting on the planks (measured: 16 contacts);
 - the wrecking ball (5 links and a sphere of 20 link masses into a pyramid of base 3, 60 steps): the joint error
-  bound while it scatters the boxes (measured: a box moved 0.5 m by step 60);
+  bound while it scatters the boxes (measured: a box moved 0.5 m by step 60); with -contact_islands on, the
+  chain is in the island of the ball's contacts (12 bodies), the positions match islands off to 1e-12 m
+  (measured 7e-16: the same problems with the bodies renumbered) and 1 and 2 ranks are bitwise identical;
 - the MJCF model inputs/contact/chain25.xml: its time step (0.01) and gravity are the run's (/steps/time), and the
-  joint error bound holds.
+  joint error bound holds;
+- motor_limit (a lever driven up by a bounded motor against its +60 degree limit, 200 steps): /joints/coordinate
+  ends on the limit (1e-12; measured 0) with /joints/motor_power 0 there, after a phase where the saturated motor
+  (1 N m) did work (measured: largest power 1.42 W); inputs/contact/motor_limit.xml (written by -write_mjcf) gives
+  the same coordinates (measured: bitwise), and so does inputs/contact/lever.scene (the scene file's limit= and
+  motor= keys);
+- -write_mjcf of the registered scene reads back (-scene mjcf) to the same trajectory as the scene (double
+  pendulum, 100 steps: to 1e-12; measured 9e-16, the round-off of the file's body-frame poses).
 """
+import subprocess
 import sys
 
 import numpy as np
-from contact_harness import SLOW_BUILD, Harness
+from contact_harness import ENV, SLOW_BUILD, Harness
 
 APP, INPUTS = sys.argv[1], sys.argv[2]
 H = Harness(APP, "contact_joints_")
@@ -65,11 +75,40 @@ x = f["/frames/positions"][-1]
 held = x[10:, 2].min() > x[:10, 2].min() and f["/steps/contacts"][-1] >= 12
 check(held, f"rope bridge: the boxes rest on the planks at the end (lowest box z {x[10:, 2].min():.3f} m above the "
       f"lowest plank {x[:10, 2].min():.3f} m, {f['/steps/contacts'][-1]} contacts)")
-f = run("wreck", "-scene", "wrecking_ball", "-links", 5, "-pyramid_base", 3, "-end_mass_ratio", 20, "-dt", 0.01,
-        "-steps", 60)
+WRECK = ["-scene", "wrecking_ball", "-links", 5, "-pyramid_base", 3, "-end_mass_ratio", 20, "-dt", 0.01, "-steps", 60]
+f = run("wreck", *WRECK)
 err = f["/joints/error"][:].max()
 x0, x = f["/frames/positions"][0], f["/frames/positions"][-1]
 moved = np.linalg.norm(x[7:] - x0[7:], axis=1).max()  # bodies 0-5: links and ball, 6: ground, 7-12: the boxes
 check(err <= 1e-9 and moved > 0.1, f"wrecking ball (5 links, 20-link-mass ball into a pyramid of 3): joint error "
       f"{err:.2e} m <= 1e-9, a box moved {moved:.2f} m (> 0.1)")
+a = run("wreck_islands", *WRECK, "-contact_islands", "on")
+b = run("wreck_islands_np2", *WRECK, "-contact_islands", "on", np_=2)
+big = a["/steps/largest_island_bodies"][:].max()
+check(big == 12, f"wrecking ball, islands: the chain joins the island of the ball's contacts (largest island {big} "
+      "bodies = 5 links + ball + 6 boxes)")
+dx = np.abs(a["/frames/positions"][:] - f["/frames/positions"][:]).max()
+check(dx <= 1e-12, f"wrecking ball: islands on vs off, positions to {dx:.1e} m (<= 1e-12: the same problems, renumbered)")
+same = all(np.array_equal(a[k][:], b[k][:]) for k in ("/frames/positions", "/frames/orientations", "/joints/force"))
+check(same, "wrecking ball, islands on: positions, orientations and joint forces bitwise identical at 1 and 2 ranks")
+f = run("motor_limit", "-scene", "motor_limit", "-steps", 200)
+theta, power = f["/joints/coordinate"][:, 0], f["/joints/motor_power"][:, 0]
+check(abs(theta[-1] - np.pi / 3) <= 1e-12 and abs(power[-1]) <= 1e-12 and power.max() > 1.0,
+      f"motor_limit: the lever ends on its limit ({theta[-1] - np.pi / 3:.1e} rad off), the motor's power "
+      f"{power[-1]:.1e} W there after up to {power.max():.2f} W")
+g = run("motor_limit_xml", "-scene", "mjcf", "-scene_file", f"{INPUTS}/motor_limit.xml", "-steps", 200)
+d = np.abs(g["/joints/coordinate"][:] - f["/joints/coordinate"][:]).max()
+check(d <= 1e-12, f"motor_limit.xml: the registered scene's coordinates to {d:.1e} rad")
+g = run("lever_scene", "-scene", "file", "-scene_file", f"{INPUTS}/lever.scene", "-steps", 200)
+d = np.abs(g["/joints/coordinate"][:] - f["/joints/coordinate"][:]).max()
+check(d <= 1e-12, f"lever.scene (limit= and motor= keys): the registered scene's coordinates to {d:.1e} rad")
+
+xml = str(H.tmp / "double_pendulum.xml")
+p = subprocess.run([APP, "-scene", "double_pendulum", "-angle", "40", "-write_mjcf", xml, "-quiet"], env=ENV)
+check(p.returncode == 0, "-write_mjcf double_pendulum: exit 0")
+a = run("dp_scene", "-scene", "double_pendulum", "-angle", 40, "-steps", 100)
+b = run("dp_xml", "-scene", "mjcf", "-scene_file", xml, "-steps", 100)
+d = max(np.abs(a[k][:] - b[k][:]).max() for k in ("/frames/positions", "/frames/orientations"))
+check(d <= 1e-12, f"-write_mjcf double_pendulum read back: the scene's trajectory to {d:.1e} (<= 1e-12)")
+
 H.finish("joint")

@@ -347,6 +347,8 @@ TEST(ContactMjcf, RoundTripScenes) {
       {"drop", [](SceneParams* p) { p->drop_body = "box", p->tilt_deg = 10; }},
       {"incline", [](SceneParams*) {}},
       {"log_heap", [](SceneParams* p) { p->n_logs = 7; }},
+      {"motor_limit", [](SceneParams*) {}},
+      {"wrecking_ball", [](SceneParams* p) { p->links = 4, p->end_mass_ratio = 50; }},
   };
   for (const Case& c : cases) {
     SceneParams p;
