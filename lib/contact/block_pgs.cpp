@@ -195,21 +195,24 @@ int manifolds(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, st
 } // namespace
 
 int blockPgsSweeps(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, int max_sweeps, double tol,
-                   lcp::Vec* z) {
+                   lcp::Vec* z, int first_sweep, double* last_change) {
   // the manifolds' fixed-capacity blocks (4 kB of matrices each) kept from call to call on this thread
   thread_local std::vector<Manifold> mfs;
   thread_local std::vector<int> seq;
   const int n = manifolds(p, cs, per, &mfs, &seq);
   V6s u = bodyImpulseVelocities(*p.rows, *z, p.nbodies);
   int sweep = 0;
-  for (double change = lcp::kInf; sweep < max_sweeps && !(change <= tol); ++sweep) {
+  double change = lcp::kInf;
+  for (; sweep < max_sweeps && !(change <= tol); ++sweep) {
     change = 0.0;
+    const bool backwards = p.symmetric && (first_sweep + sweep) % 2;
     for (int k = 0; k < n; ++k) {
-      const Manifold& mf = mfs[seq[p.symmetric && sweep % 2 ? n - 1 - k : k]];
+      const Manifold& mf = mfs[seq[backwards ? n - 1 - k : k]];
       change = std::max(change, solveBlock(p, mf.normal, &u, z));
       change = std::max(change, solveBlock(p, mf.tangent, &u, z));
     }
   }
+  if (last_change) *last_change = change;
   return sweep;
 }
 

@@ -21,8 +21,9 @@ namespace suite::contact {
 
 // Up to max_sweeps block sweeps from z (blocks: the contacts of cs grouped by body pair, in the order their
 // first rows appear in p.order; per = rows per contact, 1 or 3 (n, t1, t2)); every other sweep backwards when
-// p.symmetric. Stops after a sweep that changes no row velocity by more than tol. Returns the sweeps made.
+// p.symmetric (the first counted as sweep first_sweep). Stops after a sweep that changes no row velocity by
+// more than tol. Returns the sweeps made; last_change: the largest row velocity change of the last sweep.
 int blockPgsSweeps(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, int max_sweeps, double tol,
-                   lcp::Vec* z);
+                   lcp::Vec* z, int first_sweep = 0, double* last_change = nullptr);
 
 } // namespace suite::contact

@@ -99,7 +99,7 @@ void polish(const SparseBoxLcp& p, const StepperOptions& o, int max_fact, lcp::V
 } // namespace
 
 bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const StepperOptions& o,
-                    Impulses* out, StepStats* st) {
+                    Impulses* out, StepStats* st, const JointCoupling* joints) {
   const int nc = (int)step.contacts.size(), n = (int)sys.rows.size(), per = nc ? n / nc : 1;
   SparseBoxLcp p = makeSparseBoxLcp(sys, lcp::Vec::Zero(n), lcp::Vec::Constant(n, lcp::kInf));
   if (per == 3) setBounds(step, o, per, &p);
@@ -109,10 +109,21 @@ bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const St
   for (int i = 0; i < nc; ++i)
     for (int k = 0; k < per; ++k) z[i * per + k] = o.warm_start && step.has_prev[i] ? step.prev[i][k] : 0.0;
   const int budget = sweepBudget(o, pileHeight(step.contacts, step.bodies));
-  const int sweeps = blockPgsSweeps(p, step.contacts, per, budget, sparseTolerance(p, o.lcp_tol), &z);
+  const double tol = sparseTolerance(p, o.lcp_tol);
+  int sweeps = 0;
+  if (!joints) {
+    sweeps = blockPgsSweeps(p, step.contacts, per, budget, tol, &z);
+  } else { // one sweep per update of the joint block's answer (see contact_accuracy.hpp)
+    const lcp::Vec b0 = p.b;
+    for (double change = lcp::kInf; sweeps < budget && !(change <= tol);) {
+      p.b = b0 + (*joints)(z);
+      sweeps += blockPgsSweeps(p, step.contacts, per, 1, tol, &z, sweeps, &change);
+    }
+    p.b = b0 + (*joints)(z); // the residual below: of the answer's coupled problem
+  }
   st->iterations += sweeps;
   st->budget_stop = sweeps >= budget;
-  if (o.accuracy == ContactAccuracy::Balanced) polish(p, o, 1, &z, st);
+  if (o.accuracy == ContactAccuracy::Balanced && !joints) polish(p, o, 1, &z, st);
   st->residual = sparseResidual(p, z);
   st->rows = n;
   st->solver = std::string("block_pgs_") + accuracyName(o.accuracy);

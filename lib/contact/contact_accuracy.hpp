@@ -27,9 +27,17 @@
 // warm-started step's reduction the same at any height. Measured (fast, resting pyramids, 200 steps): base 10 at
 // 10 sweeps drifts 3.3e-4 m, base 20 at 40 4.6e-4 m, base 30 at 90 4.3e-4 m; at 10 sweeps base 20 and 30 drift
 // 4.3e-2 and 0.10 m. An explicit -contact_sweeps is a fixed budget.
+// With joints, the joint block is one more block of the Gauss-Seidel iteration, solved exactly: before each
+// sweep over the contact manifolds, the joint impulses that answer the current contact impulses (the sparse
+// LDL^T of S = G M^-1 G^T, linear in the bodies on chains) shift the contact rows' velocities b (block
+// Gauss-Seidel on the MLCP of stepper.hpp with the G block: Cottle, Pang & Stone, "The Linear Complementarity
+// Problem", 1992, sec. 5.2). The stepper projects the end velocities onto the joints exactly afterwards
+// (joint_system.hpp). balanced then leaves out its splitting pass, whose factorisation has no joint rows.
 #pragma once
 
 #include "contact/friction_formulation.hpp"
+
+#include <functional>
 
 namespace suite::contact {
 
@@ -39,8 +47,12 @@ int pileHeight(const std::vector<Contact>& cs, const std::vector<Body>& bodies);
 // The sweep budget of a mode: StepperOptions::contact_sweeps when set, else max(mode default, ceil(H^2 / 10))
 // for a pile of height H (see above).
 int sweepBudget(const StepperOptions& o, int height);
-// The impulses of a balanced / fast step (see above); always true (never a failed step).
+// With joints (joint_system.hpp): the change of the contact rows' velocities from the joint impulses that answer
+// the contact impulses z, J (-M^-1 G^T S^-1 G M^-1 J^T z).
+using JointCoupling = std::function<lcp::Vec(const lcp::Vec& z)>;
+// The impulses of a balanced / fast step (see above); always true (never a failed step). joints: the coupling
+// of contacts on jointed bodies (nullptr: none), see below.
 bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const StepperOptions& o,
-                    Impulses* out, StepStats* st);
+                    Impulses* out, StepStats* st, const JointCoupling* joints = nullptr);
 
 } // namespace suite::contact

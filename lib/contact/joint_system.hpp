@@ -28,6 +28,7 @@
 #pragma once
 
 #include "contact/delassus.hpp"
+#include "contact/delassus_sparse.hpp"
 #include "contact/joint.hpp"
 #include "contact/joint_actuation.hpp"
 
@@ -59,6 +60,11 @@ public:
   int shake(const std::vector<Body>& bodies, const std::vector<Joint>& joints, double dt, double tol,
             int max_it, double energy_bound, std::vector<Vec3>* v, std::vector<Vec3>* w,
             Eigen::VectorXd* lambda);
+  // The joint block's answer to a change du of the bodies' velocities (per body (v, w), as many as the system
+  // was built for): the change -M^-1 G^T S^-1 G du that leaves G v as it was (the block PGS of balanced and
+  // fast: joint_coupling in contact_accuracy.hpp).
+  V6s respond(const V6s& du) const;
+  int bodies() const { return nbodies_; }
   // Does any joint row act on body i (dynamic)?
   bool touches(int body) const { return body >= 0 && body < (int)jointed_.size() && jointed_[body]; }
   // sys.A (dense) -= X^T S^-1 X, X = G M^-1 J^T of sys's rows; sys.b: built from projected velocities already.
@@ -70,6 +76,8 @@ public:
   bool ok() const { return ok_; }
 
 private:
+  Eigen::VectorXd solveRefined(const Eigen::VectorXd& r, V6s* du) const;
+  int nbodies_ = 0;
   std::vector<JRow> rows_;
   std::vector<int> first_;
   std::vector<char> jointed_;

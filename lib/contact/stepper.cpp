@@ -5,6 +5,7 @@
 
 #include "contact/contact_accuracy.hpp"
 #include "contact/delassus.hpp"
+#include "contact/delassus_sparse.hpp"
 #include "contact/friction_auto.hpp"
 #include "contact/friction_formulation.hpp"
 #include "contact/joint_system.hpp"
@@ -264,18 +265,20 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   bool on_joints = false; // contacts on jointed bodies: the dense A with the joint block's Schur complement
   for (const ConstraintRow& r : rows)
     on_joints = on_joints || (joint_sys_ && (jointed(in.cs[r.contact].a) || jointed(in.cs[r.contact].b)));
-  const bool sparse = !on_joints && o.friction != FrictionModel::Polyhedral &&
+  // exact: the dense A with the joint block's Schur complement; balanced / fast: the joint block in the sweeps
+  const bool sparse = !(on_joints && exact) && o.friction != FrictionModel::Polyhedral &&
                       (!exact || (int)rows.size() > o.dense_max_rows);
   StepperOptions ob = o; // balanced / fast: their own Baumgarte factor (contact_accuracy.hpp)
   if (!exact) ob.baumgarte = o.budget_baumgarte;
   // S deferred (sparseMatrix()): the block PGS sweeps of fast and balanced and the exact path's body-space
   // solves need only the rows, masses and compliance; a fallback builds it when it needs it
   DelassusSystem sys = buildDelassus(bodies, inv_i, *v, in.cs, rows, ob, sparse, true);
-  if (on_joints) joint_sys_->correctDelassus(&sys, in.global);
+  if (on_joints && exact) joint_sys_->correctDelassus(&sys, in.global);
   const ContactStep step{bodies, in.cs, in.prev, in.has_prev};
   Impulses imp;
   if (!exact) {
-    budgetImpulses(step, sys, o, &imp, st);
+    const JointCoupling coupling = [&](const lcp::Vec& z) { return jointCoupling(sys, z, in.global); };
+    budgetImpulses(step, sys, o, &imp, st, on_joints ? &coupling : nullptr);
   } else {
     ChainSolve solver(o, keep_problems_, problems, solution, st);
     if (!form.impulses(step, sys, solver, &imp, st)) return false;
@@ -285,10 +288,21 @@ bool Stepper::solveModel(const FrictionFormulation& form, const StepperOptions& 
   return true;
 }
 
+// The contact rows' velocity change from the joint impulses answering contact impulses z (JointCoupling).
+lcp::Vec Stepper::jointCoupling(const DelassusSystem& sys, const lcp::Vec& z,
+                                const std::vector<int>* global) const {
+  const V6s du = bodyImpulseVelocities(sys.rows, z, sys.nbodies);
+  V6s dg(joint_sys_->bodies(), V6::Zero()); // du over the whole scene
+  for (int i = 0; i < sys.nbodies; ++i) dg[global ? (*global)[i] : i] = du[i];
+  const V6s rg = joint_sys_->respond(dg);
+  V6s r(sys.nbodies);
+  for (int i = 0; i < sys.nbodies; ++i) r[i] = rg[global ? (*global)[i] : i];
+  lcp::Vec db(sys.rows.size());
+  for (size_t k = 0; k < sys.rows.size(); ++k) db[(Eigen::Index)k] = rowVelocity(sys.rows[k], r);
+  return db;
+}
+
 void Stepper::setJoints(std::vector<Joint> joints) {
-  if (!joints.empty() && o_.accuracy != ContactAccuracy::Exact)
-    throw std::runtime_error("joints need -contact_accuracy exact (the block PGS of balanced and fast has no "
-                             "joint blocks)");
   if (!joints.empty() && o_.sleep)
     throw std::runtime_error("joints need sleeping off (-sleep: a sleeping body would freeze its joints)");
   for (const Joint& j : joints) {

@@ -259,6 +259,7 @@ private:
                     std::vector<Vec3>* w, std::vector<Vec3>* lam, StepStats* st,
                     std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;
   // ... with one friction formulation and its options.
+  lcp::Vec jointCoupling(const DelassusSystem& sys, const lcp::Vec& z, const std::vector<int>* global) const;
   bool solveModel(const FrictionFormulation& form, const StepperOptions& o, const std::vector<Body>& bodies,
                   const ProblemInput& in, std::vector<Vec3>* v, std::vector<Vec3>* w, std::vector<Vec3>* lam,
                   StepStats* st, std::vector<lcp::Problem>* problems, lcp::Vec* solution) const;

@@ -14,6 +14,10 @@
   (measured 7e-16: the same problems with the bodies renumbered) and 1 and 2 ranks are bitwise identical;
 - the MJCF model inputs/contact/chain25.xml: its time step (0.01) and gravity are the run's (/steps/time), and the
   joint error bound holds;
+- balanced and fast: the wrecking ball with islands in fast mode (the joint bound, the boxes scattered, 1 and 2
+  ranks bitwise); inputs/contact/supported_plank.scene (a crate on a plank pinned at both ends) in every mode:
+  each pin's vertical force against the statics (measured relative errors: exact 1.1e-10, balanced 4.6e-10,
+  fast 2.4e-7);
 - motor_limit (a lever driven up by a bounded motor against its +60 degree limit, 200 steps): /joints/coordinate
   ends on the limit (1e-12; measured 0) with /joints/motor_power 0 there, after a phase where the saturated motor
   (1 N m) did work (measured: largest power 1.42 W); inputs/contact/motor_limit.xml (written by -write_mjcf) gives
@@ -91,6 +95,25 @@ dx = np.abs(a["/frames/positions"][:] - f["/frames/positions"][:]).max()
 check(dx <= 1e-12, f"wrecking ball: islands on vs off, positions to {dx:.1e} m (<= 1e-12: the same problems, renumbered)")
 same = all(np.array_equal(a[k][:], b[k][:]) for k in ("/frames/positions", "/frames/orientations", "/joints/force"))
 check(same, "wrecking ball, islands on: positions, orientations and joint forces bitwise identical at 1 and 2 ranks")
+# balanced / fast: the joint block solved exactly inside the block PGS (contact_accuracy.hpp)
+w = run("wreck_fast", *WRECK, "-contact_accuracy", "fast", "-contact_islands", "on")
+w2 = run("wreck_fast_np2", *WRECK, "-contact_accuracy", "fast", "-contact_islands", "on", np_=2)
+x0, x = w["/frames/positions"][0], w["/frames/positions"][-1]
+moved = np.linalg.norm(x[7:] - x0[7:], axis=1).max()
+err = w["/joints/error"][:].max()
+check(err <= 1e-9 and moved > 0.1, f"wrecking ball, fast: joint error {err:.2e} m <= 1e-9, a box moved {moved:.2f} m")
+same = all(np.array_equal(w[k][:], w2[k][:]) for k in ("/frames/positions", "/joints/force"))
+check(same, "wrecking ball, fast with islands: positions and joint forces bitwise identical at 1 and 2 ranks")
+# the crate on the plank pinned at both ends: the pins' vertical forces against the statics of
+# inputs/contact/supported_plank.scene (measured relative errors: exact 1.1e-10, balanced 4.6e-10, fast 2.4e-7)
+RL, RR = 2 * G / 2 + G * 0.3, 2 * G / 2 + G * 0.7
+for acc, tol in (("exact", 1e-9), ("balanced", 3e-9), ("fast", 1e-6)):
+    p = run(f"plank_{acc}", "-scene", "file", "-scene_file", f"{INPUTS}/supported_plank.scene", "-steps", 200,
+            "-contact_accuracy", acc)
+    fz = p["/joints/force"][-1, :, 2]
+    rel = max(abs(fz[0] - RL) / RL, abs(fz[1] - RR) / RR)
+    check(rel <= tol, f"supported plank, {acc}: the pins carry the crate by statics to {rel:.1e} relative "
+          f"(<= {tol:g})")
 f = run("motor_limit", "-scene", "motor_limit", "-steps", 200)
 theta, power = f["/joints/coordinate"][:, 0], f["/joints/motor_power"][:, 0]
 check(abs(theta[-1] - np.pi / 3) <= 1e-12 and abs(power[-1]) <= 1e-12 and power.max() > 1.0,
