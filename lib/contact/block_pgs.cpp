@@ -95,6 +95,9 @@ struct Block {
     spdInverse(Dp, &Dpinv); // applied many times per step
   }
   void add(int row) { rows[m++] = row; }
+  void readB(const SparseBoxLcp& p) {
+    for (int a = 0; a < m; ++a) b[a] = p.b[rows[a]];
+  }
 };
 
 struct Manifold {
@@ -195,24 +198,25 @@ int manifolds(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, st
 } // namespace
 
 int blockPgsSweeps(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, int max_sweeps, double tol,
-                   lcp::Vec* z, int first_sweep, double* last_change) {
+                   lcp::Vec* z, const std::function<double(const lcp::Vec&)>* before_sweep) {
   // the manifolds' fixed-capacity blocks (4 kB of matrices each) kept from call to call on this thread
   thread_local std::vector<Manifold> mfs;
   thread_local std::vector<int> seq;
   const int n = manifolds(p, cs, per, &mfs, &seq);
   V6s u = bodyImpulseVelocities(*p.rows, *z, p.nbodies);
   int sweep = 0;
-  double change = lcp::kInf;
-  for (; sweep < max_sweeps && !(change <= tol); ++sweep) {
+  for (double change = lcp::kInf; sweep < max_sweeps && !(change <= tol); ++sweep) {
     change = 0.0;
-    const bool backwards = p.symmetric && (first_sweep + sweep) % 2;
+    if (before_sweep) {
+      change = (*before_sweep)(*z);
+      for (int k = 0; k < n; ++k) mfs[k].normal.readB(p), mfs[k].tangent.readB(p);
+    }
     for (int k = 0; k < n; ++k) {
-      const Manifold& mf = mfs[seq[backwards ? n - 1 - k : k]];
+      const Manifold& mf = mfs[seq[p.symmetric && sweep % 2 ? n - 1 - k : k]];
       change = std::max(change, solveBlock(p, mf.normal, &u, z));
       change = std::max(change, solveBlock(p, mf.tangent, &u, z));
     }
   }
-  if (last_change) *last_change = change;
   return sweep;
 }
 

@@ -21,9 +21,10 @@ namespace suite::contact {
 
 // Up to max_sweeps block sweeps from z (blocks: the contacts of cs grouped by body pair, in the order their
 // first rows appear in p.order; per = rows per contact, 1 or 3 (n, t1, t2)); every other sweep backwards when
-// p.symmetric (the first counted as sweep first_sweep). Stops after a sweep that changes no row velocity by
-// more than tol. Returns the sweeps made; last_change: the largest row velocity change of the last sweep.
+// p.symmetric. Stops after a sweep that changes no row velocity by more than tol. Returns the sweeps made.
+// before_sweep (may be null): called with z before each sweep, it may change p.b (the joint block's answer to z,
+// contact_accuracy.hpp); the stop test then also needs the change of b below tol.
 int blockPgsSweeps(const SparseBoxLcp& p, const std::vector<Contact>& cs, int per, int max_sweeps, double tol,
-                   lcp::Vec* z, int first_sweep = 0, double* last_change = nullptr);
+                   lcp::Vec* z, const std::function<double(const lcp::Vec&)>* before_sweep = nullptr);
 
 } // namespace suite::contact

@@ -110,17 +110,16 @@ bool budgetImpulses(const ContactStep& step, const DelassusSystem& sys, const St
     for (int k = 0; k < per; ++k) z[i * per + k] = o.warm_start && step.has_prev[i] ? step.prev[i][k] : 0.0;
   const int budget = sweepBudget(o, pileHeight(step.contacts, step.bodies));
   const double tol = sparseTolerance(p, o.lcp_tol);
-  int sweeps = 0;
-  if (!joints) {
-    sweeps = blockPgsSweeps(p, step.contacts, per, budget, tol, &z);
-  } else { // one sweep per update of the joint block's answer (see contact_accuracy.hpp)
-    const lcp::Vec b0 = p.b;
-    for (double change = lcp::kInf; sweeps < budget && !(change <= tol);) {
-      p.b = b0 + (*joints)(z);
-      sweeps += blockPgsSweeps(p, step.contacts, per, 1, tol, &z, sweeps, &change);
-    }
-    p.b = b0 + (*joints)(z); // the residual below: of the answer's coupled problem
-  }
+  const lcp::Vec b0 = p.b;
+  // with joints: before each sweep, b shifted by the joint block's answer to z (see contact_accuracy.hpp)
+  const std::function<double(const lcp::Vec&)> shift = [&](const lcp::Vec& zk) {
+    const lcp::Vec b = b0 + (*joints)(zk);
+    const double change = (b - p.b).lpNorm<Eigen::Infinity>();
+    p.b = b;
+    return change;
+  };
+  const int sweeps = blockPgsSweeps(p, step.contacts, per, budget, tol, &z, joints ? &shift : nullptr);
+  if (joints) shift(z); // the residual below: of the answer's coupled problem
   st->iterations += sweeps;
   st->budget_stop = sweeps >= budget;
   if (o.accuracy == ContactAccuracy::Balanced && !joints) polish(p, o, 1, &z, st);
