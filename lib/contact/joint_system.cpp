@@ -3,6 +3,7 @@
 
 #include "contact/delassus_sparse.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -29,10 +30,28 @@ std::vector<Mat3> worldInverseInertia(const std::vector<Body>& bodies) {
   return inv_i;
 }
 
-// S = G M^-1 G^T (+ the compliance) in column-major storage for the LDL^T.
+// The lower triangle of S = G M^-1 G^T (+ the compliance), column-major: what the LDL^T reads (Lower).
 Eigen::SparseMatrix<double> jointMatrix(const std::vector<JRow>& rows, int nbodies) {
-  const std::vector<double> scale(rows.size(), kJointCompliance);
-  return Eigen::SparseMatrix<double>(sparseDelassus(rows, nbodies, scale));
+  const int n = (int)rows.size();
+  std::vector<std::vector<int>> at(nbodies); // the rows at each body
+  for (int r = 0; r < n; ++r) {
+    if (rows[r].ba >= 0) at[rows[r].ba].push_back(r);
+    if (rows[r].bb >= 0 && rows[r].bb != rows[r].ba) at[rows[r].bb].push_back(r);
+  }
+  std::vector<int> mark(n, -1); // mark[q] == r: (q, r) already set
+  std::vector<Eigen::Triplet<double>> t;
+  for (int r = 0; r < n; ++r)
+    for (int b : {rows[r].ba, rows[r].bb})
+      if (b >= 0)
+        for (int q : at[b])
+          if (q >= r && mark[q] != r) {
+            mark[q] = r;
+            const double v = rowCoupling(rows[q], rows[r]);
+            t.emplace_back(q, r, q == r ? v * (1.0 + kJointCompliance) : v);
+          }
+  Eigen::SparseMatrix<double> S(n, n);
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
 }
 
 // The step dq = M^-1 G^T mu applied to the poses: x += dx, q <- exp(dtheta) q.
@@ -100,8 +119,23 @@ void jointJacobian(const std::vector<Body>& bodies, const std::vector<Mat3>& inv
   }
 }
 
+bool JointFactorization::factorize(const Eigen::SparseMatrix<double>& S) {
+  const int n = (int)S.cols(), nnz = (int)S.nonZeros();
+  const bool same = n == (int)outer_.size() - 1 && nnz == (int)inner_.size() &&
+                    std::equal(outer_.begin(), outer_.end(), S.outerIndexPtr()) &&
+                    std::equal(inner_.begin(), inner_.end(), S.innerIndexPtr());
+  if (!same) {
+    ldlt_.analyzePattern(S);
+    outer_.assign(S.outerIndexPtr(), S.outerIndexPtr() + n + 1);
+    inner_.assign(S.innerIndexPtr(), S.innerIndexPtr() + nnz);
+  }
+  ldlt_.factorize(S);
+  return ldlt_.info() == Eigen::Success;
+}
+
 JointSystem::JointSystem(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
-                         const std::vector<Joint>& joints, const ActuationRows* extra) {
+                         const std::vector<Joint>& joints, const ActuationRows* extra,
+                         JointFactorization* cache) {
   std::vector<double> phi;
   jointJacobian(bodies, inv_i, joints, &rows_, &phi, &first_);
   max_error_ = maxAbs(phi);
@@ -117,19 +151,19 @@ JointSystem::JointSystem(const std::vector<Body>& bodies, const std::vector<Mat3
   for (int k = holonomic_; k < rows(); ++k) base_bias_[k] = extra->bias[k - holonomic_];
   bias_ = base_bias_;
   if (rows_.empty()) return;
-  ldlt_.compute(jointMatrix(rows_, (int)bodies.size()));
-  ok_ = ldlt_.info() == Eigen::Success;
+  if (cache) factor_ = cache;
+  ok_ = factorization().factorize(jointMatrix(rows_, (int)bodies.size()));
 }
 
 // mu = S^-1 r with one step of iterative refinement against S without the compliance (the compliance's
 // relative impulse error eps cond(S), 2e-7 on a chain with a 1e4 end load, becomes (eps cond(S))^2); du: the
 // body velocities M^-1 G^T mu.
 Eigen::VectorXd JointSystem::solveRefined(const Eigen::VectorXd& r, V6s* du) const {
-  Eigen::VectorXd mu = ldlt_.solve(r);
+  Eigen::VectorXd mu = factorization().solve(r);
   *du = bodyImpulseVelocities(rows_, mu, nbodies_);
   Eigen::VectorXd res(rows());
   for (int k = 0; k < rows(); ++k) res[k] = r[k] - rowVelocity(rows_[k], *du);
-  mu += ldlt_.solve(res);
+  mu += factorization().solve(res);
   *du = bodyImpulseVelocities(rows_, mu, nbodies_);
   return mu;
 }
@@ -209,25 +243,25 @@ void JointSystem::correctDelassus(DelassusSystem* sys, const std::vector<int>* g
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(m, (Eigen::Index)cols.size());
   for (int k = 0; k < m; ++k)
     for (size_t c = 0; c < cols.size(); ++c) X(k, (Eigen::Index)c) = rowCoupling(rows_[k], jcols[c]);
-  const Eigen::MatrixXd Y = ldlt_.solve(X);
+  const Eigen::MatrixXd Y = factorization().solve(X);
   const Eigen::MatrixXd C = X.transpose() * Y;
   for (size_t p = 0; p < cols.size(); ++p)
     for (size_t q = 0; q < cols.size(); ++q) sys->A(cols[p], cols[q]) -= C((Eigen::Index)p, (Eigen::Index)q);
 }
 
 int projectPositions(const std::vector<Joint>& joints, double tol, int max_it, std::vector<Body>* bodies,
-                     double* error) {
+                     double* error, JointFactorization* cache) {
   std::vector<JRow> rows;
   std::vector<double> phi;
   std::vector<int> first;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  JointFactorization own;
+  JointFactorization& ldlt = cache ? *cache : own;
   int it = 0;
   for (;; ++it) {
     jointJacobian(*bodies, worldInverseInertia(*bodies), joints, &rows, &phi, &first);
     *error = maxAbs(phi);
     if (*error <= tol || it == max_it || rows.empty()) return it;
-    ldlt.compute(jointMatrix(rows, (int)bodies->size()));
-    if (ldlt.info() != Eigen::Success) return it;
+    if (!ldlt.factorize(jointMatrix(rows, (int)bodies->size()))) return it;
     const Eigen::VectorXd mu =
         ldlt.solve(-Eigen::Map<const Eigen::VectorXd>(phi.data(), (Eigen::Index)phi.size()));
     const V6s dq = bodyImpulseVelocities(rows, mu, (int)bodies->size());

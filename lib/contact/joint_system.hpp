@@ -38,13 +38,39 @@
 
 namespace suite::contact {
 
+// The LDL^T of S = G M^-1 G^T with its symbolic analysis (AMD ordering, elimination tree) kept while the
+// sparsity pattern stays the same: a mechanism's pattern is the same from step to step and from one Newton
+// iteration of the projection to the next, so the ordering is computed once. A copy starts empty.
+class JointFactorization {
+public:
+  JointFactorization() = default;
+  JointFactorization(const JointFactorization&) {}
+  JointFactorization& operator=(const JointFactorization&) {
+    outer_.clear(), inner_.clear();
+    return *this;
+  }
+  // S: the lower triangle; false when S is not positive definite.
+  bool factorize(const Eigen::SparseMatrix<double>& S);
+  template <class Rhs> typename Rhs::PlainObject solve(const Eigen::MatrixBase<Rhs>& r) const {
+    return ldlt_.solve(r);
+  }
+
+private:
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  std::vector<int> outer_, inner_; // the pattern ldlt_ was analysed for
+};
+
 class JointSystem {
 public:
   // The joint rows at the bodies' poses and S factorised. inv_i: world inverse inertia per body (0 static).
   // extra: equality rows with their bias after the holonomic ones (the active limits and free motors of
   // joint_actuation.hpp); SHAKE and maxError concern the holonomic rows only.
+  // cache: a factorization kept by the caller across steps (its symbolic analysis reused), else the system's own.
   JointSystem(const std::vector<Body>& bodies, const std::vector<Mat3>& inv_i,
-              const std::vector<Joint>& joints, const ActuationRows* extra = nullptr);
+              const std::vector<Joint>& joints, const ActuationRows* extra = nullptr,
+              JointFactorization* cache = nullptr);
+  JointSystem(const JointSystem&) = delete;
+  JointSystem& operator=(const JointSystem&) = delete;
   int rows() const { return (int)rows_.size(); }
   int holonomicRows() const { return holonomic_; }
   // max_k |Phi_k| at the poses the system was built at.
@@ -84,7 +110,10 @@ private:
   double max_error_ = 0.0;
   int holonomic_ = 0;
   Eigen::VectorXd bias_, base_bias_; // base: the extra rows' bias (zero on the holonomic rows)
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  const JointFactorization& factorization() const { return factor_ ? *factor_ : own_; }
+  JointFactorization& factorization() { return factor_ ? *factor_ : own_; }
+  JointFactorization own_;
+  JointFactorization* factor_ = nullptr; // the caller's, when given
   bool ok_ = true;
 };
 
@@ -101,7 +130,8 @@ double maxError(const std::vector<Body>& bodies, const std::vector<Joint>& joint
 
 // Post-stabilisation: Newton on Phi(q) = 0 (above) until max |Phi| <= tol or max_it iterations. Returns the
 // iterations taken; *error: max |Phi| at the end (> tol: not converged).
+// cache: as JointSystem's.
 int projectPositions(const std::vector<Joint>& joints, double tol, int max_it, std::vector<Body>* bodies,
-                     double* error);
+                     double* error, JointFactorization* cache = nullptr);
 
 } // namespace suite::contact

@@ -371,8 +371,8 @@ std::vector<Contact> allowedContacts(std::vector<Contact> cs, const std::vector<
 bool Stepper::finishJoints(std::vector<Body>* next, const JointSystem& js, StepStats* st) {
   st->joint_rows = js.rows();
   const std::vector<Body> drifted = *next;
-  st->projection_iterations =
-      projectPositions(joints_, o_.joint_tol, o_.joint_max_projections, next, &st->joint_error);
+  st->projection_iterations = projectPositions(joints_, o_.joint_tol, o_.joint_max_projections, next,
+                                               &st->joint_error, &projection_factor_);
   if (st->shake_iterations < 0) // without SHAKE the velocities follow the projected poses (as SHAKE's would)
     for (size_t i = 0; i < next->size(); ++i) {
       Body& B = (*next)[i];
@@ -424,7 +424,8 @@ bool Stepper::solveVelocities(const std::vector<Body>& bodies, std::vector<Vec3>
     actuation_.applyFixed(v, w);
     const double free_energy = kineticEnergy(bodies, *v, *w); // the joint impulses do no work
     const ActuationRows extra = actuation_.rows();
-    *js = std::make_unique<JointSystem>(bodies, inv_i, joints_, &extra);
+    js->reset(); // before the next system factorises into joint_factor_
+    *js = std::make_unique<JointSystem>(bodies, inv_i, joints_, &extra, &joint_factor_);
     if (!(*js)->ok()) {
       st->failed = true;
       st->message = "the joint block G M^-1 G^T did not factorise (dependent joint rows)";

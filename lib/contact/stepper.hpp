@@ -16,6 +16,7 @@
 #include "contact/delassus.hpp"
 #include "contact/joint.hpp"
 #include "contact/joint_actuation.hpp"
+#include "contact/joint_system.hpp"
 #include "contact/phase_times.hpp"
 #include "core/named_choice.hpp"
 #include "lcp/problem.hpp"
@@ -298,12 +299,13 @@ private:
   long long next_id_ = 0;
   std::vector<lcp::Problem> problems_;
   std::vector<Joint> joints_;
-  std::vector<std::pair<int, int>> joined_; // the body pairs a joint connects (sorted)
-  std::vector<JRow> joint_rows_;            // the last step's joint rows (at its start) ...
-  std::vector<int> joint_first_;            // ... the first row of each joint ...
-  Eigen::VectorXd joint_impulse_;           // ... and their impulses
-  const JointSystem* joint_sys_ = nullptr;  // during a step: its joint block
-  JointActuation actuation_;                // the joints' limits and motors
+  std::vector<std::pair<int, int>> joined_;             // the body pairs a joint connects (sorted)
+  std::vector<JRow> joint_rows_;                        // the last step's joint rows (at its start) ...
+  std::vector<int> joint_first_;                        // ... the first row of each joint ...
+  Eigen::VectorXd joint_impulse_;                       // ... and their impulses
+  const JointSystem* joint_sys_ = nullptr;              // during a step: its joint block
+  JointActuation actuation_;                            // the joints' limits and motors
+  JointFactorization joint_factor_, projection_factor_; // their symbolic analyses kept from step to step
   lcp::Vec solution_;
   bool keep_problems_ = false;
 };
