@@ -6,6 +6,7 @@
 #include "io/h5_input.hpp"
 
 #include <algorithm>
+#include <array>
 #include <ctime>
 #include <set>
 
@@ -65,9 +66,9 @@ std::string validatePortfolio(const Portfolio& t) {
     if (c != "default" && problemClassIndex(c) < 0) return "unknown problem class '" + c + "'";
     if (!seen.insert(c).second) return "class '" + c + "' listed twice";
     const auto& ch = t.chains[i];
-    if (ch.empty() || ch.size() > static_cast<size_t>(kAutoMaxTried))
+    if (ch.empty() || ch.size() > static_cast<size_t>(kChainMax))
       return "the chain of class '" + c + "' has " + std::to_string(ch.size()) + " solvers (must be 1 to " +
-             std::to_string(kAutoMaxTried) + ")";
+             std::to_string(kChainMax) + ")";
     for (size_t k = 0; k < ch.size(); ++k) {
       if (std::find(known.begin(), known.end(), ch[k]) == known.end())
         return "unknown solver '" + ch[k] + "' in the chain of class '" + c + "'";
@@ -179,6 +180,15 @@ void sumCounts(const Attempt* a, int m, Result* r) {
   }
 }
 
+// The completion's solver of each family, in the order they are tried (portfolio.hpp).
+const std::array<std::pair<SolverFamily, std::string>, 3>& completionSolvers() {
+  static const std::array<std::pair<SolverFamily, std::string>, 3> c = {
+      {{SolverFamily::Newton, "smoothed_newton"},
+       {SolverFamily::Pivoting, "lemke"},
+       {SolverFamily::Iterative, "pgs"}}};
+  return c;
+}
+
 // One solver of an auto run: its name and registered instance (nullptr: unknown or not indexed).
 struct Step {
   const std::string* name = nullptr;
@@ -195,8 +205,14 @@ int route(const Portfolio& t, int provisional, int final_class, Step* out) {
   const auto* s1 = t.solversFor(final_class);
   int m = 0;
   if (!first.empty()) out[m++] = {&first[0], s0 ? (*s0)[0] : nullptr};
-  for (size_t k = 0; k < rest.size() && m < kAutoMaxTried; ++k)
+  for (size_t k = 0; k < rest.size() && m < kChainMax; ++k)
     if (m == 0 || rest[k] != *out[0].name) out[m++] = {&rest[k], s1 ? (*s1)[k] : nullptr};
+  const bool indexed = s0 && s1;
+  for (const auto& [family, name] : completionSolvers()) { // the families the chain lacks
+    bool has = false;
+    for (int k = 0; k < m; ++k) has = has || solverFamily(*out[k].name) == family;
+    if (!has && m < kAutoMaxTried) out[m++] = {&name, indexed ? registeredSolver(name) : nullptr};
+  }
   return m;
 }
 
@@ -285,6 +301,24 @@ Result runIndexed(const Problem& p, const Portfolio& t, const std::vector<const 
 // without that solver (route). A verified answer of the first solver is an answer whatever the test would say;
 // the class recorded in info is the final one. An indefinite matrix pays for one failed attempt where the
 // first solver fails on it (lcp_CPS_1, symmetric indefinite, when lcp-spd-small starts with bpp).
+SolverFamily solverFamily(const std::string& s) {
+  if (s == "lemke" || s == "keller" || s == "cottle_dantzig" || s == "murty" || s == "bpp")
+    return SolverFamily::Pivoting;
+  if (s == "fb_newton" || s == "smoothed_newton" || s == "petsc_ssls" || s == "petsc_rsls")
+    return SolverFamily::Newton;
+  if (s == "pgs" || s == "pgs_block") return SolverFamily::Iterative;
+  return SolverFamily::Other;
+}
+
+std::vector<std::string> completeFamilies(std::vector<std::string> chain) {
+  for (const auto& [family, name] : completionSolvers()) {
+    const bool has = std::any_of(chain.begin(), chain.end(),
+                                 [&, fam = family](const std::string& s) { return solverFamily(s) == fam; });
+    if (!has && chain.size() < static_cast<size_t>(kAutoMaxTried)) chain.push_back(name);
+  }
+  return chain;
+}
+
 Result solveAuto(const Problem& p, const AutoOptions& o, AutoInfo* info) {
   const double t0 = o.timed ? MPI_Wtime() : 0.0, c0 = o.timed ? threadCpuSeconds() : 0.0;
   const Portfolio& t = o.portfolio ? *o.portfolio : builtinPortfolio();

@@ -265,13 +265,14 @@ Result attemptOn(const Solver& s, const Problem& p, bool first, const ChainOptio
   return attempt(s, p, p, nullptr, first, o, tol, a);
 }
 
-// The chain with each "auto" replaced by the built-in portfolio's chain of p's class (portfolio.hpp), solvers
-// already named left out.
+// The chain with each "auto" replaced by the built-in portfolio's chain of p's class and its completion of the
+// solver families (portfolio.hpp), solvers already named left out.
 static std::vector<std::string> expandAuto(const Problem& p, const std::vector<std::string>& names) {
   std::vector<std::string> out;
   for (const std::string& n : names) {
     const std::vector<std::string> one{n};
-    for (const std::string& s : n == "auto" ? builtinPortfolio().chainFor(classify(p).class_index) : one)
+    for (const std::string& s :
+         n == "auto" ? completeFamilies(builtinPortfolio().chainFor(classify(p).class_index)) : one)
       if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
   }
   return out;

@@ -259,14 +259,56 @@ TEST(Portfolio, IterationCapOnTheFirstSolverFallsBack) {
   ASSERT_EQ(info.attempts.size(), 2u);
   EXPECT_EQ(info.attempts[0].status, Status::MaxIterations);
   EXPECT_EQ(info.solver, "bpp");
-  // Nobody solves it: every attempt recorded, never Solved, at most kAutoMaxTried tried.
+  // Nobody solves it (w = -z - 1 < 0 for every z >= 0): every attempt recorded, never Solved; the chain {pgs}
+  // and its completion, smoothed_newton and lemke, all tried.
   const Portfolio none{{"default"}, {{"pgs"}}};
   o.portfolio = &none;
   AutoInfo fail;
   const Result f = solveAuto(makeLcp(mat2(-1, 0, 0, -1), Vec::Constant(2, -1.0)), o, &fail);
   EXPECT_FALSE(f.ok());
   EXPECT_EQ(fail.solver, "");
-  EXPECT_EQ(fail.attempts.size(), 1u);
+  ASSERT_EQ(fail.attempts.size(), 3u);
+  EXPECT_EQ(fail.attempts[1].solver, "smoothed_newton");
+  EXPECT_EQ(fail.attempts[2].solver, "lemke");
+}
+
+// The completion of the families (portfolio.hpp): after a chain of one family, a member of each other family.
+TEST(Portfolio, ChainsEndWithEveryFamily) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(completeFamilies({"bpp", "lemke", "keller", "cottle_dantzig"}),
+            (V{"bpp", "lemke", "keller", "cottle_dantzig", "smoothed_newton", "pgs"}));
+  EXPECT_EQ(completeFamilies({"pgs", "fb_newton"}), (V{"pgs", "fb_newton", "lemke"}));
+  EXPECT_EQ(completeFamilies({"lemke", "smoothed_newton", "pgs_block"}),
+            (V{"lemke", "smoothed_newton", "pgs_block"}));
+  // every built-in chain, completed, has all three families within the bound
+  const Portfolio& t = builtinPortfolio();
+  for (const auto& chain : t.chains) {
+    const V c = completeFamilies(chain);
+    EXPECT_LE(c.size(), static_cast<size_t>(kAutoMaxTried));
+    for (SolverFamily f : {SolverFamily::Pivoting, SolverFamily::Newton, SolverFamily::Iterative})
+      EXPECT_TRUE(
+          std::any_of(c.begin(), c.end(), [&](const std::string& s) { return solverFamily(s) == f; }));
+  }
+}
+
+// A problem every solver of its class's chain gives up on, and the completion solves: PGS refuses lcp_CPS_2 (a
+// zero diagonal entry), smoothed_newton (the completion's Newton member) solves it; table indexed or not.
+TEST(Portfolio, CompletionSolvesWhatTheChainCannot) {
+  const Problem p = readSiconos(kSiconos + "/lcp_CPS_2.dat");
+  Portfolio t{{"default"}, {{"pgs"}}};
+  for (const bool indexed : {false, true}) {
+    if (indexed) t.indexRows();
+    AutoOptions o;
+    o.portfolio = &t;
+    AutoInfo info;
+    const Result r = solveAuto(p, o, &info);
+    ASSERT_TRUE(r.ok()) << describeAttempts(info.attempts);
+    EXPECT_EQ(info.chain, (std::vector<std::string>{"pgs", "smoothed_newton", "lemke"}));
+    ASSERT_EQ(info.attempts.size(), 2u);
+    EXPECT_EQ(info.attempts[0].status, Status::Unsupported);
+    EXPECT_EQ(info.solver, "smoothed_newton");
+    EXPECT_LE(naturalResidual(p, r.z, p.M * r.z + p.q), acceptanceTolerance(p));
+  }
 }
 
 // The deferred minors test (portfolio.cpp): a symmetric matrix with a positive diagonal, neither dd nor
@@ -300,7 +342,8 @@ TEST(Portfolio, DeferredMinorsTestRoutesAfterAFailedFirstSolver) {
       const Result r = solveAuto(p, o, &info);
       ASSERT_TRUE(r.ok()) << describeAttempts(info.attempts);
       EXPECT_EQ(info.features.name(), sym);
-      EXPECT_EQ(info.chain, (std::vector<std::string>{"lemke", "keller", "cottle_dantzig"}));
+      EXPECT_EQ(info.chain,
+                (std::vector<std::string>{"lemke", "keller", "cottle_dantzig", "smoothed_newton", "pgs"}));
       ASSERT_EQ(info.attempts.size(), 2u) << indexed;
       EXPECT_EQ(info.attempts[0].solver, "lemke");
       EXPECT_EQ(info.attempts[0].status, Status::MaxIterations);
