@@ -63,8 +63,9 @@ def plot_joint_error(paths, outdir=".", output=None):
     for p in paths:
         with h5py.File(p, "r") as f:
             t, e = f["/steps/time"][:], f["/joints/error"][:]
-            scene = f.attrs.get("scene", "")
-            label = f"{scene.decode() if isinstance(scene, bytes) else scene}: {p}"
+            name = [f.attrs.get(k, "") for k in ("scene", "contact_accuracy")]
+            name = [v.decode() if isinstance(v, bytes) else str(v) for v in name]
+            label = f"{' '.join(v for v in name if v)}: {p}"
         ax.semilogy(t, np.maximum(e, 1e-18), label=label)
     ax.set_xlabel("time (s)")
     ax.set_ylabel("largest joint error (m)")

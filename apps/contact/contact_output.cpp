@@ -18,6 +18,7 @@ PetscErrorCode writeContactOutput(const RunContext& ctx, const std::string& path
   PetscCall(out.writeAttribute("/", "friction", frictionName(step.friction)));
   PetscCall(out.writeAttribute("/", "lcp_solver", step.lcp_solver));
   PetscCall(out.writeAttribute("/", "contact_islands", step.islands ? "on" : "off"));
+  PetscCall(out.writeAttribute("/", "contact_accuracy", accuracyName(step.accuracy)));
   PetscCall(out.writeAttribute("/", "dt", step.dt));
   PetscCall(out.writeAttribute("/", "mu", step.mu));
   if (step.friction == FrictionModel::Auto)

@@ -104,6 +104,8 @@ err = w["/joints/error"][:].max()
 check(err <= 1e-9 and moved > 0.1, f"wrecking ball, fast: joint error {err:.2e} m <= 1e-9, a box moved {moved:.2f} m")
 same = all(np.array_equal(w[k][:], w2[k][:]) for k in ("/frames/positions", "/joints/force"))
 check(same, "wrecking ball, fast with islands: positions and joint forces bitwise identical at 1 and 2 ranks")
+acc = w.attrs["contact_accuracy"]
+check((acc.decode() if isinstance(acc, bytes) else acc) == "fast", "the output records contact_accuracy = fast")
 # the crate on the plank pinned at both ends: the pins' vertical forces against the statics of
 # inputs/contact/supported_plank.scene (measured relative errors: exact 1.1e-10, balanced 4.6e-10, fast 2.4e-7)
 RL, RR = 2 * G / 2 + G * 0.3, 2 * G / 2 + G * 0.7
