@@ -31,6 +31,9 @@ namespace {
 
 // The contact app on the time loop: fixed dt, one Stepper::step per step, frames every -output_every steps,
 // the problems of each step dumped on request, a failed step's problem dumped next to the output.
+// A step whose joint projection did not converge is retried at dt / 2, dt / 4 and dt / 8.
+constexpr int kJointRetries = 3;
+
 class ContactStepping : public suite::TimeStepped {
 public:
   ContactStepping(const suite::RunContext& ctx, const AppOptions& o, Model model)
@@ -99,14 +102,18 @@ PetscErrorCode ContactStepping::advance(PetscInt step, double t, double dt, suit
   const StepStats st = stepper_.step(&bodies_);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   PetscCall(dumpProblems(step + 1));
-  if (st.failed && o_.step.friction == FrictionModel::Auto && dt == o_.step.dt) {
-    out->status = suite::StepStatus::Retry; // -friction auto: the step once more at half dt
+  // -friction auto: an unsolved problem once more at half dt; joints: a projection that did not converge at
+  // half, a quarter and an eighth of dt (TimeLoop's retries, kJointRetries)
+  const bool retry = (o_.step.friction == FrictionModel::Auto && dt == o_.step.dt) ||
+                     (st.retry_smaller_dt && dt > o_.step.dt / (1 << kJointRetries) * 1.5);
+  if (st.failed && retry) {
+    out->status = suite::StepStatus::Retry;
     out->message = st.message;
     PetscFunctionReturn(0);
   }
   if (st.failed) {
-    StepStats f = st; // -friction auto: say that this was the retry
-    if (dt != o_.step.dt) f.message = "at half dt (" + std::to_string(dt) + " s) as well: " + f.message;
+    StepStats f = st; // a retry: say that this was one
+    if (dt != o_.step.dt) f.message = "at dt " + std::to_string(dt) + " s as well: " + f.message;
     PetscCall(failed(step + 1, f, out));
     PetscFunctionReturn(0);
   }
@@ -136,12 +143,12 @@ PetscErrorCode ContactStepping::dumpProblems(PetscInt step) {
 PetscErrorCode ContactStepping::failed(PetscInt step, const StepStats& st, suite::StepOutcome* out) {
   PetscFunctionBeginUser;
   const std::string stem = o_.output.empty() ? std::string("contact") : o_.output;
-  std::string dump = stem + ".failed_step" + std::to_string(step) + ".h5";
-  if (!stepper_.lastProblems().empty())
+  const std::string dump = stem + ".failed_step" + std::to_string(step) + ".h5";
+  std::string why = st.message;
+  if (!stepper_.lastProblems().empty()) {
     PetscCall(suite::lcp::writeProblemH5(ctx_.comm(), dump, stepper_.lastProblems().back()));
-  else
-    dump = "(no problem)";
-  const std::string why = st.message + "problem dumped to " + dump;
+    why += "problem dumped to " + dump;
+  }
   failure_ = "step " + std::to_string(step) + ": " + why;
   out->status = suite::StepStatus::Failed;
   out->message = why; // TimeLoop adds "(output up to step N in FILE)"
@@ -332,11 +339,13 @@ PetscErrorCode run(suite::RunContext& ctx) {
   PetscCall(PetscLogStagePop());
 
   PetscCall(PetscLogStagePush(stages.solve));
+  const bool joints = !model.joints.empty();
   ContactStepping app(ctx, o, std::move(model));
   suite::TimeLoopSettings set;
   set.app = "contact";
   set.max_steps = o.steps;
   set.max_retries = o.step.friction == FrictionModel::Auto ? 1 : 0; // an unsolved problem: once at half dt
+  if (joints) set.max_retries = std::max<PetscInt>(set.max_retries, kJointRetries);
   set.snapshot_every = o.output_every;
   set.eta_time = o.steps * o.step.dt;
   set.output = o.output.c_str();

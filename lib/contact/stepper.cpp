@@ -14,6 +14,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace suite::contact {
@@ -373,6 +374,16 @@ bool Stepper::finishJoints(std::vector<Body>* next, const JointSystem& js, StepS
   const std::vector<Body> drifted = *next;
   st->projection_iterations = projectPositions(joints_, o_.joint_tol, o_.joint_max_projections, next,
                                                &st->joint_error, &projection_factor_);
+  if (o_.joint_max_projections > 0 && !(st->joint_error <= StepperOptions::kJointFailure * o_.joint_tol)) {
+    st->failed = st->retry_smaller_dt = true;
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "the joints' position projection ended at max |Phi| = %.3g after %d Newton iterations "
+                  "(-joint_tol %g, -joint_max_projections %d)",
+                  st->joint_error, st->projection_iterations, o_.joint_tol, o_.joint_max_projections);
+    st->message = msg;
+    return false;
+  }
   if (st->shake_iterations < 0) // without SHAKE the velocities follow the projected poses (as SHAKE's would)
     for (size_t i = 0; i < next->size(); ++i) {
       Body& B = (*next)[i];

@@ -119,12 +119,14 @@ struct StepperOptions {
   // -friction auto (friction_auto.hpp): the cone violation each problem's model must meet.
   double target_error = 1e-3;
   // Joints (joint_system.hpp): the position projection ends at max |Phi| <= joint_tol (m; unit-vector dot
-  // products for the axis rows) or after joint_max_projections Newton iterations (then the step records its
-  // error and goes on); SHAKE takes at most as many. 30: the 200-link chain falling from horizontal at dt = 0.01
-  // (tip rotations of order 1 rad per step) needed up to 20 damped Newton iterations (measured), 10 left
-  // 1.3e-2 m.
+  // products for the axis rows) or after joint_max_projections Newton iterations; SHAKE takes at most as many.
+  // A projection that ends above kJointFailure joint_tol fails the step (StepStats::retry_smaller_dt: the app
+  // retries it at half dt, see docs/contact.md); 0 projections: none, the drift is recorded. 30: the 200-link
+  // chain falling from horizontal at dt = 0.01 (tip rotations of order 1 rad per step) needed up to 20 damped
+  // Newton iterations (measured), 10 left 1.3e-2 m.
   double joint_tol = 1e-11;
   int joint_max_projections = 30;
+  static constexpr double kJointFailure = 1e3;
 };
 
 // Runs tasks 0..n-1 (solve(k)) and returns every result at its index; "" or an error message. The default
@@ -185,7 +187,8 @@ struct StepStats {
   int projection_iterations = 0;
   double joint_velocity_error = 0.0;
   bool failed = false;
-  std::string message; // failure: which solver, status, why
+  bool retry_smaller_dt = false; // failed where a smaller step may succeed: the joints' position projection
+  std::string message;           // failure: which solver, status, why
 };
 
 class Stepper {
