@@ -2,8 +2,9 @@
 // LCP / box LCP per step (lib/contact on lib/lcp). After Lacoursiere, SIGRAD 2003 (box MLCPs, splitting).
 // The scene is replicated on every rank (identical deterministic computation); rank 0 writes the output.
 // With -contact_islands on, each step's independent islands are solved as separate problems dealt over the
-// ranks and gathered to every rank (lib/contact/islands.hpp, lib/core/task_dealer.hpp). Joints (exact mode) are
-// rows of the same step's MLCP, solved exactly and projected (lib/contact/joint_system.hpp).
+// ranks and gathered to every rank (lib/contact/islands.hpp, lib/core/task_dealer.hpp). Joints are rows of the
+// same step's MLCP, solved exactly in every accuracy mode and projected (lib/contact/joint_system.hpp); their
+// limits and motors are its unilateral and box rows (lib/contact/joint_actuation.hpp).
 //
 // Sample runs (tests/sample_runs.py executes each line):
 //   contact -scene incline -theta 30 -mu 0.3 -friction splitting -steps 100 -output incline.h5
@@ -17,6 +18,8 @@
 //   contact -scene chain -links 50 -dt 0.01 -steps 200 -output chain.h5
 //   contact -scene four_bar -crank_speed 40 -dt 0.001 -steps 500 -output four_bar.h5
 //   contact -scene rope_bridge -links 10 -bridge_boxes 3 -steps 200 -output bridge.h5
+//   contact -scene rope_bridge -bridge_boxes 3 -contact_accuracy fast -contact_islands on -steps 200 -output rb.h5
+//   contact -scene file -scene_file inputs/contact/supported_plank.scene -steps 100 -output plank.h5
 //   contact -scene mjcf -scene_file inputs/contact/chain25.xml -steps 100 -output mjcf.h5
 //   contact -scene motor_limit -motor_torque 0.2 -steps 200 -output lever.h5
 //   contact -scene double_pendulum -angle 40 -write_mjcf double_pendulum.xml
