@@ -14,6 +14,7 @@ constexpr double kJointCompliance = 1e-12; // relative, on S_ii (joint_system.hp
 // SHAKE's chord iteration is kept while each iterate at least halves max |Phi| (joint_system.hpp)
 constexpr double kShakeContraction = 0.5;
 constexpr double kMinNewtonStep = 1.0 / 1024; // the line search's last step
+constexpr double kMetricMassRatio = 10.0; // the projection's metric: mass ratios capped (joint_system.hpp)
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 V6 invMassTimes(const Body& B, const Mat3& inv_i, const V6& j) {
@@ -249,6 +250,23 @@ void JointSystem::correctDelassus(DelassusSystem* sys, const std::vector<int>* g
     for (size_t q = 0; q < cols.size(); ++q) sys->A(cols[p], cols[q]) -= C((Eigen::Index)p, (Eigen::Index)q);
 }
 
+namespace {
+// The projection's metric (joint_system.hpp): per body the factor on M^-1 that makes a jointed body heavier
+// than kMetricMassRatio times the lightest jointed body that heavy; empty when no body is.
+std::vector<double> metricScales(const std::vector<Body>& bodies, const std::vector<Joint>& joints) {
+  double lightest = kInfinity;
+  for (const Joint& j : joints)
+    for (int b : {j.a, j.b})
+      if (b >= 0 && !bodies[b].is_static) lightest = std::min(lightest, bodies[b].mass);
+  std::vector<double> f(bodies.size(), 1.0);
+  bool any = false;
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (!bodies[i].is_static && bodies[i].mass > kMetricMassRatio * lightest)
+      f[i] = bodies[i].mass / (kMetricMassRatio * lightest), any = true;
+  return any ? f : std::vector<double>();
+}
+} // namespace
+
 int projectPositions(const std::vector<Joint>& joints, double tol, int max_it, std::vector<Body>* bodies,
                      double* error, JointFactorization* cache) {
   std::vector<JRow> rows;
@@ -256,9 +274,17 @@ int projectPositions(const std::vector<Joint>& joints, double tol, int max_it, s
   std::vector<int> first;
   JointFactorization own;
   JointFactorization& ldlt = cache ? *cache : own;
+  const std::vector<double> lighten = metricScales(*bodies, joints);
+  std::vector<Body> metric; // the poses with the metric's masses (only when a body is lightened)
   int it = 0;
   for (;; ++it) {
-    jointJacobian(*bodies, worldInverseInertia(*bodies), joints, &rows, &phi, &first);
+    if (!lighten.empty()) {
+      metric = *bodies;
+      for (size_t i = 0; i < metric.size(); ++i)
+        metric[i].inv_mass *= lighten[i], metric[i].inv_inertia *= lighten[i];
+    }
+    const std::vector<Body>& m = lighten.empty() ? *bodies : metric;
+    jointJacobian(m, worldInverseInertia(m), joints, &rows, &phi, &first);
     *error = maxAbs(phi);
     if (*error <= tol || it == max_it || rows.empty()) return it;
     if (!ldlt.factorize(jointMatrix(rows, (int)bodies->size()))) return it;

@@ -22,7 +22,12 @@
 // Position level (post-stabilisation, Cline & Pai, "Post-stabilization for rigid body simulation with contact
 // and constraints", ICRA 2003): after the positions are integrated, Newton's method on Phi(q) = 0 with the
 // minimum kinetic-metric step dq = -M^-1 G(q)^T S(q)^-1 Phi(q), refactorised at each iterate (quadratic
-// convergence: G is the exact Jacobian of Phi), until max |Phi| <= tol. A velocity-level step alone drifts by
+// convergence: G is the exact Jacobian of Phi), until max |Phi| <= tol. The metric M is the bodies' masses and
+// inertias, except that a jointed body heavier than 10 times the lightest jointed body counts as 10 times that
+// body's mass (its inertia scaled alike): with the true ratio, 1e4 on a chain with a heavy end load falling from horizontal, the
+// minimum kinetic-metric step moves only the light links, by large rotations, and the damped iteration stalled
+// at max |Phi| ~ 1e-6 (measured; with the cap 4 iterations per step on average, 7 at most). Equal masses, and
+// ratios up to 10, keep the kinetic metric. A velocity-level step alone drifts by
 // O(dt^2 |v|^2 / L) per step; after the projection the drift is the tolerance (1e-11 by default, in m for the
 // point rows and as a dot product of unit vectors for the axis rows).
 #pragma once
