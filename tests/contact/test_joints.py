@@ -12,10 +12,10 @@
 - the rope bridge (10 planks, 3 boxes dropped on it; contacts on jointed bodies through the joint block's Schur
   complement): the joint error bound, and the boxes end resting on the planks (measured: 16 contacts);
 - the wrecking ball (5 links and a sphere of 20 link masses into a pyramid of base 3, 60 steps): the joint error
-  bound while it scatters the boxes (measured: a box moved 0.5 m by step 60); with -contact_islands on, the
-  chain is in the island of the ball's contacts (12 bodies), the positions match islands off to 1e-8 m (each
-  problem is accepted at the LCP tolerance 1e-8, as in test_islands.py; measured 1.3e-10: the renumbered
-  problems round differently and the scattering boxes amplify it) and 1 and 2 ranks are bitwise identical;
+  bound while it scatters the boxes (measured: a box moved 0.5 m by step 60);
+- the rope bridge with -contact_islands on: the planks are in the island of the boxes' contacts (13 bodies), the
+  positions match islands off to 1e-8 m (each problem is accepted at the LCP tolerance 1e-8, as in
+  test_islands.py; measured 0) and 1 and 2 ranks are bitwise identical;
 - the MJCF model inputs/contact/chain25.xml: its time step (0.01) and gravity are the run's (/steps/time), and the
   joint error bound holds;
 - balanced and fast: the wrecking ball with islands in fast mode (the joint bound, the boxes scattered, 1 and 2
@@ -106,15 +106,17 @@ x0, x = f["/frames/positions"][0], f["/frames/positions"][-1]
 moved = np.linalg.norm(x[7:] - x0[7:], axis=1).max()  # bodies 0-5: links and ball, 6: ground, 7-12: the boxes
 check(err <= 1e-9 and moved > 0.1, f"wrecking ball (5 links, 20-link-mass ball into a pyramid of 3): joint error "
       f"{err:.2e} m <= 1e-9, a box moved {moved:.2f} m (> 0.1)")
-a = run("wreck_islands", *WRECK, "-contact_islands", "on")
-b = run("wreck_islands_np2", *WRECK, "-contact_islands", "on", np_=2)
+BRIDGE = ["-scene", "rope_bridge", "-links", 10, "-bridge_boxes", 3, "-dt", 0.01, "-steps", 100]
+off = run("bridge_off", *BRIDGE)
+a = run("bridge_islands", *BRIDGE, "-contact_islands", "on")
+b = run("bridge_islands_np2", *BRIDGE, "-contact_islands", "on", np_=2)
 big = a["/steps/largest_island_bodies"][:].max()
-check(big == 12, f"wrecking ball, islands: the chain joins the island of the ball's contacts (largest island {big} "
-      "bodies = 5 links + ball + 6 boxes)")
-dx = np.abs(a["/frames/positions"][:] - f["/frames/positions"][:]).max()
-check(dx <= 1e-8, f"wrecking ball: islands on vs off, positions to {dx:.1e} m (<= 1e-8, the LCP tolerance's scale)")
+check(big == 13, f"rope bridge, islands: the planks join the island of the boxes' contacts (largest island {big} "
+      "bodies = 10 planks + 3 boxes)")
+dx = np.abs(a["/frames/positions"][:] - off["/frames/positions"][:]).max()
+check(dx <= 1e-8, f"rope bridge: islands on vs off, positions to {dx:.1e} m (<= 1e-8, the LCP tolerance's scale)")
 same = all(np.array_equal(a[k][:], b[k][:]) for k in ("/frames/positions", "/frames/orientations", "/joints/force"))
-check(same, "wrecking ball, islands on: positions, orientations and joint forces bitwise identical at 1 and 2 ranks")
+check(same, "rope bridge, islands on: positions, orientations and joint forces bitwise identical at 1 and 2 ranks")
 # balanced / fast: the joint block solved exactly inside the block PGS (contact_accuracy.hpp)
 w = run("wreck_fast", *WRECK, "-contact_accuracy", "fast", "-contact_islands", "on")
 w2 = run("wreck_fast_np2", *WRECK, "-contact_accuracy", "fast", "-contact_islands", "on", np_=2)
