@@ -25,24 +25,31 @@ std::vector<std::vector<int>> rowsAtBodies(const std::vector<JRow>& rows, int nb
 }
 } // namespace
 
-SpMat sparseDelassus(const std::vector<JRow>& rows, int nbodies, const std::vector<double>& diag_scale) {
+std::vector<Eigen::Triplet<double>> delassusTriplets(const std::vector<JRow>& rows, int nbodies,
+                                                     const std::vector<double>& diag_scale, bool lower) {
   const int n = (int)rows.size();
   const std::vector<std::vector<int>> at = rowsAtBodies(rows, nbodies);
   std::vector<int> mark(n, -1), cols; // mark[q] == r: q already a column of row r
-  SpMat A(n, n);
   std::vector<Eigen::Triplet<double>> t;
   for (int r = 0; r < n; ++r) {
     cols.clear();
     for (int b : {rows[r].ba, rows[r].bb})
       if (b >= 0)
         for (int q : at[b])
-          if (mark[q] != r) mark[q] = r, cols.push_back(q);
+          if (mark[q] != r && (!lower || q >= r)) mark[q] = r, cols.push_back(q);
     for (int q : cols) {
-      double v = rowCoupling(rows[r], rows[q]);
+      const int i = lower ? q : r, j = lower ? r : q; // lower: the entry (q, r), q >= r
+      double v = rowCoupling(rows[i], rows[j]);
       if (q == r) v *= 1.0 + diag_scale[r];
-      t.emplace_back(r, q, v);
+      t.emplace_back(i, j, v);
     }
   }
+  return t;
+}
+
+SpMat sparseDelassus(const std::vector<JRow>& rows, int nbodies, const std::vector<double>& diag_scale) {
+  const std::vector<Eigen::Triplet<double>> t = delassusTriplets(rows, nbodies, diag_scale, false);
+  SpMat A((Eigen::Index)rows.size(), (Eigen::Index)rows.size());
   A.setFromTriplets(t.begin(), t.end());
   return A;
 }

@@ -18,6 +18,9 @@ using V6s = std::vector<V6>;
 // A = J M^-1 J^T of the rows, then A_ii *= 1 + diag_scale[i] (the compliance of delassus.hpp). nbodies: the
 // number of bodies (the body indices of the rows are below it).
 SpMat sparseDelassus(const std::vector<JRow>& rows, int nbodies, const std::vector<double>& diag_scale);
+// Its entries as triplets; lower: the lower triangle only (what a symmetric LDL^T reads).
+std::vector<Eigen::Triplet<double>> delassusTriplets(const std::vector<JRow>& rows, int nbodies,
+                                                     const std::vector<double>& diag_scale, bool lower);
 
 // A_rq = (J M^-1 J^T)_rq of two rows: the contributions of the bodies they share (no compliance).
 double rowCoupling(const JRow& R, const JRow& Q);

@@ -33,24 +33,9 @@ std::vector<Mat3> worldInverseInertia(const std::vector<Body>& bodies) {
 
 // The lower triangle of S = G M^-1 G^T (+ the compliance), column-major: what the LDL^T reads (Lower).
 Eigen::SparseMatrix<double> jointMatrix(const std::vector<JRow>& rows, int nbodies) {
-  const int n = (int)rows.size();
-  std::vector<std::vector<int>> at(nbodies); // the rows at each body
-  for (int r = 0; r < n; ++r) {
-    if (rows[r].ba >= 0) at[rows[r].ba].push_back(r);
-    if (rows[r].bb >= 0 && rows[r].bb != rows[r].ba) at[rows[r].bb].push_back(r);
-  }
-  std::vector<int> mark(n, -1); // mark[q] == r: (q, r) already set
-  std::vector<Eigen::Triplet<double>> t;
-  for (int r = 0; r < n; ++r)
-    for (int b : {rows[r].ba, rows[r].bb})
-      if (b >= 0)
-        for (int q : at[b])
-          if (q >= r && mark[q] != r) {
-            mark[q] = r;
-            const double v = rowCoupling(rows[q], rows[r]);
-            t.emplace_back(q, r, q == r ? v * (1.0 + kJointCompliance) : v);
-          }
-  Eigen::SparseMatrix<double> S(n, n);
+  const std::vector<double> scale(rows.size(), kJointCompliance);
+  const auto t = delassusTriplets(rows, nbodies, scale, true);
+  Eigen::SparseMatrix<double> S((Eigen::Index)rows.size(), (Eigen::Index)rows.size());
   S.setFromTriplets(t.begin(), t.end());
   return S;
 }
