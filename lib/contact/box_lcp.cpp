@@ -132,7 +132,7 @@ bool densePass(const DelassusSystem& sys, double mu, const std::vector<std::stri
   lcp::Vec warm, z;
   const lcp::Problem p = sys.sparse ? activeProblem(denseDelassus(sys), sys, mu, s, &active, &warm)
                                     : activeProblem(sys.A, sys, mu, s, &active, &warm);
-  if (!solver.solve(p, chain, nullptr, &warm, &z)) return false;
+  if (!solver.solve(p, chain, nullptr, &warm, &z, ChainSolve::Units::Impulses)) return false;
   st->rows = (int)active.size();
   *next = lcp::Vec::Zero(s.nc * s.per);
   for (size_t r = 0; r < active.size(); ++r) (*next)[active[r]] = z[r];

@@ -6,15 +6,47 @@
 #include "lcp/solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace suite::contact {
 
+namespace {
+// The power of two nearest 1 / max_i M_ii (1 when the diagonal is not positive): an impulse scale of p.
+double impulseScale(const lcp::Problem& p) {
+  const double d = p.size() > 0 ? p.M.diagonal().maxCoeff() : 0.0;
+  if (!(d > 0) || !std::isfinite(d)) return 1.0;
+  return std::exp2(std::round(-std::log2(d)));
+}
+
+// p with z = s z': M' = s M, the same q, bounds / s.
+lcp::Problem inVelocityUnits(const lcp::Problem& p, double s) {
+  lcp::Problem q = p;
+  q.M *= s;
+  q.l /= s;
+  q.u /= s;
+  return q;
+}
+} // namespace
+
 bool ChainSolve::solve(const lcp::Problem& p, const std::vector<std::string>& chain, const lcp::Vec* scale,
-                       const lcp::Vec* warm, lcp::Vec* z) {
+                       const lcp::Vec* warm, lcp::Vec* z, Units units) {
   if (keep_all_ || problems_->empty())
     problems_->push_back(p);
   else
     problems_->back() = p; // always keep the last one (dumped on failure)
+  const double s = units == Units::Impulses ? impulseScale(p) : 1.0;
+  if (s != 1.0) {
+    const lcp::Vec warm_s = warm ? lcp::Vec(*warm / s) : lcp::Vec();
+    if (!solveAsGiven(inVelocityUnits(p, s), chain, scale, warm ? &warm_s : nullptr, z)) return false;
+    *z *= s;
+    *solution_ = *z;
+    return true;
+  }
+  return solveAsGiven(p, chain, scale, warm, z);
+}
+
+bool ChainSolve::solveAsGiven(const lcp::Problem& p, const std::vector<std::string>& chain,
+                              const lcp::Vec* scale, const lcp::Vec* warm, lcp::Vec* z) {
   lcp::ChainOptions co;
   co.rel_tol = o_.lcp_tol;
   co.first_max_iterations = o_.lcp_max_iterations; // the cap is for the primary solver only

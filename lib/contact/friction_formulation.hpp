@@ -38,12 +38,20 @@ public:
   ChainSolve(const StepperOptions& o, bool keep_all, std::vector<lcp::Problem>* problems, lcp::Vec* solution,
              StepStats* st)
       : o_(o), keep_all_(keep_all), problems_(problems), solution_(solution), st_(st) {}
+  // The units of p's unknowns: impulses against velocity rows (the box LCPs), or a mix (the polyhedral LCP).
+  enum class Units { Impulses, Mixed };
   // false: no solver's answer was accepted (st->failed, st->message say which and why).
+  // Units::Impulses: the chain solves p in velocity units, z = s z' with s the power of two nearest
+  // 1 / max_i M_ii (the impulse that moves the stiffest row by 1 m/s): the solvers' stop rules and the
+  // acceptance min(z', M' z' + q) then do not depend on the scene's mass scale (every mass x 2^k: the same
+  // iterations and answers bitwise; x 1000: to round-off). The dump keeps p as given.
   bool solve(const lcp::Problem& p, const std::vector<std::string>& chain, const lcp::Vec* scale,
-             const lcp::Vec* warm, lcp::Vec* z);
+             const lcp::Vec* warm, lcp::Vec* z, Units units = Units::Mixed);
   const StepperOptions& options() const { return o_; }
 
 private:
+  bool solveAsGiven(const lcp::Problem& p, const std::vector<std::string>& chain, const lcp::Vec* scale,
+                    const lcp::Vec* warm, lcp::Vec* z);
   const StepperOptions& o_;
   bool keep_all_;
   std::vector<lcp::Problem>* problems_;
