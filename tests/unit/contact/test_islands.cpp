@@ -166,7 +166,8 @@ TEST(ContactIslands, FailedIslandIsNamed) {
   o.islands = true;
   o.lcp_solver = "pgs";
   o.lcp_max_iterations = 1;
-  o.lcp_tol = 1e-30; // below round-off: no answer is accepted (one sweep and its active-set refinement solve it)
+  // below round-off: no answer is accepted (one sweep and its active-set refinement solve the problem)
+  o.lcp_tol = 1e-30;
   o.fallback_solvers = {};
   o.dense_max_rows = 1 << 20;
   Stepper st(o);
