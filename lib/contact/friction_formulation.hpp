@@ -44,7 +44,8 @@ public:
   // Units::Impulses: the chain solves p in velocity units, z = s z' with s the power of two nearest
   // 1 / max_i M_ii (the impulse that moves the stiffest row by 1 m/s): the solvers' stop rules and the
   // acceptance min(z', M' z' + q) then do not depend on the scene's mass scale (every mass x 2^k: the same
-  // iterations and answers bitwise; x 1000: to round-off). The dump keeps p as given.
+  // iterations and answers bitwise; another factor: the same to round-off until round-off tips a pivoting
+  // decision). The dump keeps p as given.
   bool solve(const lcp::Problem& p, const std::vector<std::string>& chain, const lcp::Vec* scale,
              const lcp::Vec* warm, lcp::Vec* z, Units units = Units::Mixed);
   const StepperOptions& options() const { return o_; }
