@@ -79,9 +79,21 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
       &opt_.plex_rank_cap));
   PetscCall(
       o("-dirichlet", "Clamped plane, e.g. x=0 (all DOFs of its nodes fixed), or none", &opt_.dirichlet));
+  PetscCall(
+      o("-bc_fixed",
+        "-backend plex: groups (Gmsh physical group names or tags, comma-separated) whose displacements "
+        "are zero; replaces the -dirichlet clamp",
+        &opt_.bc_fixed));
+  PetscCall(o("-traction",
+              "-backend plex: dead traction (force per area) on surface groups, G:tx,ty,tz (several: "
+              "separated by ';')",
+              &opt_.traction));
   PetscCall(o("-static", "Static solve K u = f (StVK: load stepping + Newton)", &opt_.is_static));
   PetscCall(
-      o("-tip_load", "Total force P (-y) on the end face x = max as a uniform traction", &opt_.tip_load));
+      o("-tip_load",
+        "Total force P (-y) on the end face x = max as a uniform traction (-backend plex: on the group tip "
+        "when the mesh has one)",
+        &opt_.tip_load));
   PetscCall(suite::optionsRealArray(PetscOptionsObject, "-gravity",
                                     "Gravity gx,gy,gz (body force density * g)", "", opt_.gravity, &ngrav,
                                     nullptr));
@@ -176,6 +188,9 @@ PetscErrorCode FemdynRun::checkOptions() const {
              "-plex_rank_cap %d: must be >= 0 (0: no cap)", (int)opt_.plex_rank_cap);
   PetscCheck(opt_.plex_rank_cap == 0 || opt_.backend == "plex", comm, PETSC_ERR_ARG_INCOMP,
              "-plex_rank_cap applies to -backend plex only (the backend is %s)", opt_.backend.c_str());
+  PetscCheck((opt_.bc_fixed.empty() && opt_.traction.empty()) || opt_.backend == "plex", comm,
+             PETSC_ERR_ARG_INCOMP, "-bc_fixed and -traction apply to -backend plex only (the backend is %s)",
+             opt_.backend.c_str());
   const auto& nm = opt_.newmark;
   PetscCheck(nm.refresh_contraction > 0 && nm.refresh_contraction < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-lagged_refresh_contraction %g: must be in (0, 1)", nm.refresh_contraction);

@@ -6,6 +6,7 @@
 #include "core/log.hpp"
 #include "fem/material.hpp"
 #include "fem/plex_beam.hpp"
+#include "fem/plex_mesh_file.hpp"
 #include "core/run_summary.hpp"
 #include "io/h5_output.hpp"
 #include "io/xdmf.hpp"
@@ -20,8 +21,7 @@ namespace {
 
 // Options of the replicated path that -backend plex does not implement (yet): given explicitly, an error.
 PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
-  static const char* names[] = {"-mesh_file",
-                                "-order",
+  static const char* names[] = {"-order",
                                 "-material_auto_law",
                                 "-target_error",
                                 "-target_switch_up",
@@ -57,10 +57,9 @@ PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
     PetscCall(PetscOptionsHasName(nullptr, nullptr, n, &set));
     PetscCheck(!set, comm, PETSC_ERR_SUP, "%s is not available with -backend plex (the distributed path)", n);
   }
-  PetscCheck(o.mesh == "beam", comm, PETSC_ERR_SUP, "-backend plex generates the beam only (-mesh beam)");
+  PetscCheck(o.mesh == "beam" || o.mesh == "file", comm, PETSC_ERR_SUP,
+             "-backend plex: -mesh %s is not available (beam or file)", o.mesh.c_str());
   PetscCheck(o.material != "auto", comm, PETSC_ERR_SUP, "-backend plex has no -material auto (yet)");
-  PetscCheck(o.dirichlet == "x=0", comm, PETSC_ERR_SUP,
-             "-backend plex clamps the plane x=0 only (-dirichlet %s)", o.dirichlet.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -81,6 +80,23 @@ PetscErrorCode PlexRun::checkLocalDofs() const {
   PetscFunctionReturn(0);
 }
 
+// The generated beam or the mesh file, distributed, with the natural node of each local vertex.
+PetscErrorCode PlexRun::createMesh(std::vector<PetscInt>* vertex_node, long long* nodes) {
+  PetscFunctionBeginUser;
+  if (o_.mesh == "beam") {
+    const auto& c = o_.beam.cells;
+    PetscCall(createPlexBeam(ctx_.comm(), o_.beam, o_.plex_rank_cap, &dm_));
+    PetscCall(beamVertexNodes(dm_, o_.beam, vertex_node));
+    *nodes = (long long)(c[0] + 1) * (c[1] + 1) * (c[2] + 1);
+  } else {
+    PlexFileMesh m;
+    PetscCall(createPlexFromFile(ctx_.comm(), o_.mesh_file, o_.plex_rank_cap, &m));
+    dm_ = m.dm, *nodes = m.nodes;
+    vertex_node->swap(m.vertex_node);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PlexRun::setup() {
   MPI_Comm comm = ctx_.comm();
   Lame lame;
@@ -90,14 +106,17 @@ PetscErrorCode PlexRun::setup() {
   PetscCall(refuseUnsupported(comm, o_));
   if (!o_.output.empty()) PetscCall(suite::checkOutputWritable(comm, o_.output, "output"));
   PetscCall(lameFromYoung(comm, o_.young, o_.poisson, &lame));
-  PetscCall(createPlexBeam(comm, o_.beam, o_.plex_rank_cap, &dm_));
+  std::vector<PetscInt> vertex_node;
+  long long nodes = 0;
+  PetscCall(createMesh(&vertex_node, &nodes));
+  PetscCall(plexSupportsAndLoads(dm_, o_, &groups_));
   PlexElasticParams p;
-  p.law = o_.material, p.lame = lame, p.rho = o_.density;
+  p.law = o_.material, p.lame = lame, p.rho = o_.density, p.fixed = groups_.fixed;
   std::copy(o_.gravity, o_.gravity + 3, p.gravity);
   const auto& n = o_.newmark;
-  PetscCall(nm_.setup(dm_, p, o_.tip_load, n.beta, n.gamma, n.newton_rtol, n.newton_atol, n.newton_max_it));
+  PetscCall(nm_.setup(dm_, p, groups_.loads, n.beta, n.gamma, n.newton_rtol, n.newton_atol, n.newton_max_it));
   PetscCall(ctx_.checkUnusedOptions()); // after SNESSetFromOptions: -snes_*, -ksp_*, -pc_* are used now
-  PetscCall(nat_.setup(dm_, o_.beam));
+  PetscCall(nat_.setup(dm_, nodes, vertex_node));
   PetscCall(plexGlobalSizes(dm_, &nv_, &nc_));
   PetscCall(DMGetGlobalVector(dm_, &g));
   PetscCall(VecGetSize(g, &ndof_));
@@ -110,9 +129,10 @@ PetscErrorCode PlexRun::setup() {
   }
   setup_s_ = suite::wallSeconds() - t0;
   PetscCall(suite::logInfo(comm, ctx_.quiet(),
-                           "femdyn plex: %lld nodes, %lld P1 tets, %d free DOFs on %d ranks (distributed "
+                           "femdyn plex: %s, %lld nodes, %lld P1 tets, %d free DOFs on %d ranks (distributed "
                            "DMPlex), material %s, setup %.3f s",
-                           nv_, nc_, (int)ndof_, ctx_.size(), o_.material.c_str(), setup_s_));
+                           o_.mesh == "beam" ? "generated beam" : o_.mesh_file.c_str(), nv_, nc_, (int)ndof_,
+                           ctx_.size(), o_.material.c_str(), setup_s_));
   PetscFunctionReturn(0);
 }
 
@@ -132,7 +152,6 @@ PetscErrorCode PlexRun::afterStep(long long step, bool* stop) {
 }
 
 PetscErrorCode PlexRun::timeSteps() {
-  const double L = o_.beam.length;
   PetscFunctionBeginUser;
   if (!restarted_) PetscCall(nm_.initialize());
   for (long long s = (long long)steps_.size(); s < o_.steps; ++s) {
@@ -140,7 +159,7 @@ PetscErrorCode PlexRun::timeSteps() {
     PlexStepStats st;
     PetscCall(nm_.step(o_.dt, &st));
     double tip, kinetic, strain;
-    PetscCall(nm_.planeMean(L, 1, -1.0, &tip));
+    PetscCall(nm_.groupMean(groups_.tip, 1, -1.0, &tip));
     PetscCall(nm_.energies(&kinetic, &strain));
     steps_.push_back({nm_.time(), tip, suite::wallSeconds() - w0, suite::processCpuSeconds() - c0, kinetic,
                       strain, (long long)st.newton_iterations, (long long)st.linear_iterations});
@@ -159,10 +178,10 @@ PetscErrorCode PlexRun::solve() {
   else
     PetscCall(timeSteps());
   solve_s_ = suite::wallSeconds() - t0;
-  PetscCall(nm_.planeMean(o_.beam.length, 1, -1.0, &tip_));
-  PetscCall(nm_.planeMean(o_.beam.length, 0, 1.0, &tip_ux_));
+  PetscCall(nm_.groupMean(groups_.tip, 1, -1.0, &tip_));
+  PetscCall(nm_.groupMean(groups_.tip, 0, 1.0, &tip_ux_));
   PetscCall(suite::logInfo(ctx_.comm(), ctx_.quiet(),
-                           "femdyn plex: tip_deflection %.10g (mean -u_y on the end face), tip u_x %.6g, %s "
+                           "femdyn plex: tip_deflection %.10g (mean -u_y on the group tip), tip u_x %.6g, %s "
                            "%.3f s",
                            tip_, tip_ux_, o_.is_static ? "static solve" : "time steps", solve_s_));
   PetscCall(write());

@@ -1,7 +1,9 @@
-// femdyn -backend plex: the distributed run (femdyn_plex.cpp) and its HDF5 files (femdyn_plex_io.cpp).
-// The beam as a distributed DMPlex (fem/plex_beam.hpp), P1 linear or StVK elastodynamics with PetscFE
-// (fem/plex_elasticity.hpp), Newmark + SNES on distributed Vecs (fem/plex_newmark.hpp). No rank holds a
-// global-size array: the mesh is generated in slabs and repartitioned, the state and the loads are distributed,
+// femdyn -backend plex: the distributed run (femdyn_plex.cpp), its supports and loads by group
+// (femdyn_plex_groups.cpp) and its HDF5 files (femdyn_plex_io.cpp). The mesh as a distributed DMPlex: the
+// generated beam (fem/plex_beam.hpp) or a Gmsh file (fem/plex_mesh_file.hpp); P1 linear, StVK or corotational
+// elastodynamics (fem/plex_elasticity.hpp), Newmark + SNES on distributed Vecs (fem/plex_newmark.hpp). No rank
+// holds a global-size array after the distribution: the beam is generated in slabs and repartitioned (a file
+// is read on rank 0, then distributed), the state and the loads are distributed,
 // the tip mean is reduced, and output and checkpoints are written collectively in the natural node numbering
 // (fem/plex_natural.hpp: the replicated path's numbering, each rank a block of rows), so that a checkpoint
 // written at P ranks restarts at Q. Options this path does not have are refused by name.
@@ -19,6 +21,14 @@ class H5Input;
 
 namespace femdyn_app {
 
+// The supports, the surface loads and the group whose mean -u_y is the reported tip deflection.
+struct PlexModelGroups {
+  std::vector<suite::fem::PlexGroup> fixed;
+  std::vector<suite::fem::PlexSurfaceLoad> loads;
+  suite::fem::PlexGroup tip;
+};
+PetscErrorCode plexSupportsAndLoads(DM dm, const Options& o, PlexModelGroups* m);
+
 struct PlexStep {
   double time, tip, wall, cpu, kinetic, strain;
   long long newton, linear;
@@ -35,6 +45,7 @@ public:
 
 private:
   PetscErrorCode checkLocalDofs() const;
+  PetscErrorCode createMesh(std::vector<PetscInt>* vertex_node, long long* nodes);
   PetscErrorCode timeSteps();
   PetscErrorCode afterStep(long long step, bool* stop);
   // femdyn_plex_io.cpp
@@ -54,6 +65,7 @@ private:
   DM dm_ = nullptr;
   suite::fem::PlexNewmark nm_;
   suite::fem::PlexNaturalOrder nat_;
+  PlexModelGroups groups_;
   long long nv_ = 0, nc_ = 0;
   PetscInt ndof_ = 0;
   std::vector<PlexStep> steps_; // accepted steps so far (a restart's history first)

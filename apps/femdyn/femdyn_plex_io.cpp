@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace femdyn_app {
 
@@ -39,6 +40,14 @@ struct ModelAttr {
   double value;
 };
 
+// The model's text attributes: the mesh (beam or the file's path) and the supports and loads by group.
+std::vector<std::pair<const char*, std::string>> modelStrings(const Options& o) {
+  return {{"mesh", o.mesh == "beam" ? std::string("beam") : o.mesh_file},
+          {"dirichlet", o.dirichlet},
+          {"bc_fixed", o.bc_fixed},
+          {"traction", o.traction}};
+}
+
 std::vector<ModelAttr> modelAttributes(const Options& o) {
   return {{"beam_length", o.beam.length},   {"beam_size_y", o.beam.size[0]},
           {"beam_size_z", o.beam.size[1]},  {"young", o.young},
@@ -61,6 +70,7 @@ PetscErrorCode PlexRun::writeRunAttributes(suite::H5Output& out) const {
   PetscCall(out.writeAttribute("/", "backend", "plex"));
   PetscCall(out.writeAttribute("/", "material", o_.material));
   PetscCall(out.writeAttribute("/", "beam_cells", beamCells(o_)));
+  for (const auto& a : modelStrings(o_)) PetscCall(out.writeAttribute("/", a.first, a.second));
   for (const auto& a : modelAttributes(o_)) PetscCall(out.writeAttribute("/", a.name, a.value));
   PetscCall(out.writeAttribute("/", "nodes", nv_));
   PetscCall(out.writeAttribute("/", "elements", nc_));
@@ -125,33 +135,21 @@ PetscErrorCode PlexRun::writeNatural(suite::H5Output& out, const char* dataset, 
 // /partition.
 PetscErrorCode PlexRun::writeMesh(suite::H5Output& out) const {
   PetscInt c0, c1, p0, p1, v0, v1;
-  Vec coords;
-  PetscSection cs;
-  const PetscScalar* cx;
   MPI_Comm comm = ctx_.comm();
   PetscFunctionBeginUser;
-  std::vector<double> xyz(3 * nat_.rows());
-  for (long long r = 0; r < nat_.rows(); ++r) nat_.coordinates(nat_.row0() + r, &xyz[3 * r]);
+  std::vector<double> xyz;
+  PetscCall(nat_.coordinates(&xyz));
   PetscCall(DMPlexGetHeightStratum(dm_, 0, &c0, &c1));
   PetscCall(DMPlexGetChart(dm_, &p0, &p1));
   PetscCall(DMPlexGetDepthStratum(dm_, 0, &v0, &v1));
-  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMGetCoordinateSection(dm_, &cs));
-  PetscCall(VecGetArrayRead(coords, &cx));
   std::vector<int> tets; // int: the XDMF sidecar's Int items and the replicated path's /mesh/tets
   for (PetscInt c = c0; c < c1; ++c) {
     PetscInt n = 0, *pts = nullptr;
     PetscCall(DMPlexGetTransitiveClosure(dm_, c, PETSC_TRUE, &n, &pts));
-    for (PetscInt i = 0; i < 2 * n; i += 2) {
-      PetscInt off;
-      if (pts[i] < v0 || pts[i] >= v1) continue; // not a vertex
-      PetscCall(PetscSectionGetOffset(cs, pts[i], &off));
-      const PetscReal x[3] = {PetscRealPart(cx[off]), PetscRealPart(cx[off + 1]), PetscRealPart(cx[off + 2])};
-      tets.push_back((int)nat_.node(x));
-    }
+    for (PetscInt i = 0; i < 2 * n; i += 2)
+      if (pts[i] >= v0 && pts[i] < v1) tets.push_back((int)nat_.vertexNode(pts[i]));
     PetscCall(DMPlexRestoreTransitiveClosure(dm_, c, PETSC_TRUE, &n, &pts));
   }
-  PetscCall(VecRestoreArrayRead(coords, &cx));
   ull ncl = (ull)(c1 - c0), cstart = 0;
   PetscCallMPI(MPI_Exscan(&ncl, &cstart, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm));
   if (ctx_.rank() == 0) cstart = 0;
@@ -265,6 +263,11 @@ PetscErrorCode PlexRun::readCheckpoint(const std::string& path) {
   PetscCall(in.readAttribute("/", "beam_cells", &s));
   PetscCheck(s == beamCells(o_), comm, PETSC_ERR_FILE_UNEXPECTED, "restart %s: -beam_cells %s, this run %s",
              path.c_str(), s.c_str(), beamCells(o_).c_str());
+  for (const auto& a : modelStrings(o_)) {
+    PetscCall(in.readAttribute("/", a.first, &s));
+    PetscCheck(s == a.second, comm, PETSC_ERR_FILE_UNEXPECTED, "restart %s: %s %s, this run %s", path.c_str(),
+               a.first, s.c_str(), a.second.c_str());
+  }
   for (const auto& a : modelAttributes(o_)) {
     double v;
     PetscCall(in.readAttribute("/", a.name, &v));

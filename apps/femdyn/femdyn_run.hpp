@@ -30,6 +30,9 @@ struct Options {
   std::string mesh = "beam", mesh_file, material = "linear", ordering = "rcm", solver = "cholmod",
               mass = "consistent", dirichlet = "x=0", jacobian = "tangent", output, time_scheme = "newmark",
               predictor = "constant", backend = "replicated";
+  // -backend plex: supports and loads by group (a Gmsh physical group's name or tag; femdyn_plex_groups.cpp)
+  std::string bc_fixed; // G1,G2,...: every displacement component zero
+  std::string traction; // G:tx,ty,tz[;G2:...]: dead traction per area
   double rho_inf = 1, young = 1000, poisson = 0.3, density = 1, dt = 0.01, tip_load = 0,
          gravity[3] = {0, 0, 0};
   suite::fem::BeamSpec beam; // -beam_length, -beam_size, -beam_cells

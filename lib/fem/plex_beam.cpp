@@ -1,6 +1,8 @@
 // The beam as a distributed DMPlex (see plex_beam.hpp).
 #include "fem/plex_beam.hpp"
 
+#include "fem/plex_groups.hpp"
+
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -66,76 +68,22 @@ void slabTets(const BeamSpec& s, const Slab& sl, std::vector<PetscInt>* cells) {
         }
 }
 
-PetscErrorCode distribute(DM* dm) {
+} // namespace
+
+PetscErrorCode distributePlex(DM* dm, PetscSF* migration) {
   PetscPartitioner part;
   DM dist = nullptr;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetPartitioner(*dm, &part));
   PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERPTSCOTCH));
   PetscCall(PetscPartitionerSetFromOptions(part));
-  PetscCall(DMPlexDistribute(*dm, 0, nullptr, &dist));
+  PetscCall(DMPlexDistribute(*dm, 0, migration, &dist));
   if (dist) {
     PetscCall(DMDestroy(dm));
     *dm = dist;
   }
   PetscFunctionReturn(0);
 }
-
-// The x coordinate of each local vertex (index v - v0).
-PetscErrorCode vertexX(DM dm, PetscInt v0, PetscInt v1, std::vector<double>* x) {
-  Vec coords;
-  PetscSection cs;
-  const PetscScalar* cx;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMGetCoordinateSection(dm, &cs));
-  PetscCall(VecGetArrayRead(coords, &cx));
-  x->resize((size_t)(v1 - v0));
-  for (PetscInt v = v0; v < v1; ++v) {
-    PetscInt off;
-    PetscCall(PetscSectionGetOffset(cs, v, &off));
-    (*x)[(size_t)(v - v0)] = PetscRealPart(cx[off]);
-  }
-  PetscCall(VecRestoreArrayRead(coords, &cx));
-  PetscFunctionReturn(0);
-}
-
-// "clamped" (faces on x = 0, completed with their edges and vertices) and "tip" (faces on x = length): the
-// boundary faces (one cell in their support; with no overlap a face between two ranks' cells has one local
-// cell too, but never lies on an end plane) whose three vertices lie on the plane.
-PetscErrorCode markEnds(DM dm, double length) {
-  DMLabel clamped, tip;
-  PetscInt f0, f1, v0, v1;
-  std::vector<double> x;
-  PetscFunctionBeginUser;
-  PetscCall(DMCreateLabel(dm, "clamped"));
-  PetscCall(DMCreateLabel(dm, "tip"));
-  PetscCall(DMGetLabel(dm, "clamped", &clamped));
-  PetscCall(DMGetLabel(dm, "tip", &tip));
-  PetscCall(DMPlexGetHeightStratum(dm, 1, &f0, &f1));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &v0, &v1));
-  PetscCall(vertexX(dm, v0, v1, &x));
-  const double tol = 1e-9 * length;
-  for (PetscInt f = f0; f < f1; ++f) {
-    PetscInt ns, n = 0, *pts = nullptr;
-    PetscCall(DMPlexGetSupportSize(dm, f, &ns));
-    if (ns != 1) continue;
-    bool left = true, right = true;
-    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
-    for (PetscInt i = 0; i < 2 * n; i += 2)
-      if (pts[i] >= v0 && pts[i] < v1) {
-        const double xv = x[(size_t)(pts[i] - v0)];
-        left = left && std::abs(xv) <= tol, right = right && std::abs(xv - length) <= tol;
-      }
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
-    if (left) PetscCall(DMLabelSetValue(clamped, f, 1));
-    if (right) PetscCall(DMLabelSetValue(tip, f, 1));
-  }
-  PetscCall(DMPlexLabelComplete(dm, clamped));
-  PetscFunctionReturn(0);
-}
-
-} // namespace
 
 PetscErrorCode checkRankCapCount(MPI_Comm comm, long long count, long long rank_cap, const char* what,
                                  const char* when) {
@@ -183,9 +131,10 @@ PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long ran
   PetscCall(PetscSFDestroy(&sf));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "beam"));
   PetscCall(checkRankCap(*dm, rank_cap, "before distribution"));
-  if (size > 1) PetscCall(distribute(dm));
+  if (size > 1) PetscCall(distributePlex(dm, nullptr));
   PetscCall(checkRankCap(*dm, rank_cap, "after distribution"));
-  PetscCall(markEnds(*dm, spec.length));
+  PetscCall(markPlaneFaces(*dm, "clamped", 0.0, 1e-9 * spec.length));
+  PetscCall(markPlaneFaces(*dm, "tip", spec.length, 1e-9 * spec.length));
   PetscFunctionReturn(0);
 }
 

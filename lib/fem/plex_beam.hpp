@@ -3,7 +3,8 @@
 // vertices of its slab of planes (DMPlexCreateFromCellListParallelPetsc), so that no rank ever holds the whole
 // mesh; then the mesh is repartitioned by the DM's partitioner (PT-Scotch unless -petscpartitioner_type says
 // otherwise) with DMPlexDistribute, without overlap (FE assembly on DMPlex sums the shared vertices' entries).
-// Labels: "clamped" (value 1: the faces on x = 0 and their closure), "tip" (value 1: the faces on x = length).
+// Labels (plex_groups.hpp): the groups "clamped" (value 1: the faces on x = 0) and "tip" (value 1: the faces
+// on x = length).
 #pragma once
 
 #include "fem/mesh.hpp"
@@ -19,6 +20,9 @@ namespace suite::fem {
 // (naming -plex_rank_cap) when rank_cap > 0 and a rank would hold more than rank_cap mesh points: its slab's
 // cells and vertices (checked before they are allocated), its part of the mesh before and after distribution.
 PetscErrorCode createPlexBeam(MPI_Comm comm, const BeamSpec& spec, long long rank_cap, DM* dm);
+// Repartitions *dm (PT-Scotch unless -petscpartitioner_type says otherwise), without overlap; *migration (may
+// be null) gets the migration SF (roots: the points before, leaves: the points after).
+PetscErrorCode distributePlex(DM* dm, PetscSF* migration);
 // The largest of the ranks' counts (of `what`) above rank_cap (> 0): a collective error naming `what` and `when`.
 PetscErrorCode checkRankCapCount(MPI_Comm comm, long long count, long long rank_cap, const char* what,
                                  const char* when);

@@ -57,8 +57,6 @@ PetscErrorCode zeroDisplacement(PetscInt, PetscReal, const PetscReal[], PetscInt
 
 PetscErrorCode PlexElasticity::setup(DM dm, const PlexElasticParams& p) {
   PetscFE fe;
-  DMLabel clamped;
-  const PetscInt one = 1;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscFunctionBeginUser;
   dm_ = dm, p_ = p;
@@ -68,9 +66,13 @@ PetscErrorCode PlexElasticity::setup(DM dm, const PlexElasticParams& p) {
   PetscCall(DMSetField(dm, 0, nullptr, (PetscObject)fe));
   PetscCall(DMCreateDS(dm));
   PetscCall(PetscFEDestroy(&fe));
-  PetscCall(DMGetLabel(dm, "clamped", &clamped));
-  PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "clamped", clamped, 1, &one, 0, 0, nullptr,
-                          (void (*)(void))zeroDisplacement, nullptr, nullptr, nullptr));
+  for (const PlexGroup& g : p.fixed) {
+    DMLabel label;
+    PetscCall(DMGetLabel(dm, g.name.c_str(), &label));
+    PetscCall(DMPlexLabelComplete(dm, label)); // the faces' edges and vertices: their DOFs are fixed too
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, g.name.c_str(), label, 1, &g.value, 0, 0, nullptr,
+                            (void (*)(void))zeroDisplacement, nullptr, nullptr, nullptr));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -118,6 +120,7 @@ PetscErrorCode PlexElasticity::prepareCells() {
   const size_t nc = (size_t)(c1 - c0);
   vol_.resize(nc), grad_.resize(12 * nc), loc_.resize(12 * nc), glob_.resize(12 * nc);
   PetscCall(VecGetArrayRead(coords, &cx));
+  PetscInt degenerate = -1;
   for (PetscInt cell = c0; cell < c1; ++cell) {
     const size_t e = (size_t)(cell - c0);
     PetscInt vert[4];
@@ -135,12 +138,18 @@ PetscErrorCode PlexElasticity::prepareCells() {
         loc_[12 * e + 3 * a + i] = off + i, glob_[12 * e + 3 * a + i] = cdof ? -1 : goff + i;
     }
     Tet t;
-    PetscCheck(tetGeometry(x, &t), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "degenerate tetrahedron %d",
-               (int)cell);
+    if (!tetGeometry(x, &t)) {
+      degenerate = std::max(degenerate, cell - c0);
+      continue;
+    }
     vol_[e] = t.V;
     std::copy(t.g, t.g + 12, &grad_[12 * e]);
   }
   PetscCall(VecRestoreArrayRead(coords, &cx));
+  PetscInt worst = degenerate;
+  PetscCallMPI(MPI_Allreduce(&degenerate, &worst, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm_)));
+  PetscCheck(worst < 0, PetscObjectComm((PetscObject)dm_), PETSC_ERR_ARG_WRONG,
+             "a degenerate (zero-volume) tetrahedron (local cell %d of a rank)", (int)worst);
   PetscFunctionReturn(0);
 }
 

@@ -7,8 +7,8 @@
 // (0: the mass solve of the initial acceleration), M is the consistent P1 mass (rho V (1 + d_ab) / 20 per
 // component), f_int the internal force (V P g_a per node, g_a the gradients of the barycentric coordinates),
 // f_g the consistent gravity load (rho g V / 4 per node). The DM's PetscSection (a P1 PetscFE field) numbers the
-// DOFs; the displacements on the "clamped" label are zero (an essential condition: removed from the global
-// vectors); the rigid-body modes are the near-null space for algebraic multigrid (MatNullSpaceCreateRigidBody).
+// DOFs; the displacements on the fixed groups (plex_groups.hpp: "clamped" on the beam, -bc_fixed) are zero (an
+// essential condition: removed from the global vectors); the rigid-body modes are the near-null space for algebraic multigrid (MatNullSpaceCreateRigidBody).
 // PETSc's pointwise PetscFE assembly was measured at ~1 ms per tetrahedron for this Jacobian (PETSc 3.18,
 // 8-point quadrature, the generic element-matrix loop), DMPlexVecGetClosure at ~9 us per cell and
 // DMCreateMatrix at 118 s for 132k DOFs: so the geometry and the DOF indices of each cell are computed once
@@ -16,6 +16,7 @@
 #pragma once
 
 #include "fem/material.hpp"
+#include "fem/plex_groups.hpp"
 
 #include <petscdmplex.h>
 #include <petscsnes.h>
@@ -31,6 +32,7 @@ struct PlexElasticParams {
   Lame lame;
   double rho = 1;
   double gravity[3] = {0, 0, 0};
+  std::vector<PlexGroup> fixed; // surfaces whose displacements are zero
 };
 
 // Weights of the step's residual.
@@ -41,7 +43,7 @@ struct PlexStepWeights {
 
 class PlexElasticity {
 public:
-  // The displacement field (P1, 3 components), the clamp and the material on dm. Collective.
+  // The displacement field (P1, 3 components), the supports and the material on dm. Collective.
   PetscErrorCode setup(DM dm, const PlexElasticParams& p);
   // Registers the residual and Jacobian on the DM of snes (DMSNESSetFunctionLocal / JacobianLocal) and gives
   // its Jacobian the rigid-body near-null space.
@@ -56,7 +58,8 @@ public:
 
 private:
   // Per local cell: the volume and barycentric gradients (total Lagrangian: fixed), the local-vector offsets
-  // and the global indices (-1: clamped) of its 12 DOFs, from the DM's sections. Collective.
+  // and the global indices (-1: fixed) of its 12 DOFs, from the DM's sections. Collective (errors naming a
+  // degenerate tetrahedron).
   PetscErrorCode prepareCells();
   // The Jacobian with its nonzero pattern preallocated from the cells' global indices (MATPREALLOCATOR).
   PetscErrorCode createJacobian(Mat* J) const;

@@ -1,4 +1,4 @@
-// The natural node numbering of a distributed DMPlex beam (see plex_natural.hpp).
+// The natural node numbering of a distributed DMPlex (see plex_natural.hpp).
 #include "fem/plex_natural.hpp"
 
 #include "fem/plex_beam.hpp"
@@ -8,46 +8,92 @@
 
 namespace suite::fem {
 
+namespace {
+
+// owned[v - v0]: whether this rank owns local vertex v (it is not a leaf of the point SF).
+PetscErrorCode ownedVertices(DM dm, PetscInt v0, PetscInt v1, std::vector<char>* owned) {
+  PetscSF sf;
+  PetscInt nleaves;
+  const PetscInt* ilocal;
+  PetscFunctionBeginUser;
+  owned->assign((size_t)(v1 - v0), 1);
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &ilocal, nullptr));
+  for (PetscInt i = 0; i < nleaves; ++i) {
+    const PetscInt p = ilocal ? ilocal[i] : i;
+    if (p >= v0 && p < v1) (*owned)[(size_t)(p - v0)] = 0;
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode beamVertexNodes(DM dm, const BeamSpec& spec, std::vector<PetscInt>* vertex_node) {
+  Vec coords;
+  PetscSection cs;
+  const PetscScalar* cx;
+  PetscInt v0, v1;
+  PetscFunctionBeginUser;
+  const double h[3] = {spec.length / spec.cells[0], spec.size[0] / spec.cells[1],
+                       spec.size[1] / spec.cells[2]};
+  const long long nx1 = spec.cells[0] + 1, ny1 = spec.cells[1] + 1;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v0, &v1));
+  PetscCall(VecGetArrayRead(coords, &cx));
+  vertex_node->resize((size_t)(v1 - v0));
+  for (PetscInt v = v0; v < v1; ++v) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(cs, v, &off));
+    long long ijk[3];
+    for (int d = 0; d < 3; ++d) ijk[d] = std::llround(PetscRealPart(cx[off + d]) / h[d]);
+    (*vertex_node)[(size_t)(v - v0)] = (PetscInt)(ijk[0] + nx1 * (ijk[1] + ny1 * ijk[2]));
+  }
+  PetscCall(VecRestoreArrayRead(coords, &cx));
+  PetscFunctionReturn(0);
+}
+
 PlexNaturalOrder::~PlexNaturalOrder() {
   VecScatterDestroy(&scatter_);
   VecDestroy(&template_);
 }
 
-long long PlexNaturalOrder::node(const PetscReal x[3]) const {
-  const int nx = spec_.cells[0], ny = spec_.cells[1];
-  const long long i = std::llround(x[0] / h_[0]), j = std::llround(x[1] / h_[1]),
-                  k = std::llround(x[2] / h_[2]);
-  return i + (long long)(nx + 1) * (j + (long long)(ny + 1) * k);
-}
-
-void PlexNaturalOrder::coordinates(long long n, double x[3]) const {
-  const long long nx1 = spec_.cells[0] + 1, ny1 = spec_.cells[1] + 1;
-  x[0] = (double)(n % nx1) * h_[0];
-  x[1] = (double)((n / nx1) % ny1) * h_[1];
-  x[2] = (double)(n / (nx1 * ny1)) * h_[2];
-}
-
-PetscErrorCode PlexNaturalOrder::setup(DM dm, const BeamSpec& spec) {
+PetscErrorCode PlexNaturalOrder::setup(DM dm, long long nodes, const std::vector<PetscInt>& vertex_node) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   int rank, size;
   Vec g;
+  PetscInt v1;
   PetscFunctionBeginUser;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  spec_ = spec;
-  h_[0] = spec.length / spec.cells[0], h_[1] = spec.size[0] / spec.cells[1],
-  h_[2] = spec.size[1] / spec.cells[2];
-  nodes_ = (long long)(spec.cells[0] + 1) * (spec.cells[1] + 1) * (spec.cells[2] + 1);
+  dm_ = dm, vertex_node_ = vertex_node, nodes_ = nodes;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &v0_, &v1));
+  PetscCheck((size_t)(v1 - v0_) == vertex_node.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "a natural node for each of the %d local vertices expected, %d given", (int)(v1 - v0_),
+             (int)vertex_node.size());
   row0_ = nodes_ * rank / size;
   rows_ = nodes_ * (rank + 1) / size - row0_;
   PetscCall(VecCreateMPI(comm, (PetscInt)(3 * rows_), (PetscInt)(3 * nodes_), &template_));
   // From each owned, unconstrained DOF of the DM's global vector to its natural DOF.
-  std::vector<FreeVertex> fv;
+  PetscSection ls, gs;
   std::vector<PetscInt> from, to;
-  PetscCall(ownedFreeVertices(dm, &fv));
-  for (const FreeVertex& v : fv) {
-    const long long n = node(v.x);
-    for (int c = 0; c < 3; ++c) from.push_back(v.goff + c), to.push_back((PetscInt)(3 * n + c));
+  PetscCall(DMGetLocalSection(dm, &ls));
+  PetscCall(DMGetGlobalSection(dm, &gs));
+  for (PetscInt v = v0_; v < v1; ++v) {
+    PetscInt goff, dof, cdof;
+    const PetscInt* cind = nullptr;
+    PetscCall(PetscSectionGetOffset(gs, v, &goff));
+    if (goff < 0) continue; // a ghost
+    PetscCall(PetscSectionGetDof(ls, v, &dof));
+    PetscCall(PetscSectionGetConstraintDof(ls, v, &cdof));
+    if (cdof) PetscCall(PetscSectionGetConstraintIndices(ls, v, &cind));
+    PetscInt free = 0;
+    for (PetscInt c = 0; c < dof; ++c) {
+      bool constrained = false;
+      for (PetscInt k = 0; k < cdof; ++k) constrained = constrained || cind[k] == c;
+      if (constrained) continue;
+      from.push_back(goff + free++), to.push_back((PetscInt)(3 * vertexNode(v) + c));
+    }
   }
   IS isf, ist;
   PetscCall(ISCreateGeneral(comm, (PetscInt)from.size(), from.data(), PETSC_COPY_VALUES, &isf));
@@ -57,6 +103,52 @@ PetscErrorCode PlexNaturalOrder::setup(DM dm, const BeamSpec& spec) {
   PetscCall(DMRestoreGlobalVector(dm, &g));
   PetscCall(ISDestroy(&isf));
   PetscCall(ISDestroy(&ist));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexNaturalOrder::coordinates(std::vector<double>* xyz) const {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  Vec coords, mine, nat;
+  PetscSection cs;
+  const PetscScalar* cx;
+  PetscInt v1;
+  std::vector<char> owned;
+  std::vector<PetscInt> to;
+  std::vector<PetscScalar> vals;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm_, 0, nullptr, &v1));
+  PetscCall(ownedVertices(dm_, v0_, v1, &owned));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMGetCoordinateSection(dm_, &cs));
+  PetscCall(VecGetArrayRead(coords, &cx));
+  for (PetscInt v = v0_; v < v1; ++v) {
+    if (!owned[(size_t)(v - v0_)]) continue;
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(cs, v, &off));
+    for (int d = 0; d < 3; ++d) to.push_back((PetscInt)(3 * vertexNode(v) + d)), vals.push_back(cx[off + d]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &cx));
+  PetscCall(VecCreateMPIWithArray(comm, 1, (PetscInt)vals.size(), PETSC_DECIDE, vals.data(), &mine));
+  PetscCall(createNatural(&nat));
+  PetscInt r0;
+  PetscCall(VecGetOwnershipRange(mine, &r0, nullptr));
+  IS isf, ist;
+  VecScatter sc;
+  PetscCall(ISCreateStride(comm, (PetscInt)vals.size(), r0, 1, &isf));
+  PetscCall(ISCreateGeneral(comm, (PetscInt)to.size(), to.data(), PETSC_COPY_VALUES, &ist));
+  PetscCall(VecScatterCreate(mine, isf, nat, ist, &sc));
+  PetscCall(VecScatterBegin(sc, mine, nat, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(sc, mine, nat, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar* x;
+  PetscCall(VecGetArrayRead(nat, &x));
+  xyz->resize((size_t)(3 * rows_));
+  for (size_t i = 0; i < xyz->size(); ++i) (*xyz)[i] = PetscRealPart(x[i]);
+  PetscCall(VecRestoreArrayRead(nat, &x));
+  PetscCall(VecScatterDestroy(&sc));
+  PetscCall(ISDestroy(&isf));
+  PetscCall(ISDestroy(&ist));
+  PetscCall(VecDestroy(&nat));
+  PetscCall(VecDestroy(&mine));
   PetscFunctionReturn(0);
 }
 

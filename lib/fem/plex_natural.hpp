@@ -1,16 +1,22 @@
-// The natural node numbering of a distributed DMPlex beam (plex_beam.hpp): node (i, j, k) of the structured
-// grid is i + (nx + 1) (j + (ny + 1) k), the numbering of makeBeam (mesh.hpp) and of the replicated path's
-// output. A scatter between the DM's global vectors (owned, unconstrained DOFs, partition-dependent) and a
+// The natural node numbering of a distributed DMPlex: the numbering the mesh came with, independent of the
+// partition. The generated beam (plex_beam.hpp): node (i, j, k) of the structured grid is
+// i + (nx + 1) (j + (ny + 1) k), the numbering of makeBeam (mesh.hpp) and of the replicated path's output,
+// recovered from the coordinates (exact on the generated grid). A mesh file (plex_mesh_file.hpp): the file's
+// node order. A scatter between the DM's global vectors (owned, unconstrained DOFs, partition-dependent) and a
 // "natural" vector of 3 DOFs per node in that numbering, split over the ranks in contiguous blocks of nodes,
 // makes output and checkpoints independent of the partition: a checkpoint written at P ranks restarts at Q.
-// The node of a vertex is recovered from its coordinates (exact on the generated grid).
 #pragma once
 
 #include "fem/mesh.hpp"
 
 #include <petscdmplex.h>
 
+#include <vector>
+
 namespace suite::fem {
+
+// The natural node of each local vertex of the generated beam (index v - vStart), from its coordinates.
+PetscErrorCode beamVertexNodes(DM dm, const BeamSpec& spec, std::vector<PetscInt>* vertex_node);
 
 class PlexNaturalOrder {
 public:
@@ -19,24 +25,26 @@ public:
   PlexNaturalOrder& operator=(const PlexNaturalOrder&) = delete;
   ~PlexNaturalOrder();
 
-  // Collective. dm: the beam of createPlexBeam with its displacement field and clamp set up.
-  PetscErrorCode setup(DM dm, const BeamSpec& spec);
+  // Collective. dm with its displacement field and supports set up; nodes: the natural node count;
+  // vertex_node[v - vStart]: the natural node of each local vertex.
+  PetscErrorCode setup(DM dm, long long nodes, const std::vector<PetscInt>& vertex_node);
   PetscErrorCode createNatural(Vec* natural) const;
-  // natural <- plex (the clamped DOFs, absent from plex vectors, are 0); plex <- natural.
+  // natural <- plex (the constrained DOFs, absent from plex vectors, are 0); plex <- natural.
   PetscErrorCode toNatural(Vec plex, Vec natural) const;
   PetscErrorCode fromNatural(Vec natural, Vec plex) const;
-  // The natural node of a point of the grid.
-  long long node(const PetscReal x[3]) const;
-  // The coordinates of natural node n.
-  void coordinates(long long n, double x[3]) const;
+  // The natural node of local vertex v.
+  PetscInt vertexNode(PetscInt v) const { return vertex_node_[(size_t)(v - v0_)]; }
+  // Collective: the coordinates of this rank's block of natural nodes (3 per node).
+  PetscErrorCode coordinates(std::vector<double>* xyz) const;
   long long nodes() const { return nodes_; }
   // This rank's block of natural nodes: row0 .. row0 + rows - 1.
   long long row0() const { return row0_; }
   long long rows() const { return rows_; }
 
 private:
-  BeamSpec spec_;
-  double h_[3] = {1, 1, 1};
+  DM dm_ = nullptr; // not owned
+  std::vector<PetscInt> vertex_node_;
+  PetscInt v0_ = 0;
   long long nodes_ = 0, row0_ = 0, rows_ = 0;
   VecScatter scatter_ = nullptr;
   Vec template_ = nullptr; // a natural vector (layout of createNatural)

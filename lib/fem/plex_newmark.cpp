@@ -2,6 +2,7 @@
 #include "fem/plex_newmark.hpp"
 
 #include <cmath>
+#include <vector>
 
 namespace suite::fem {
 
@@ -12,9 +13,9 @@ PlexNewmark::~PlexNewmark() {
   DMDestroy(&dm_);
 }
 
-PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p, double tip_load, double beta,
-                                  double gamma, double newton_rtol, double newton_atol,
-                                  PetscInt newton_max_it) {
+PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p,
+                                  const std::vector<PlexSurfaceLoad>& loads, double beta, double gamma,
+                                  double newton_rtol, double newton_atol, PetscInt newton_max_it) {
   KSP ksp;
   PC pc;
   SNESLineSearch ls;
@@ -31,7 +32,7 @@ PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p, double tip_
   PetscCall(DMCreateLocalVector(dm_, &b_local_));
   PetscCall(VecZeroEntries(b_local_));
   el_.setInertiaVector(b_local_);
-  PetscCall(tipLoad(tip_load));
+  PetscCall(surfaceLoads(loads));
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm_), &snes_));
   PetscCall(SNESSetDM(snes_, dm_));
   PetscCall(el_.attach(snes_));
@@ -52,36 +53,34 @@ PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p, double tip_
   PetscFunctionReturn(0);
 }
 
-// f_ = the consistent nodal loads of a uniform traction of total P along -y on the "tip" faces.
-PetscErrorCode PlexNewmark::tipLoad(double P) {
-  IS faces = nullptr;
+// f_ = the consistent nodal loads of the surface loads.
+PetscErrorCode PlexNewmark::surfaceLoads(const std::vector<PlexSurfaceLoad>& loads) {
   Vec floc;
-  PetscInt n = 0;
-  const PetscInt* fs = nullptr;
-  double area = 0.0, total = 0.0;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
   PetscFunctionBeginUser;
-  PetscCall(DMGetStratumIS(dm_, "tip", 1, &faces));
-  if (faces) PetscCall(ISGetLocalSize(faces, &n));
-  if (faces) PetscCall(ISGetIndices(faces, &fs));
-  std::vector<double> areas(n);
-  for (PetscInt i = 0; i < n; ++i) {
-    PetscReal a, centroid[3], normal[3];
-    PetscCall(DMPlexComputeCellGeometryFVM(dm_, fs[i], &a, centroid, normal));
-    areas[i] = a, area += a;
-  }
-  PetscCallMPI(MPI_Allreduce(&area, &total, 1, MPI_DOUBLE, MPI_SUM, comm));
-  PetscCheck(P == 0.0 || total > 0.0, comm, PETSC_ERR_ARG_WRONG,
-             "-tip_load %g: the end plane x = max holds no boundary face", P);
   PetscCall(DMGetLocalVector(dm_, &floc));
   PetscCall(VecZeroEntries(floc));
-  for (PetscInt i = 0; i < n && P != 0.0; ++i) {
-    const PetscScalar fy = -P * areas[i] / (3.0 * total);
-    const PetscScalar vals[9] = {0, fy, 0, 0, fy, 0, 0, fy, 0};
-    PetscCall(DMPlexVecSetClosure(dm_, nullptr, floc, fs[i], vals, ADD_VALUES));
+  for (const PlexSurfaceLoad& l : loads) {
+    std::vector<PetscInt> faces;
+    PetscCall(groupFaces(dm_, l.group, &faces));
+    std::vector<double> areas(faces.size());
+    double area = 0.0, total = 0.0;
+    for (size_t i = 0; i < faces.size(); ++i) {
+      PetscReal a, centroid[3], normal[3];
+      PetscCall(DMPlexComputeCellGeometryFVM(dm_, faces[i], &a, centroid, normal));
+      areas[i] = a, area += a;
+    }
+    PetscCallMPI(MPI_Allreduce(&area, &total, 1, MPI_DOUBLE, MPI_SUM, comm));
+    PetscCheck(total > 0.0, comm, PETSC_ERR_ARG_WRONG, "the load on group %s: the group has no area",
+               l.group.name.c_str());
+    for (size_t i = 0; i < faces.size(); ++i) {
+      const double per = l.total ? 3.0 * total : 3.0; // a third of the face's share to each vertex
+      PetscScalar vals[9];
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c) vals[3 * a + c] = l.value[c] * areas[i] / per;
+      PetscCall(DMPlexVecSetClosure(dm_, nullptr, floc, faces[i], vals, ADD_VALUES));
+    }
   }
-  if (faces) PetscCall(ISRestoreIndices(faces, &fs));
-  PetscCall(ISDestroy(&faces));
   PetscCall(VecZeroEntries(f_));
   PetscCall(DMLocalToGlobal(dm_, floc, ADD_VALUES, f_));
   PetscCall(DMRestoreLocalVector(dm_, &floc));
@@ -158,33 +157,38 @@ PetscErrorCode PlexNewmark::energies(double* kinetic, double* strain) const {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PlexNewmark::planeMean(double x0, int comp, double sign, double* mean) const {
-  Vec loc, coords;
-  PetscSection ls, gs, cs;
-  const PetscScalar *ul, *cx;
+PetscErrorCode PlexNewmark::groupMean(const PlexGroup& g, int comp, double sign, double* mean) const {
+  Vec loc;
+  PetscSection ls, gs;
+  const PetscScalar* ul;
   PetscInt v0, v1;
+  std::vector<PetscInt> faces;
   double local[2] = {0.0, 0.0}, global[2];
   PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm_, 0, &v0, &v1));
+  std::vector<char> on((size_t)(v1 - v0), 0);
+  PetscCall(groupFaces(dm_, g, &faces));
+  for (PetscInt f : faces) {
+    PetscInt n = 0, *pts = nullptr;
+    PetscCall(DMPlexGetTransitiveClosure(dm_, f, PETSC_TRUE, &n, &pts));
+    for (PetscInt i = 0; i < 2 * n; i += 2)
+      if (pts[i] >= v0 && pts[i] < v1) on[(size_t)(pts[i] - v0)] = 1;
+    PetscCall(DMPlexRestoreTransitiveClosure(dm_, f, PETSC_TRUE, &n, &pts));
+  }
   PetscCall(DMGetLocalVector(dm_, &loc));
   PetscCall(VecZeroEntries(loc));
   PetscCall(DMGlobalToLocal(dm_, u_, INSERT_VALUES, loc));
   PetscCall(DMGetLocalSection(dm_, &ls));
   PetscCall(DMGetGlobalSection(dm_, &gs));
-  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMGetCoordinateSection(dm_, &cs));
-  PetscCall(DMPlexGetDepthStratum(dm_, 0, &v0, &v1));
   PetscCall(VecGetArrayRead(loc, &ul));
-  PetscCall(VecGetArrayRead(coords, &cx));
   for (PetscInt v = v0; v < v1; ++v) {
-    PetscInt goff, off, coff;
+    PetscInt goff, off;
+    if (!on[(size_t)(v - v0)]) continue;
     PetscCall(PetscSectionGetOffset(gs, v, &goff));
     if (goff < 0) continue; // owned by another rank
-    PetscCall(PetscSectionGetOffset(cs, v, &coff));
-    if (std::abs(PetscRealPart(cx[coff]) - x0) > 1e-9 * std::max(1.0, std::abs(x0))) continue;
     PetscCall(PetscSectionGetOffset(ls, v, &off));
     local[0] += sign * PetscRealPart(ul[off + comp]), local[1] += 1.0;
   }
-  PetscCall(VecRestoreArrayRead(coords, &cx));
   PetscCall(VecRestoreArrayRead(loc, &ul));
   PetscCall(DMRestoreLocalVector(dm_, &loc));
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));

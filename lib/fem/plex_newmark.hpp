@@ -6,8 +6,9 @@
 //   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}),
 // the same equations as fem::Newmark (newmark.hpp) on the replicated path (R: plex_elasticity.hpp). The initial acceleration solves
 // M a_0 = f_ext - f_int(u_0) (u_0 = 0). Linear solves: KSP (default CG + GAMG with the rigid-body near-null
-// space, relative tolerance 1e-10; -ksp_type, -pc_type, -snes_* as usual). The tip load: a total force P along
-// -y spread uniformly over the "tip" faces (consistent nodal loads area/3 per vertex, as beam_loads.hpp).
+// space, relative tolerance 1e-10; -ksp_type, -pc_type, -snes_* as usual). Surface loads on groups
+// (plex_groups.hpp): a dead traction t per area, or a total force F spread uniformly over the group's area
+// (t = F / area: -tip_load); consistent nodal loads t area / 3 per vertex of each face, as beam_loads.hpp.
 #pragma once
 
 #include "fem/plex_elasticity.hpp"
@@ -15,6 +16,12 @@
 #include <petscsnes.h>
 
 namespace suite::fem {
+
+struct PlexSurfaceLoad {
+  PlexGroup group; // a surface
+  double value[3] = {0, 0, 0};
+  bool total = false; // value: the total force over the group (else a traction, force per area)
+};
 
 struct PlexStepStats {
   PetscInt newton_iterations = 0, linear_iterations = 0;
@@ -28,17 +35,18 @@ public:
   PlexNewmark& operator=(const PlexNewmark&) = delete;
   ~PlexNewmark();
 
-  // dm: the beam of createPlexBeam (labels "clamped", "tip"); sets up its field and the SNES. Collective.
-  PetscErrorCode setup(DM dm, const PlexElasticParams& p, double tip_load, double beta, double gamma,
-                       double newton_rtol, double newton_atol, PetscInt newton_max_it);
+  // Sets up the field, the supports (p.fixed) and the loads on dm, and the SNES. Collective.
+  PetscErrorCode setup(DM dm, const PlexElasticParams& p, const std::vector<PlexSurfaceLoad>& loads,
+                       double beta, double gamma, double newton_rtol, double newton_atol,
+                       PetscInt newton_max_it);
   // a_0 from M a_0 = f_ext (u = v = 0).
   PetscErrorCode initialize();
   // One step of dt. Errors (step time and SNES reason) when Newton diverges.
   PetscErrorCode step(double dt, PlexStepStats* st);
   // Static equilibrium f_int(u) = f_ext (one load step).
   PetscErrorCode solveStatic(PlexStepStats* st);
-  // Mean of component comp (times sign) of u over the vertices on the plane x = x0 (each counted once).
-  PetscErrorCode planeMean(double x0, int comp, double sign, double* mean) const;
+  // Mean of component comp (times sign) of u over the vertices of a group's faces (each counted once).
+  PetscErrorCode groupMean(const PlexGroup& g, int comp, double sign, double* mean) const;
   // Kinetic energy of v and strain energy at u (the last residual evaluation: the step's converged iterate).
   PetscErrorCode energies(double* kinetic, double* strain) const;
   Vec displacement() const { return u_; }
@@ -49,7 +57,7 @@ public:
   void setTime(double t) { t_ = t; }
 
 private:
-  PetscErrorCode tipLoad(double P);
+  PetscErrorCode surfaceLoads(const std::vector<PlexSurfaceLoad>& loads);
   PetscErrorCode setInertia(Vec b_global);
   PetscErrorCode solve(double mass, double stiffness, Vec x, PlexStepStats* st);
 
