@@ -3,6 +3,7 @@
 // their registries in lib/fem (-mesh, -material, -ordering, -solver, the integrator's -time_scheme,
 // -jacobian, -newton_predictor, -mass), then the cross-option checks (collective PetscCheck).
 #include "core/named_choice.hpp"
+#include <cmath>
 #include "core/option_value.hpp"
 #include "fem/material.hpp"
 #include "femdyn_run.hpp"
@@ -69,8 +70,10 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(
       o("-backend", "Where the mesh and the state live",
         {{"replicated", "every rank holds the mesh and the time-stepping state (-solver: the linear solver)"},
-         {"plex", "distributed DMPlex mesh, state, assembly and output (beam, linear/stvk, Newmark; SNES "
-                  "and KSP options as usual, default CG + GAMG with rigid-body modes)"}},
+         {"plex",
+          "distributed DMPlex mesh, state, assembly and output (the beam or a Gmsh / -mesh_convert "
+          "file, linear/stvk/corotational, Newmark or generalized-alpha, Rayleigh damping; SNES and KSP "
+          "options as usual, default CG + GAMG with rigid-body modes)"}},
         &opt_.backend));
   PetscCall(o(
       "-plex_rank_cap",
@@ -80,10 +83,26 @@ PetscErrorCode FemdynRun::readModelOptions(PetscOptionItems* PetscOptionsObject)
   PetscCall(
       o("-dirichlet", "Clamped plane, e.g. x=0 (all DOFs of its nodes fixed), or none", &opt_.dirichlet));
   PetscCall(
+      o("-mesh_convert",
+        "-backend plex: write the mesh (with its groups) as the suite's parallel HDF5 mesh file, read back "
+        "at any rank count by -mesh_file FILE.h5, and stop",
+        &opt_.mesh_convert));
+  PetscCall(
       o("-bc_fixed",
         "-backend plex: groups (Gmsh physical group names or tags, comma-separated) whose displacements "
         "are zero; replaces the -dirichlet clamp",
         &opt_.bc_fixed));
+  PetscCall(
+      o("-bc_displacement",
+        "-backend plex: prescribed displacement components on surface groups, G:ux=a,uy=b,uz=c (any "
+        "subset; 0 for rollers and symmetry planes; several: separated by ';'); replaces the -dirichlet "
+        "clamp",
+        &opt_.bc_displacement));
+  PetscCall(
+      o("-bc_ramp",
+        "-backend plex: time over which the -bc_displacement values grow linearly from 0 (0: applied at "
+        "once)",
+        &opt_.bc_ramp));
   PetscCall(o("-traction",
               "-backend plex: dead traction (force per area) on surface groups, G:tx,ty,tz (several: "
               "separated by ';')",
@@ -188,9 +207,16 @@ PetscErrorCode FemdynRun::checkOptions() const {
              "-plex_rank_cap %d: must be >= 0 (0: no cap)", (int)opt_.plex_rank_cap);
   PetscCheck(opt_.plex_rank_cap == 0 || opt_.backend == "plex", comm, PETSC_ERR_ARG_INCOMP,
              "-plex_rank_cap applies to -backend plex only (the backend is %s)", opt_.backend.c_str());
-  PetscCheck((opt_.bc_fixed.empty() && opt_.traction.empty()) || opt_.backend == "plex", comm,
-             PETSC_ERR_ARG_INCOMP, "-bc_fixed and -traction apply to -backend plex only (the backend is %s)",
-             opt_.backend.c_str());
+  PetscCheck(
+      (opt_.bc_fixed.empty() && opt_.traction.empty() && opt_.bc_displacement.empty() &&
+       opt_.mesh_convert.empty()) ||
+          opt_.backend == "plex",
+      comm, PETSC_ERR_ARG_INCOMP,
+      "-bc_fixed, -bc_displacement, -traction and -mesh_convert apply to -backend plex only (the backend is "
+      "%s)",
+      opt_.backend.c_str());
+  PetscCheck(opt_.bc_ramp >= 0 && std::isfinite(opt_.bc_ramp), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-bc_ramp %g: must be a finite time >= 0", opt_.bc_ramp);
   const auto& nm = opt_.newmark;
   PetscCheck(nm.refresh_contraction > 0 && nm.refresh_contraction < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-lagged_refresh_contraction %g: must be in (0, 1)", nm.refresh_contraction);

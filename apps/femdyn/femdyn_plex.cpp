@@ -7,6 +7,7 @@
 #include "fem/material.hpp"
 #include "fem/plex_beam.hpp"
 #include "fem/plex_mesh_file.hpp"
+#include "fem/plex_mesh_h5.hpp"
 #include "core/run_summary.hpp"
 #include "io/h5_output.hpp"
 #include "io/xdmf.hpp"
@@ -29,16 +30,12 @@ PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
                                 "-ordering",
                                 "-solver",
                                 "-load_steps",
-                                "-time_scheme",
-                                "-rho_inf",
                                 "-jacobian",
                                 "-newton_predictor",
                                 "-lagged_refresh_contraction",
                                 "-lagged_refresh_iterations",
                                 "-newton_max_corrections",
                                 "-mass",
-                                "-rayleigh_alpha",
-                                "-rayleigh_beta",
                                 "-max_halvings",
                                 "-snapshot_every",
                                 "-probe",
@@ -111,10 +108,18 @@ PetscErrorCode PlexRun::setup() {
   PetscCall(createMesh(&vertex_node, &nodes));
   PetscCall(plexSupportsAndLoads(dm_, o_, &groups_));
   PlexElasticParams p;
-  p.law = o_.material, p.lame = lame, p.rho = o_.density, p.fixed = groups_.fixed;
+  p.law = o_.material, p.lame = lame, p.rho = o_.density, p.prescribed = groups_.held;
+  p.rayleigh_mass = o_.newmark.rayleigh_mass, p.rayleigh_stiffness = o_.newmark.rayleigh_stiffness;
   std::copy(o_.gravity, o_.gravity + 3, p.gravity);
   const auto& n = o_.newmark;
   PetscCall(nm_.setup(dm_, p, groups_.loads, n.beta, n.gamma, n.newton_rtol, n.newton_atol, n.newton_max_it));
+  nm_.setPrescribedRamp(o_.bc_ramp);
+  nm_.setGeneralizedAlpha(n.alpha_m, n.alpha_f);
+  PetscCheck(
+      !(nm_.prescribed().nonzero() && !o_.is_static && (policy_.enabled() || policy_.restartRequested())),
+      comm, PETSC_ERR_SUP,
+      "-bc_displacement with nonzero values: dynamic runs are not checkpointed (the prescribed DOFs' "
+      "velocities and accelerations are not in the checkpoint)");
   PetscCall(ctx_.checkUnusedOptions()); // after SNESSetFromOptions: -snes_*, -ksp_*, -pc_* are used now
   PetscCall(nat_.setup(dm_, nodes, vertex_node));
   PetscCall(plexGlobalSizes(dm_, &nv_, &nc_));
@@ -193,10 +198,33 @@ PetscErrorCode PlexRun::solve() {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PlexRun::convertMesh() {
+  std::vector<PetscInt> vertex_node;
+  long long nodes = 0;
+  PetscFunctionBeginUser;
+  const double t0 = suite::wallSeconds();
+  PetscCall(refuseUnsupported(ctx_.comm(), o_));
+  PetscCall(suite::checkOutputWritable(ctx_.comm(), o_.mesh_convert, "mesh_convert"));
+  PetscCall(createMesh(&vertex_node, &nodes));
+  PetscCall(nat_.setupLayout(dm_, nodes, vertex_node));
+  PetscCall(plexGlobalSizes(dm_, &nv_, &nc_));
+  PetscCall(ctx_.checkUnusedOptions());
+  PetscCall(writePlexMeshH5(dm_, nat_, ctx_, o_.mesh_convert));
+  char what[256];
+  PetscCall(PetscSNPrintf(what, sizeof what, "mesh of %lld nodes and %lld tetrahedra converted in %.3f s",
+                          nv_, nc_, suite::wallSeconds() - t0));
+  PetscCall(suite::logRunSummary(ctx_, "completed", what, {o_.mesh_convert}));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode runPlexFemdyn(const suite::RunContext& ctx, const Options& opt,
                              suite::CheckpointPolicy& policy) {
   PlexRun run(ctx, opt, policy);
   PetscFunctionBeginUser;
+  if (!opt.mesh_convert.empty()) {
+    PetscCall(run.convertMesh());
+    PetscFunctionReturn(0);
+  }
   PetscCall(run.setup());
   PetscCall(run.solve());
   PetscFunctionReturn(0);

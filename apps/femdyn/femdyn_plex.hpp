@@ -1,7 +1,8 @@
 // femdyn -backend plex: the distributed run (femdyn_plex.cpp), its supports and loads by group
 // (femdyn_plex_groups.cpp) and its HDF5 files (femdyn_plex_io.cpp). The mesh as a distributed DMPlex: the
 // generated beam (fem/plex_beam.hpp) or a Gmsh file (fem/plex_mesh_file.hpp); P1 linear, StVK or corotational
-// elastodynamics (fem/plex_elasticity.hpp), Newmark + SNES on distributed Vecs (fem/plex_newmark.hpp). No rank
+// elastodynamics (fem/plex_elasticity.hpp), Newmark or generalized-alpha with Rayleigh damping + SNES on
+// distributed Vecs (fem/plex_newmark.hpp). No rank
 // holds a global-size array after the distribution: the beam is generated in slabs and repartitioned (a file
 // is read on rank 0, then distributed), the state and the loads are distributed,
 // the tip mean is reduced, and output and checkpoints are written collectively in the natural node numbering
@@ -23,7 +24,7 @@ namespace femdyn_app {
 
 // The supports, the surface loads and the group whose mean -u_y is the reported tip deflection.
 struct PlexModelGroups {
-  std::vector<suite::fem::PlexGroup> fixed;
+  std::vector<suite::fem::PlexPrescribed> held; // -bc_fixed, -bc_displacement or the -dirichlet clamp
   std::vector<suite::fem::PlexSurfaceLoad> loads;
   suite::fem::PlexGroup tip;
 };
@@ -40,6 +41,8 @@ public:
       : ctx_(ctx), o_(o), policy_(policy) {}
   ~PlexRun();
   PetscErrorCode setup();
+  // -mesh_convert: the mesh (generated or read) written as the suite's parallel mesh file.
+  PetscErrorCode convertMesh();
   // The static solve or the time steps (from a restart's step on), then the output.
   PetscErrorCode solve();
 
@@ -52,7 +55,9 @@ private:
   PetscErrorCode write() const;
   PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
   PetscErrorCode writeHistory(suite::H5Output& out) const;
-  PetscErrorCode writeNatural(suite::H5Output& out, const char* dataset, Vec plex) const;
+  // held: the prescribed DOFs' values (null: 0 there)
+  PetscErrorCode writeNatural(suite::H5Output& out, const char* dataset, Vec plex,
+                              const std::vector<double>* held = nullptr) const;
   PetscErrorCode writeMesh(suite::H5Output& out) const;
   PetscErrorCode writeCheckpoint(long long step);
   PetscErrorCode readCheckpoint(const std::string& path);

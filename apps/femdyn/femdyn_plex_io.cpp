@@ -45,15 +45,26 @@ std::vector<std::pair<const char*, std::string>> modelStrings(const Options& o) 
   return {{"mesh", o.mesh == "beam" ? std::string("beam") : o.mesh_file},
           {"dirichlet", o.dirichlet},
           {"bc_fixed", o.bc_fixed},
-          {"traction", o.traction}};
+          {"traction", o.traction},
+          {"bc_displacement", o.bc_displacement}};
 }
 
 std::vector<ModelAttr> modelAttributes(const Options& o) {
-  return {{"beam_length", o.beam.length},   {"beam_size_y", o.beam.size[0]},
-          {"beam_size_z", o.beam.size[1]},  {"young", o.young},
-          {"poisson", o.poisson},           {"density", o.density},
-          {"tip_load", o.tip_load},         {"dt", o.dt},
-          {"newmark_beta", o.newmark.beta}, {"newmark_gamma", o.newmark.gamma}};
+  return {{"beam_length", o.beam.length},
+          {"beam_size_y", o.beam.size[0]},
+          {"beam_size_z", o.beam.size[1]},
+          {"young", o.young},
+          {"poisson", o.poisson},
+          {"density", o.density},
+          {"tip_load", o.tip_load},
+          {"dt", o.dt},
+          {"newmark_beta", o.newmark.beta},
+          {"newmark_gamma", o.newmark.gamma},
+          {"bc_ramp", o.bc_ramp},
+          {"alpha_m", o.newmark.alpha_m},
+          {"alpha_f", o.newmark.alpha_f},
+          {"rayleigh_alpha", o.newmark.rayleigh_mass},
+          {"rayleigh_beta", o.newmark.rayleigh_stiffness}};
 }
 
 } // namespace
@@ -116,12 +127,17 @@ PetscErrorCode PlexRun::writeHistory(suite::H5Output& out) const {
 }
 
 // A distributed vector of the DM as a {nodes, 3} dataset in the natural numbering.
-PetscErrorCode PlexRun::writeNatural(suite::H5Output& out, const char* dataset, Vec plex) const {
+PetscErrorCode PlexRun::writeNatural(suite::H5Output& out, const char* dataset, Vec plex,
+                                     const std::vector<double>* held) const {
   Vec nat;
   const PetscScalar* x;
   PetscFunctionBeginUser;
   PetscCall(nat_.createNatural(&nat));
   PetscCall(nat_.toNatural(plex, nat));
+  if (held) {
+    const auto& h = nm_.prescribed();
+    PetscCall(nat_.setHeld(nat, h.vertices(), h.components(), *held));
+  }
   PetscCall(VecGetArrayRead(nat, &x));
   std::vector<double> v(x, x + 3 * nat_.rows());
   PetscCall(VecRestoreArrayRead(nat, &x));
@@ -174,7 +190,7 @@ PetscErrorCode PlexRun::write() const {
   else
     PetscCall(writeHistory(out));
   PetscCall(writeMesh(out));
-  PetscCall(writeNatural(out, "/final/u", nm_.displacement()));
+  PetscCall(writeNatural(out, "/final/u", nm_.displacement(), &nm_.heldDisplacement()));
   PetscCall(out.commit(&ctx_));
   const double t = steps_.empty() ? 0.0 : steps_.back().time;
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)nv_, (ull)nc_};
@@ -192,7 +208,7 @@ PetscErrorCode PlexRun::writeCheckpoint(long long step) {
   PetscCall(writeRunAttributes(out));
   PetscCall(out.writeAttribute("/", "time", nm_.time()));
   PetscCall(writeHistory(out));
-  PetscCall(writeNatural(out, "/state/u", nm_.displacement()));
+  PetscCall(writeNatural(out, "/state/u", nm_.displacement(), &nm_.heldDisplacement()));
   PetscCall(writeNatural(out, "/state/v", nm_.velocity()));
   PetscCall(writeNatural(out, "/state/a", nm_.acceleration()));
   PetscCall(out.commit(&ctx_));

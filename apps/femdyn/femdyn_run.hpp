@@ -31,8 +31,11 @@ struct Options {
               mass = "consistent", dirichlet = "x=0", jacobian = "tangent", output, time_scheme = "newmark",
               predictor = "constant", backend = "replicated";
   // -backend plex: supports and loads by group (a Gmsh physical group's name or tag; femdyn_plex_groups.cpp)
-  std::string bc_fixed; // G1,G2,...: every displacement component zero
-  std::string traction; // G:tx,ty,tz[;G2:...]: dead traction per area
+  std::string bc_fixed;        // G1,G2,...: every displacement component zero
+  std::string traction;        // G:tx,ty,tz[;G2:...]: dead traction per area
+  std::string bc_displacement; // G:ux=a,uz=b[;G2:...]: components held at values (ramped over bc_ramp)
+  double bc_ramp = 0;          // > 0: the prescribed values grow linearly from 0 over this time
+  std::string mesh_convert;    // -backend plex: write the mesh as the suite's parallel mesh file, then stop
   double rho_inf = 1, young = 1000, poisson = 0.3, density = 1, dt = 0.01, tip_load = 0,
          gravity[3] = {0, 0, 0};
   suite::fem::BeamSpec beam; // -beam_length, -beam_size, -beam_cells

@@ -7,6 +7,7 @@
 #include <petscfe.h>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace suite::fem {
@@ -48,9 +49,20 @@ inline double massEntry(double rho, double V, int a, int b) {
   return rho * V * (a == b ? 2.0 : 1.0) / 20.0;
 }
 
-PetscErrorCode zeroDisplacement(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar* u, void*) {
-  for (PetscInt i = 0; i < nc; ++i) u[i] = 0.0;
-  return 0;
+// f += C (c_v u - b_v) of one element: alpha M + beta K_0 times its damping velocity (cv: c_v).
+void addDamping(const Tet& t, const PlexElasticParams& p, const Material& linear, double cv,
+                const PetscScalar* u, const PetscScalar* bva, const PetscInt* li, PetscScalar* fe) {
+  PetscScalar vd[12];
+  for (int m = 0; m < 12; ++m) vd[m] = cv * u[m] - bva[li[m]];
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int b = 0; b < 4; ++b)
+        fe[3 * a + i] += p.rayleigh_mass * massEntry(p.rho, t.V, a, b) * vd[3 * b + i];
+  if (p.rayleigh_stiffness == 0.0) return;
+  double k0[144] = {};
+  linear.addElementTangent(Mat3::Identity(), t.g, 4, p.rayleigh_stiffness * t.V, k0); // upper triangle
+  for (int r = 0; r < 12; ++r)
+    for (int q = 0; q < 12; ++q) fe[r] += (q >= r ? k0[r * 12 + q] : k0[q * 12 + r]) * vd[q];
 }
 
 } // namespace
@@ -61,18 +73,13 @@ PetscErrorCode PlexElasticity::setup(DM dm, const PlexElasticParams& p) {
   PetscFunctionBeginUser;
   dm_ = dm, p_ = p;
   PetscCall(createMaterial(comm, p.law, p.lame, &material_));
+  PetscCall(createMaterial(comm, "linear", p.lame, &linear_));
   PetscCall(PetscFECreateLagrange(comm, 3, 3, PETSC_TRUE, 1, PETSC_DETERMINE, &fe));
   PetscCall(PetscObjectSetName((PetscObject)fe, "displacement"));
   PetscCall(DMSetField(dm, 0, nullptr, (PetscObject)fe));
   PetscCall(DMCreateDS(dm));
   PetscCall(PetscFEDestroy(&fe));
-  for (const PlexGroup& g : p.fixed) {
-    DMLabel label;
-    PetscCall(DMGetLabel(dm, g.name.c_str(), &label));
-    PetscCall(DMPlexLabelComplete(dm, label)); // the faces' edges and vertices: their DOFs are fixed too
-    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, g.name.c_str(), label, 1, &g.value, 0, 0, nullptr,
-                            (void (*)(void))zeroDisplacement, nullptr, nullptr, nullptr));
-  }
+  PetscCall(PlexPrescribedDofs::addBoundaries(dm, p.prescribed));
   PetscFunctionReturn(0);
 }
 
@@ -81,6 +88,7 @@ PetscErrorCode PlexElasticity::attach(SNES snes) {
   MatNullSpace rbm;
   PetscFunctionBeginUser;
   snes_ = snes;
+  PetscCall(held_.setup(dm_, p_.prescribed));
   PetscCall(prepareCells());
   PetscCall(DMSNESSetFunctionLocal(dm_, residualLocal, this));
   PetscCall(DMSNESSetJacobianLocal(dm_, jacobianLocal, this));
@@ -128,14 +136,21 @@ PetscErrorCode PlexElasticity::prepareCells() {
     PetscCall(cellVertices(dm_, cell, v0, v1, vert));
     for (int a = 0; a < 4; ++a) {
       PetscInt off, goff, cdof;
+      const PetscInt* cind = nullptr;
       PetscCall(PetscSectionGetOffset(cs, vert[a], &off));
       for (int j = 0; j < 3; ++j) x[3 * a + j] = cx[off + j];
       PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
       PetscCall(PetscSectionGetOffset(gs, vert[a], &goff));
-      PetscCall(PetscSectionGetConstraintDof(gs, vert[a], &cdof));
+      PetscCall(PetscSectionGetConstraintDof(ls, vert[a], &cdof));
+      if (cdof) PetscCall(PetscSectionGetConstraintIndices(ls, vert[a], &cind));
       if (goff < 0) goff = -(goff + 1); // owned by another rank
-      for (int i = 0; i < 3; ++i)
-        loc_[12 * e + 3 * a + i] = off + i, glob_[12 * e + 3 * a + i] = cdof ? -1 : goff + i;
+      // the free components are numbered in order in the global vector; the held ones are -1
+      PetscInt next = goff;
+      for (PetscInt i = 0; i < 3; ++i) {
+        bool held = false;
+        for (PetscInt k = 0; k < cdof; ++k) held = held || cind[k] == i;
+        loc_[12 * e + 3 * a + i] = off + i, glob_[12 * e + 3 * a + i] = held ? -1 : next++;
+      }
     }
     Tet t;
     if (!tetGeometry(x, &t)) {
@@ -162,6 +177,10 @@ PetscErrorCode PlexElasticity::rigidBodyModes(MatNullSpace* sp) const {
   PetscInt r0;
   std::vector<FreeVertex> fv;
   PetscFunctionBeginUser;
+  if (held_.partial()) {
+    PetscCall(partialRigidBodyModes(sp));
+    PetscFunctionReturn(0);
+  }
   PetscCall(ownedFreeVertices(dm_, &fv));
   PetscCall(DMCreateGlobalVector(dm_, &xyz));
   PetscCall(VecSetBlockSize(xyz, 3));
@@ -172,6 +191,67 @@ PetscErrorCode PlexElasticity::rigidBodyModes(MatNullSpace* sp) const {
   PetscCall(VecRestoreArray(xyz, &a));
   PetscCall(MatNullSpaceCreateRigidBody(xyz, sp));
   PetscCall(VecDestroy(&xyz));
+  PetscFunctionReturn(0);
+}
+
+// The six rigid-body modes (translations e_c, rotations e_k x x) on the free DOFs, orthonormalised by modified
+// Gram-Schmidt as MatNullSpaceCreate requires: for meshes where some vertices have only some components held
+// (rollers, symmetry planes), whose free DOFs do not come in 3 x 3 blocks.
+PetscErrorCode PlexElasticity::partialRigidBodyModes(MatNullSpace* sp) const {
+  PetscSection ls, gs, cs;
+  Vec coords, modes[6];
+  const PetscScalar* cx;
+  PetscInt v0, v1, r0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(dm_, &ls));
+  PetscCall(DMGetGlobalSection(dm_, &gs));
+  PetscCall(DMGetCoordinateSection(dm_, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMPlexGetDepthStratum(dm_, 0, &v0, &v1));
+  for (Vec& m : modes) PetscCall(DMCreateGlobalVector(dm_, &m));
+  PetscCall(VecGetOwnershipRange(modes[0], &r0, nullptr));
+  PetscScalar* a[6];
+  for (int m = 0; m < 6; ++m) PetscCall(VecGetArray(modes[m], &a[m]));
+  PetscCall(VecGetArrayRead(coords, &cx));
+  for (PetscInt v = v0; v < v1; ++v) {
+    PetscInt goff, cdof, coff;
+    const PetscInt* cind = nullptr;
+    PetscCall(PetscSectionGetOffset(gs, v, &goff));
+    if (goff < 0) continue; // a ghost
+    PetscCall(PetscSectionGetConstraintDof(ls, v, &cdof));
+    if (cdof) PetscCall(PetscSectionGetConstraintIndices(ls, v, &cind));
+    PetscCall(PetscSectionGetOffset(cs, v, &coff));
+    const double x = PetscRealPart(cx[coff]), y = PetscRealPart(cx[coff + 1]),
+                 z = PetscRealPart(cx[coff + 2]);
+    // component c of the six modes at this vertex: three translations, then e_x, e_y, e_z cross (x, y, z)
+    const double row[3][6] = {{1, 0, 0, 0, z, -y}, {0, 1, 0, -z, 0, x}, {0, 0, 1, y, -x, 0}};
+    PetscInt next = goff - r0;
+    for (PetscInt c = 0; c < 3; ++c) {
+      bool held = false;
+      for (PetscInt k = 0; k < cdof; ++k) held = held || cind[k] == c;
+      if (held) continue;
+      for (int m = 0; m < 6; ++m) a[m][next] = row[c][m];
+      ++next;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(coords, &cx));
+  for (int m = 0; m < 6; ++m) PetscCall(VecRestoreArray(modes[m], &a[m]));
+  int kept = 0; // the modes the supports leave independent (a held component can make one vanish)
+  for (int m = 0; m < 6; ++m) {
+    PetscReal before, after;
+    PetscCall(VecNorm(modes[m], NORM_2, &before));
+    for (int k = 0; k < kept; ++k) {
+      PetscScalar d;
+      PetscCall(VecDot(modes[m], modes[k], &d));
+      PetscCall(VecAXPY(modes[m], -d, modes[k]));
+    }
+    PetscCall(VecNorm(modes[m], NORM_2, &after));
+    if (!(after > 1e-8 * before)) continue;
+    PetscCall(VecScale(modes[m], 1.0 / after));
+    std::swap(modes[kept++], modes[m]);
+  }
+  PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)dm_), PETSC_FALSE, kept, modes, sp));
+  for (Vec& m : modes) PetscCall(VecDestroy(&m));
   PetscFunctionReturn(0);
 }
 
@@ -197,7 +277,7 @@ PetscErrorCode PlexElasticity::createJacobian(Mat* J) const {
   PetscCall(MatCreate(comm, J));
   PetscCall(MatSetSizes(*J, n, n, N, N));
   PetscCall(MatSetType(*J, MATAIJ));
-  PetscCall(MatSetBlockSize(*J, 3));
+  if (!held_.partial()) PetscCall(MatSetBlockSize(*J, 3)); // else the free DOFs do not come in threes
   PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, *J));
   PetscCall(MatDestroy(&pre));
   PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
@@ -212,27 +292,32 @@ PetscErrorCode PlexElasticity::jacobianLocal(DM dm, Vec x, Mat J, Mat, void* ctx
   return static_cast<PlexElasticity*>(ctx)->jacobian(dm, x, J);
 }
 
-// Element by element: M (c u - b) + k V P g_a - rho g V / 4 into f (local; summed into the global residual).
-PetscErrorCode PlexElasticity::residual(DM dm, Vec x, Vec f) {
-  const PetscScalar *xa, *ba;
+// Element by element: M (c u - b) + C (c_v u - b_v) + k V P(F(c_k u + e)) g_a - rho g V / 4 into f (local;
+// summed into the global residual).
+PetscErrorCode PlexElasticity::residual(DM, Vec x, Vec f) {
+  const PetscScalar *xa, *ba, *bva = nullptr, *ea = nullptr;
   PetscScalar* fa;
   bool admissible = true;
   PetscFunctionBeginUser;
-  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, x, 0.0, nullptr, nullptr, nullptr));
+  PetscCall(held_.insert(x, scale_));
   PetscCall(VecGetArrayRead(x, &xa));
   PetscCall(VecGetArrayRead(b_, &ba));
+  const bool damped = bv_ && w_.damping != 0.0;
+  if (damped) PetscCall(VecGetArrayRead(bv_, &bva));
+  if (e_) PetscCall(VecGetArrayRead(e_, &ea));
   PetscCall(VecGetArray(f, &fa));
-  const double c = w_.mass, k = w_.stiffness, rho = p_.rho;
+  const double c = w_.mass, k = w_.stiffness, rho = p_.rho, ck = w_.eval;
   energy_ = 0.0;
   for (size_t e = 0; e < vol_.size(); ++e) {
     const PetscInt* li = &loc_[12 * e];
     Tet t;
     t.V = vol_[e];
     std::copy(&grad_[12 * e], &grad_[12 * e] + 12, t.g);
-    PetscScalar u[12], fe[12] = {};
+    PetscScalar u[12], ue[12], fe[12] = {};
     for (int m = 0; m < 12; ++m) u[m] = xa[li[m]];
+    for (int m = 0; m < 12; ++m) ue[m] = ea ? ck * u[m] + ea[li[m]] : u[m];
     if (k != 0.0) {
-      const Mat3 F = deformationGradient(u, t);
+      const Mat3 F = deformationGradient(ue, t);
       admissible = admissible && (material_->isLinear() || F.determinant() > 0.0);
       double W = 0.0;
       Mat3 P;
@@ -248,52 +333,70 @@ PetscErrorCode PlexElasticity::residual(DM dm, Vec x, Vec f) {
           fe[3 * a + i] += massEntry(rho, t.V, a, b) * (c * u[3 * b + i] - ba[li[3 * b + i]]);
         fe[3 * a + i] -= rho * p_.gravity[i] * t.V / 4.0;
       }
+    if (damped) addDamping(t, p_, *linear_, w_.damping, u, bva, li, fe);
     for (int m = 0; m < 12; ++m) fa[li[m]] += fe[m];
   }
   PetscCall(VecRestoreArray(f, &fa));
+  if (e_) PetscCall(VecRestoreArrayRead(e_, &ea));
+  if (damped) PetscCall(VecRestoreArrayRead(bv_, &bva));
   PetscCall(VecRestoreArrayRead(b_, &ba));
   PetscCall(VecRestoreArrayRead(x, &xa));
   if (!admissible && snes_) PetscCall(SNESSetFunctionDomainError(snes_)); // an inverted element: Newton fails
   PetscFunctionReturn(0);
 }
 
-// Element by element: c M + k K_T (the material's closed-form tangent, upper triangle, then mirrored).
-PetscErrorCode PlexElasticity::jacobian(DM dm, Vec x, Mat J) {
-  const PetscScalar* xa;
+// Element by element: c M + c_v C + k c_k K_T (the material's closed-form tangent at c_k u + e; upper
+// triangle, then mirrored).
+PetscErrorCode PlexElasticity::jacobian(DM, Vec x, Mat J) {
+  const PetscScalar *xa, *ea = nullptr;
   PetscFunctionBeginUser;
-  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, x, 0.0, nullptr, nullptr, nullptr));
+  PetscCall(held_.insert(x, scale_));
   PetscCall(MatZeroEntries(J));
   PetscCall(VecGetArrayRead(x, &xa));
-  const double c = w_.mass, k = w_.stiffness, rho = p_.rho;
+  if (e_) PetscCall(VecGetArrayRead(e_, &ea));
+  const double c = w_.mass, k = w_.stiffness, rho = p_.rho, ck = w_.eval;
+  const double cd = bv_ ? w_.damping : 0.0, m_all = c + cd * p_.rayleigh_mass;
   for (size_t e = 0; e < vol_.size(); ++e) {
     Tet t;
     t.V = vol_[e];
     std::copy(&grad_[12 * e], &grad_[12 * e] + 12, t.g);
     PetscScalar u[12];
-    for (int m = 0; m < 12; ++m) u[m] = xa[loc_[12 * e + m]];
+    for (int m = 0; m < 12; ++m) {
+      const PetscInt l = loc_[12 * e + m];
+      u[m] = ea ? ck * xa[l] + ea[l] : xa[l];
+    }
     double ke[144] = {};
-    if (k != 0.0) material_->addElementTangent(deformationGradient(u, t), t.g, 4, k * t.V, ke);
+    if (k != 0.0) material_->addElementTangent(deformationGradient(u, t), t.g, 4, k * ck * t.V, ke);
+    if (cd != 0.0 && p_.rayleigh_stiffness != 0.0)
+      linear_->addElementTangent(Mat3::Identity(), t.g, 4, cd * p_.rayleigh_stiffness * t.V, ke);
     for (int a = 0; a < 4; ++a)
       for (int b = a; b < 4; ++b)
-        for (int i = 0; i < 3; ++i) ke[(3 * a + i) * 12 + 3 * b + i] += c * massEntry(rho, t.V, a, b);
+        for (int i = 0; i < 3; ++i) ke[(3 * a + i) * 12 + 3 * b + i] += m_all * massEntry(rho, t.V, a, b);
     for (int p = 0; p < 12; ++p)
       for (int q = 0; q < p; ++q) ke[p * 12 + q] = ke[q * 12 + p];
     PetscCall(MatSetValues(J, 12, &glob_[12 * e], 12, &glob_[12 * e], ke, ADD_VALUES));
   }
+  if (e_) PetscCall(VecRestoreArrayRead(e_, &ea));
   PetscCall(VecRestoreArrayRead(x, &xa));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PlexElasticity::kineticEnergy(Vec v, double* e) const {
+PetscErrorCode PlexElasticity::kineticEnergy(Vec v, const std::vector<double>* v_held, double* e) const {
   Vec loc;
   const PetscScalar* va;
   double mine = 0.0;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalVector(dm_, &loc));
-  PetscCall(VecZeroEntries(loc)); // clamped DOFs: v = 0
+  PetscCall(VecZeroEntries(loc)); // the prescribed DOFs: v = 0 unless v_held says otherwise
   PetscCall(DMGlobalToLocal(dm_, v, INSERT_VALUES, loc));
+  if (v_held) {
+    PetscScalar* w;
+    PetscCall(VecGetArray(loc, &w));
+    for (size_t i = 0; i < held_.size(); ++i) w[held_.offsets()[i]] = (*v_held)[i];
+    PetscCall(VecRestoreArray(loc, &w));
+  }
   PetscCall(VecGetArrayRead(loc, &va));
   for (size_t c = 0; c < vol_.size(); ++c) {
     const PetscInt* li = &loc_[12 * c];
@@ -304,6 +407,33 @@ PetscErrorCode PlexElasticity::kineticEnergy(Vec v, double* e) const {
               0.5 * massEntry(p_.rho, vol_[c], a, b) * PetscRealPart(va[li[3 * a + i]] * va[li[3 * b + i]]);
   }
   PetscCall(VecRestoreArrayRead(loc, &va));
+  PetscCall(DMRestoreLocalVector(dm_, &loc));
+  PetscCallMPI(MPI_Allreduce(&mine, e, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexElasticity::strainEnergyAt(Vec u, const std::vector<double>& u_held, double* e) const {
+  Vec loc;
+  PetscScalar* ua;
+  double mine = 0.0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm_, &loc));
+  PetscCall(VecZeroEntries(loc));
+  PetscCall(DMGlobalToLocal(dm_, u, INSERT_VALUES, loc));
+  PetscCall(VecGetArray(loc, &ua));
+  for (size_t i = 0; i < held_.size(); ++i) ua[held_.offsets()[i]] = u_held[i];
+  for (size_t c = 0; c < vol_.size(); ++c) {
+    Tet t;
+    t.V = vol_[c];
+    std::copy(&grad_[12 * c], &grad_[12 * c] + 12, t.g);
+    PetscScalar uc[12];
+    for (int m = 0; m < 12; ++m) uc[m] = ua[loc_[12 * c + m]];
+    double W = 0.0;
+    Mat3 P;
+    material_->evaluate(deformationGradient(uc, t), &W, &P, nullptr);
+    mine += W * t.V;
+  }
+  PetscCall(VecRestoreArray(loc, &ua));
   PetscCall(DMRestoreLocalVector(dm_, &loc));
   PetscCallMPI(MPI_Allreduce(&mine, e, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
   PetscFunctionReturn(0);

@@ -4,10 +4,12 @@
 #include "core/error_handler.hpp"
 #include "fem/mesh.hpp"
 #include "fem/plex_beam.hpp"
+#include "fem/plex_mesh_h5.hpp"
 
 #include <petscsf.h>
 
 #include <array>
+#include <cstring>
 
 namespace suite::fem {
 
@@ -38,8 +40,8 @@ PetscErrorCode readCaptured(MPI_Comm comm, const std::string& path, DM* dm, std:
   PetscFunctionReturn(0);
 }
 
-// Why this rank's part of a just-read mesh is not one the plex path takes ("" when it is): not 3-D, a cell
-// not a 4-node tetrahedron, curved (P2) coordinates, a degenerate or inverted tetrahedron.
+} // namespace
+
 PetscErrorCode unsupportedCells(DM dm, std::string* why) {
   PetscInt dim, c0, c1, v0, v1;
   PetscFunctionBeginUser;
@@ -95,7 +97,8 @@ PetscErrorCode unsupportedCells(DM dm, std::string* why) {
 
 // The file's node number of each vertex of the distributed mesh, broadcast from the serial mesh (rank 0: its
 // vertex order, the file's) along the migration SF.
-PetscErrorCode carryVertexNumbers(DM serial, DM dist, PetscSF migration, std::vector<PetscInt>* node) {
+PetscErrorCode carryVertexNumbers(const std::vector<PetscInt>& before, DM serial, DM dist, PetscSF migration,
+                                  std::vector<PetscInt>* node) {
   PetscInt p0, p1, v0, v1, q0, q1, w0, w1;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetChart(serial, &p0, &p1));
@@ -104,14 +107,12 @@ PetscErrorCode carryVertexNumbers(DM serial, DM dist, PetscSF migration, std::ve
   PetscCall(DMPlexGetDepthStratum(dist, 0, &w0, &w1));
   PetscCheck(p0 == 0 && q0 == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "a DMPlex chart that does not start at 0");
   std::vector<PetscInt> root((size_t)p1, -1), leaf((size_t)q1, -1);
-  for (PetscInt v = v0; v < v1; ++v) root[(size_t)v] = v - v0;
+  for (PetscInt v = v0; v < v1; ++v) root[(size_t)v] = before[(size_t)(v - v0)];
   PetscCall(PetscSFBcastBegin(migration, MPIU_INT, root.data(), leaf.data(), MPI_REPLACE));
   PetscCall(PetscSFBcastEnd(migration, MPIU_INT, root.data(), leaf.data(), MPI_REPLACE));
   node->assign(leaf.begin() + w0, leaf.begin() + w1);
   PetscFunctionReturn(0);
 }
-
-} // namespace
 
 PetscErrorCode createPlexFromFile(MPI_Comm comm, const std::string& path, long long rank_cap,
                                   PlexFileMesh* mesh) {
@@ -121,9 +122,17 @@ PetscErrorCode createPlexFromFile(MPI_Comm comm, const std::string& path, long l
   PetscFunctionBeginUser;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const bool msh = path.size() > 4 && path.compare(path.size() - 4, 4, ".msh") == 0;
-  PetscCheck(msh, comm, PETSC_ERR_SUP,
-             "-mesh_file %s: -backend plex reads Gmsh .msh files (TetGen input: -backend replicated)",
+  auto ends = [&](const char* ext) {
+    const size_t n = std::strlen(ext);
+    return path.size() > n && path.compare(path.size() - n, n, ext) == 0;
+  };
+  if (ends(".h5")) {
+    PetscCall(createPlexFromH5(comm, path, rank_cap, mesh));
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(ends(".msh"), comm, PETSC_ERR_SUP,
+             "-mesh_file %s: -backend plex reads Gmsh .msh files and the suite's .h5 meshes (-mesh_convert; "
+             "TetGen input: -backend replicated)",
              path.c_str());
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &set));
   if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true"));
@@ -159,7 +168,9 @@ PetscErrorCode createPlexFromFile(MPI_Comm comm, const std::string& path, long l
     PetscSF migration = nullptr;
     PetscCall(PetscObjectReference((PetscObject)serial));
     PetscCall(distributePlex(&dm, &migration));
-    PetscCall(carryVertexNumbers(serial, dm, migration, &mesh->vertex_node));
+    std::vector<PetscInt> order((size_t)(v1 - v0));
+    for (PetscInt v = v0; v < v1; ++v) order[(size_t)(v - v0)] = v - v0;
+    PetscCall(carryVertexNumbers(order, serial, dm, migration, &mesh->vertex_node));
     PetscCall(PetscSFDestroy(&migration));
     PetscCall(DMDestroy(&serial));
   }

@@ -24,7 +24,15 @@ struct PlexFileMesh {
 // is quoted), when its cells are not 4-node tetrahedra, when a tetrahedron is degenerate or inverted (signed
 // volume <= 0 in the file's node order), and (naming -plex_rank_cap) when rank_cap > 0 and a rank would hold
 // more mesh points than rank_cap before or after distribution.
+// A path ending in .h5 is read as the suite's parallel mesh file (plex_mesh_h5.hpp).
 PetscErrorCode createPlexFromFile(MPI_Comm comm, const std::string& path, long long rank_cap,
                                   PlexFileMesh* mesh);
+// Why this rank's part of a mesh is not one the plex path takes ("" when it is): not 3-D, a cell not a 4-node
+// tetrahedron, second-order coordinates, a degenerate or inverted tetrahedron (in DMPlex's orientation).
+PetscErrorCode unsupportedCells(DM dm, std::string* why);
+// The node numbers `before` of the vertices of `serial` (index v - vStart), carried to the vertices of `dist`
+// (the DM that DMPlexDistribute made from it) along the migration SF.
+PetscErrorCode carryVertexNumbers(const std::vector<PetscInt>& before, DM serial, DM dist, PetscSF migration,
+                                  std::vector<PetscInt>* node);
 
 } // namespace suite::fem

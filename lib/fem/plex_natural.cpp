@@ -58,10 +58,10 @@ PlexNaturalOrder::~PlexNaturalOrder() {
   VecDestroy(&template_);
 }
 
-PetscErrorCode PlexNaturalOrder::setup(DM dm, long long nodes, const std::vector<PetscInt>& vertex_node) {
+PetscErrorCode PlexNaturalOrder::setupLayout(DM dm, long long nodes,
+                                             const std::vector<PetscInt>& vertex_node) {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   int rank, size;
-  Vec g;
   PetscInt v1;
   PetscFunctionBeginUser;
   MPI_Comm_rank(comm, &rank);
@@ -73,7 +73,18 @@ PetscErrorCode PlexNaturalOrder::setup(DM dm, long long nodes, const std::vector
              (int)vertex_node.size());
   row0_ = nodes_ * rank / size;
   rows_ = nodes_ * (rank + 1) / size - row0_;
+  PetscCall(VecDestroy(&template_));
   PetscCall(VecCreateMPI(comm, (PetscInt)(3 * rows_), (PetscInt)(3 * nodes_), &template_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexNaturalOrder::setup(DM dm, long long nodes, const std::vector<PetscInt>& vertex_node) {
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  Vec g;
+  PetscInt v1;
+  PetscFunctionBeginUser;
+  PetscCall(setupLayout(dm, nodes, vertex_node));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, nullptr, &v1));
   // From each owned, unconstrained DOF of the DM's global vector to its natural DOF.
   PetscSection ls, gs;
   std::vector<PetscInt> from, to;
@@ -149,6 +160,19 @@ PetscErrorCode PlexNaturalOrder::coordinates(std::vector<double>* xyz) const {
   PetscCall(ISDestroy(&ist));
   PetscCall(VecDestroy(&nat));
   PetscCall(VecDestroy(&mine));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexNaturalOrder::setHeld(Vec natural, const std::vector<PetscInt>& vertices,
+                                         const std::vector<int>& components,
+                                         const std::vector<double>& values) const {
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> idx(vertices.size());
+  std::vector<PetscScalar> val(values.begin(), values.end());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = 3 * vertexNode(vertices[i]) + components[i];
+  PetscCall(VecSetValues(natural, (PetscInt)idx.size(), idx.data(), val.data(), INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(natural));
+  PetscCall(VecAssemblyEnd(natural));
   PetscFunctionReturn(0);
 }
 

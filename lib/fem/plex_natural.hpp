@@ -28,10 +28,17 @@ public:
   // Collective. dm with its displacement field and supports set up; nodes: the natural node count;
   // vertex_node[v - vStart]: the natural node of each local vertex.
   PetscErrorCode setup(DM dm, long long nodes, const std::vector<PetscInt>& vertex_node);
+  // Collective. The numbering alone (vertexNode, coordinates, the blocks), before the DM has a section;
+  // setup() does this first.
+  PetscErrorCode setupLayout(DM dm, long long nodes, const std::vector<PetscInt>& vertex_node);
   PetscErrorCode createNatural(Vec* natural) const;
   // natural <- plex (the constrained DOFs, absent from plex vectors, are 0); plex <- natural.
   PetscErrorCode toNatural(Vec plex, Vec natural) const;
   PetscErrorCode fromNatural(Vec natural, Vec plex) const;
+  // Collective: natural[3 node + component] <- values[i] for the prescribed DOFs (local vertices[i] and
+  // components[i]; a vertex several ranks hold gets the same value from each).
+  PetscErrorCode setHeld(Vec natural, const std::vector<PetscInt>& vertices,
+                         const std::vector<int>& components, const std::vector<double>& values) const;
   // The natural node of local vertex v.
   PetscInt vertexNode(PetscInt v) const { return vertex_node_[(size_t)(v - v0_)]; }
   // Collective: the coordinates of this rank's block of natural nodes (3 per node).

@@ -7,7 +7,7 @@
 namespace suite::fem {
 
 PlexNewmark::~PlexNewmark() {
-  Vec* vecs[] = {&u_, &v_, &a_, &f_, &b_, &un_, &b_local_};
+  Vec* vecs[] = {&u_, &v_, &a_, &f_, &b_, &un_, &b_local_, &w_, &bv_local_, &e_local_};
   for (Vec* v : vecs) VecDestroy(v);
   SNESDestroy(&snes_);
   DMDestroy(&dm_);
@@ -23,7 +23,7 @@ PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p,
   PetscCall(PetscObjectReference((PetscObject)dm));
   dm_ = dm, beta_ = beta, gamma_ = gamma;
   PetscCall(el_.setup(dm_, p));
-  Vec* vecs[] = {&u_, &v_, &a_, &f_, &b_, &un_};
+  Vec* vecs[] = {&u_, &v_, &a_, &f_, &b_, &un_, &w_};
   for (Vec* v : vecs) {
     PetscCall(DMCreateGlobalVector(dm_, v));
     PetscCall(VecZeroEntries(*v));
@@ -32,10 +32,17 @@ PetscErrorCode PlexNewmark::setup(DM dm, const PlexElasticParams& p,
   PetscCall(DMCreateLocalVector(dm_, &b_local_));
   PetscCall(VecZeroEntries(b_local_));
   el_.setInertiaVector(b_local_);
+  damped_ = p.rayleigh_mass != 0.0 || p.rayleigh_stiffness != 0.0;
+  if (damped_) {
+    PetscCall(DMCreateLocalVector(dm_, &bv_local_));
+    PetscCall(VecZeroEntries(bv_local_));
+    el_.setDampingVector(bv_local_);
+  }
   PetscCall(surfaceLoads(loads));
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm_), &snes_));
   PetscCall(SNESSetDM(snes_, dm_));
   PetscCall(el_.attach(snes_));
+  hu_.assign(el_.prescribed().size(), 0.0), hv_ = hu_, ha_ = hu_;
   PetscCall(SNESSetTolerances(snes_, newton_atol, newton_rtol, 0.0, newton_max_it, PETSC_DEFAULT));
   PetscCall(SNESGetLineSearch(snes_, &ls));
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC)); // full Newton steps, as fem::Newmark
@@ -95,10 +102,10 @@ PetscErrorCode PlexNewmark::setInertia(Vec b_global) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PlexNewmark::solve(double mass, double stiffness, Vec x, PlexStepStats* st) {
+PetscErrorCode PlexNewmark::solve(const PlexStepWeights& w, Vec x, PlexStepStats* st) {
   SNESConvergedReason reason;
   PetscFunctionBeginUser;
-  el_.setWeights(PlexStepWeights{mass, stiffness});
+  el_.setWeights(w);
   PetscCall(SNESSolve(snes_, f_, x));
   PetscCall(SNESGetConvergedReason(snes_, &reason));
   PetscCheck(
@@ -114,12 +121,71 @@ PetscErrorCode PlexNewmark::solve(double mass, double stiffness, Vec x, PlexStep
   PetscFunctionReturn(0);
 }
 
+void PlexNewmark::heldInertia(double c, double dt, std::vector<double>* hb) const {
+  hb->resize(hu_.size());
+  for (size_t i = 0; i < hu_.size(); ++i)
+    (*hb)[i] = c * hu_[i] + hv_[i] / (beta_ * dt) + (1.0 / (2.0 * beta_) - 1.0) * ha_[i];
+}
+
+PetscErrorCode PlexNewmark::setHeldEntries(Vec local, const std::vector<double>& values) const {
+  PetscScalar* x;
+  const auto& off = el_.prescribed().offsets();
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(local, &x));
+  for (size_t i = 0; i < values.size(); ++i) x[off[i]] = values[i];
+  PetscCall(VecRestoreArray(local, &x));
+  PetscFunctionReturn(0);
+}
+
+// With b = c u_n + v_n / (beta dt) + (1/(2 beta) - 1) a_n (a_{n+1} = c u_{n+1} - b):
+//   b_m = (1 - alpha_m) b - alpha_m a_n                          (M a_{n+1-alpha_m} = M ((1 - alpha_m) c u - b_m)),
+//   b_v = -((1 - alpha_f)(v_n + dt (1 - gamma) a_n - dt gamma b) + alpha_f v_n)
+//                                           (v_{n+1-alpha_f} = (1 - alpha_f) gamma / (beta dt) u - b_v),
+//   e = alpha_f u_n                                              (u_{n+1-alpha_f} = (1 - alpha_f) u + e).
+PetscErrorCode PlexNewmark::stepVectors(double dt, const std::vector<double>& hb) {
+  const bool alpha = am_ != 0.0 || af_ != 0.0;
+  const size_t nh = hu_.size();
+  std::vector<double> h(nh);
+  PetscFunctionBeginUser;
+  if (alpha) {
+    PetscCall(VecAXPBYPCZ(w_, 1.0 - am_, -am_, 0.0, b_, a_));
+    PetscCall(setInertia(w_));
+    for (size_t i = 0; i < nh; ++i) h[i] = (1.0 - am_) * hb[i] - am_ * ha_[i];
+  } else {
+    PetscCall(setInertia(b_));
+    h = hb;
+  }
+  PetscCall(setHeldEntries(b_local_, h));
+  if (damped_) {
+    const double s = 1.0 - af_;
+    PetscCall(VecAXPBYPCZ(w_, -s - af_, -s * dt * (1.0 - gamma_), 0.0, v_, a_));
+    PetscCall(VecAXPY(w_, s * dt * gamma_, b_));
+    PetscCall(VecZeroEntries(bv_local_));
+    PetscCall(DMGlobalToLocal(dm_, w_, INSERT_VALUES, bv_local_));
+    for (size_t i = 0; i < nh; ++i)
+      h[i] = -(s * (hv_[i] + dt * (1.0 - gamma_) * ha_[i] - dt * gamma_ * hb[i]) + af_ * hv_[i]);
+    PetscCall(setHeldEntries(bv_local_, h));
+  }
+  if (alpha) {
+    if (!e_local_) PetscCall(DMCreateLocalVector(dm_, &e_local_));
+    PetscCall(VecZeroEntries(e_local_));
+    PetscCall(VecCopy(u_, w_));
+    PetscCall(VecScale(w_, af_));
+    PetscCall(DMGlobalToLocal(dm_, w_, INSERT_VALUES, e_local_));
+    for (size_t i = 0; i < nh; ++i) h[i] = af_ * hu_[i];
+    PetscCall(setHeldEntries(e_local_, h));
+    el_.setEvalOffset(e_local_);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PlexNewmark::initialize() {
   PlexStepStats st;
   PetscFunctionBeginUser;
+  el_.setPrescribedScale(rampAt(0.0)); // 0: the prescribed DOFs start at rest at 0
   PetscCall(VecZeroEntries(b_));
   PetscCall(setInertia(b_));
-  PetscCall(solve(1.0, 0.0, a_, &st)); // rho a - rho g = f_tip
+  PetscCall(solve(PlexStepWeights{1.0, 0.0, 0.0, 1.0}, a_, &st)); // rho a - rho g = f_tip
   PetscFunctionReturn(0);
 }
 
@@ -129,11 +195,23 @@ PetscErrorCode PlexNewmark::step(double dt, PlexStepStats* st) {
   // b = c u_n + v_n / (beta dt) + (1/(2 beta) - 1) a_n
   PetscCall(VecAXPBYPCZ(b_, c, 1.0 / (beta_ * dt), 0.0, u_, v_));
   PetscCall(VecAXPY(b_, 1.0 / (2.0 * beta_) - 1.0, a_));
-  PetscCall(setInertia(b_));
+  std::vector<double> hb;
+  heldInertia(c, dt, &hb);
+  PetscCall(stepVectors(dt, hb));
   PetscCall(VecCopy(u_, un_));
   PetscCall(VecAXPBYPCZ(u_, dt, 0.5 * dt * dt, 1.0, v_, a_)); // predictor u_n + dt v_n + dt^2/2 a_n
   t_ += dt;
-  PetscCall(solve(c, 1.0, u_, st));
+  const double r = rampAt(t_);
+  el_.setPrescribedScale(r);
+  PlexStepWeights w{(1.0 - am_) * c, 1.0, 0.0, 1.0 - af_};
+  if (damped_) w.damping = (1.0 - af_) * gamma_ / (beta_ * dt);
+  PetscCall(solve(w, u_, st));
+  const auto& g1 = el_.prescribed().values();
+  for (size_t i = 0; i < hu_.size(); ++i) { // the same recursion as the free DOFs below
+    const double g = r * g1[i], a = c * g - hb[i];
+    hv_[i] += dt * ((1.0 - gamma_) * ha_[i] + gamma_ * a);
+    hu_[i] = g, ha_[i] = a;
+  }
   PetscCall(VecAXPY(v_, dt * (1.0 - gamma_), a_));
   PetscCall(VecCopy(b_, a_));
   PetscCall(VecAXPBY(a_, c, -1.0, u_)); // a_{n+1} = c u_{n+1} - b
@@ -143,17 +221,23 @@ PetscErrorCode PlexNewmark::step(double dt, PlexStepStats* st) {
 
 PetscErrorCode PlexNewmark::solveStatic(PlexStepStats* st) {
   PetscFunctionBeginUser;
+  el_.setPrescribedScale(1.0);
+  hu_ = el_.prescribed().values();
   PetscCall(VecZeroEntries(b_));
   PetscCall(setInertia(b_));
   PetscCall(VecZeroEntries(u_));
-  PetscCall(solve(0.0, 1.0, u_, st));
+  el_.setEvalOffset(nullptr);
+  PetscCall(solve(PlexStepWeights{0.0, 1.0, 0.0, 1.0}, u_, st));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode PlexNewmark::energies(double* kinetic, double* strain) const {
   PetscFunctionBeginUser;
-  PetscCall(el_.kineticEnergy(v_, kinetic));
-  PetscCall(el_.strainEnergy(strain));
+  PetscCall(el_.kineticEnergy(v_, &hv_, kinetic));
+  if (am_ != 0.0 || af_ != 0.0)
+    PetscCall(el_.strainEnergyAt(u_, hu_, strain)); // the residuals were at t_{n+1-alpha_f}
+  else
+    PetscCall(el_.strainEnergy(strain));
   PetscFunctionReturn(0);
 }
 
@@ -178,6 +262,13 @@ PetscErrorCode PlexNewmark::groupMean(const PlexGroup& g, int comp, double sign,
   PetscCall(DMGetLocalVector(dm_, &loc));
   PetscCall(VecZeroEntries(loc));
   PetscCall(DMGlobalToLocal(dm_, u_, INSERT_VALUES, loc));
+  {
+    PetscScalar* w;
+    const auto& off = el_.prescribed().offsets();
+    PetscCall(VecGetArray(loc, &w));
+    for (size_t i = 0; i < hu_.size(); ++i) w[off[i]] = hu_[i];
+    PetscCall(VecRestoreArray(loc, &w));
+  }
   PetscCall(DMGetLocalSection(dm_, &ls));
   PetscCall(DMGetGlobalSection(dm_, &gs));
   PetscCall(VecGetArrayRead(loc, &ul));
