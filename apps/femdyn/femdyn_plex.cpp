@@ -37,7 +37,6 @@ PetscErrorCode refuseUnsupported(MPI_Comm comm, const Options& o) {
                                 "-newton_max_corrections",
                                 "-mass",
                                 "-max_halvings",
-                                "-snapshot_every",
                                 "-probe",
                                 "-probe_point",
                                 "-probe_stiffness",
@@ -159,6 +158,7 @@ PetscErrorCode PlexRun::afterStep(long long step, bool* stop) {
 PetscErrorCode PlexRun::timeSteps() {
   PetscFunctionBeginUser;
   if (!restarted_) PetscCall(nm_.initialize());
+  if (!restarted_ && o_.snapshot_every > 0) PetscCall(snapshot());
   for (long long s = (long long)steps_.size(); s < o_.steps; ++s) {
     const double w0 = suite::wallSeconds(), c0 = suite::processCpuSeconds();
     PlexStepStats st;
@@ -168,6 +168,7 @@ PetscErrorCode PlexRun::timeSteps() {
     PetscCall(nm_.energies(&kinetic, &strain));
     steps_.push_back({nm_.time(), tip, suite::wallSeconds() - w0, suite::processCpuSeconds() - c0, kinetic,
                       strain, (long long)st.newton_iterations, (long long)st.linear_iterations});
+    if (o_.snapshot_every > 0 && (s + 1) % o_.snapshot_every == 0) PetscCall(snapshot());
     bool stop = false;
     PetscCall(afterStep(s + 1, &stop));
     if (stop) break;

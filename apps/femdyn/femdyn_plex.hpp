@@ -13,7 +13,9 @@
 #include "fem/plex_natural.hpp"
 #include "fem/plex_newmark.hpp"
 #include "femdyn_run.hpp"
+#include "io/h5_output.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace suite {
@@ -52,7 +54,11 @@ private:
   PetscErrorCode timeSteps();
   PetscErrorCode afterStep(long long step, bool* stop);
   // femdyn_plex_io.cpp
-  PetscErrorCode write() const;
+  PetscErrorCode write();
+  // -snapshot_every: /snapshots/NNNNNN/{u, von_mises} in the output file (open from the first snapshot on).
+  PetscErrorCode snapshot();
+  PetscErrorCode writeCells(suite::H5Output& out, const char* dataset,
+                            const std::vector<double>& values) const;
   PetscErrorCode writeRunAttributes(suite::H5Output& out) const;
   PetscErrorCode writeHistory(suite::H5Output& out) const;
   // held: the prescribed DOFs' values (null: 0 there)
@@ -77,7 +83,10 @@ private:
   bool restarted_ = false;
   suite::fem::PlexStepStats stat_;
   double tip_ = 0, tip_ux_ = 0, setup_s_ = 0, solve_s_ = 0;
-  std::string status_ = "completed"; // the output's status attribute (core/run_summary.hpp)
+  std::string status_ = "completed";
+  std::unique_ptr<suite::H5Output> out_; // the output file, opened at the first snapshot
+  std::vector<suite::XdmfTetStep>
+      xsteps_; // the snapshots' steps of the XDMF series // the output's status attribute (core/run_summary.hpp)
 };
 
 } // namespace femdyn_app

@@ -179,11 +179,43 @@ PetscErrorCode PlexRun::writeMesh(suite::H5Output& out) const {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PlexRun::write() const {
-  suite::H5Output out;
+// One value per local cell as a {cells} dataset in the order of /mesh/tets (rank by rank).
+PetscErrorCode PlexRun::writeCells(suite::H5Output& out, const char* dataset,
+                                   const std::vector<double>& values) const {
+  ull n = values.size(), start = 0;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Exscan(&n, &start, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, ctx_.comm()));
+  if (ctx_.rank() == 0) start = 0;
+  PetscCall(out.writeDistributed(dataset, values.data(), {(ull)nc_}, {start}, {n}, "Pa"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexRun::snapshot() {
+  char u[64], vm[64];
+  std::vector<double> stress;
+  PetscFunctionBeginUser;
+  if (o_.output.empty()) PetscFunctionReturn(0);
+  if (!out_) {
+    out_ = std::make_unique<suite::H5Output>();
+    PetscCall(out_->open(ctx_.comm(), o_.output));
+  }
+  const long long k = (long long)xsteps_.size();
+  PetscCall(PetscSNPrintf(u, sizeof u, "/snapshots/%06lld/u", k));
+  PetscCall(PetscSNPrintf(vm, sizeof vm, "/snapshots/%06lld/von_mises", k));
+  PetscCall(writeNatural(*out_, u, nm_.displacement(), &nm_.heldDisplacement()));
+  PetscCall(nm_.vonMises(&stress));
+  PetscCall(writeCells(*out_, vm, stress));
+  xsteps_.push_back({nm_.time(), {{"displacement", u, 3, false}, {"von_mises", vm, 1, true}}});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlexRun::write() {
+  suite::H5Output local;
+  std::vector<double> stress;
   PetscFunctionBeginUser;
   if (o_.output.empty()) PetscFunctionReturn(0); // no -output: nothing written
-  PetscCall(out.open(ctx_.comm(), o_.output));
+  suite::H5Output& out = out_ ? *out_ : local;
+  if (!out_) PetscCall(out.open(ctx_.comm(), o_.output));
   PetscCall(writeRunAttributes(out));
   if (o_.is_static)
     PetscCall(out.writeAttribute("/", "newton_iterations", (long long)stat_.newton_iterations));
@@ -191,12 +223,17 @@ PetscErrorCode PlexRun::write() const {
     PetscCall(writeHistory(out));
   PetscCall(writeMesh(out));
   PetscCall(writeNatural(out, "/final/u", nm_.displacement(), &nm_.heldDisplacement()));
+  PetscCall(nm_.vonMises(&stress));
+  PetscCall(writeCells(out, "/final/von_mises", stress));
   PetscCall(out.commit(&ctx_));
   const double t = steps_.empty() ? 0.0 : steps_.back().time;
   suite::XdmfTetMesh xm{"/mesh/coordinates", "/mesh/tets", (ull)nv_, (ull)nc_};
+  std::vector<suite::XdmfTetStep> series = xsteps_;
+  if (series.empty())
+    series.push_back(
+        {t, {{"displacement", "/final/u", 3, false}, {"von_mises", "/final/von_mises", 1, true}}});
   PetscCall(suite::writeXdmfTetSeries(ctx_.comm(), suite::xdmfPathFor(o_.output),
-                                      suite::fileNameOf(o_.output), xm,
-                                      {{t, {{"displacement", "/final/u", 3}}}}));
+                                      suite::fileNameOf(o_.output), xm, series));
   PetscFunctionReturn(0);
 }
 

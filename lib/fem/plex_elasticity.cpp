@@ -439,6 +439,36 @@ PetscErrorCode PlexElasticity::strainEnergyAt(Vec u, const std::vector<double>& 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PlexElasticity::vonMises(Vec u, const std::vector<double>& u_held,
+                                        std::vector<double>* vm) const {
+  Vec loc;
+  PetscScalar* ua;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm_, &loc));
+  PetscCall(VecZeroEntries(loc));
+  PetscCall(DMGlobalToLocal(dm_, u, INSERT_VALUES, loc));
+  PetscCall(VecGetArray(loc, &ua));
+  for (size_t i = 0; i < held_.size(); ++i) ua[held_.offsets()[i]] = u_held[i];
+  vm->resize(vol_.size());
+  for (size_t c = 0; c < vol_.size(); ++c) {
+    Tet t;
+    t.V = vol_[c];
+    std::copy(&grad_[12 * c], &grad_[12 * c] + 12, t.g);
+    PetscScalar uc[12];
+    for (int m = 0; m < 12; ++m) uc[m] = ua[loc_[12 * c + m]];
+    const Mat3 F = deformationGradient(uc, t);
+    double W = 0.0;
+    Mat3 P;
+    material_->evaluate(F, &W, &P, nullptr);
+    const Mat3 sigma = material_->isLinear() ? P : Mat3(P * F.transpose() / F.determinant());
+    const Mat3 s = sigma - sigma.trace() / 3.0 * Mat3::Identity();
+    (*vm)[c] = std::sqrt(1.5 * s.squaredNorm());
+  }
+  PetscCall(VecRestoreArray(loc, &ua));
+  PetscCall(DMRestoreLocalVector(dm_, &loc));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PlexElasticity::strainEnergy(double* e) const {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&energy_, e, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));

@@ -69,6 +69,9 @@ public:
   // Strain energy at the global vector u with u_held on the prescribed DOFs (collective; generalized-alpha
   // evaluates its residuals at another point).
   PetscErrorCode strainEnergyAt(Vec u, const std::vector<double>& u_held, double* e) const;
+  // The von Mises stress sqrt(3/2 s:s) of the Cauchy stress sigma = P F^T / det F (the linear law: sigma = P)
+  // of each local cell at u with u_held on the prescribed DOFs.
+  PetscErrorCode vonMises(Vec u, const std::vector<double>& u_held, std::vector<double>* vm) const;
   // Kinetic energy v^T M v / 2 of a global vector v with v_held on the prescribed DOFs (null: 0; consistent
   // mass, element by element; collective).
   PetscErrorCode kineticEnergy(Vec v, const std::vector<double>* v_held, double* e) const;

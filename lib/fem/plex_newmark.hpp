@@ -66,6 +66,8 @@ public:
   const PlexPrescribedDofs& prescribed() const { return el_.prescribed(); }
   // The prescribed DOFs' current displacements (in the order of prescribed()).
   const std::vector<double>& heldDisplacement() const { return hu_; }
+  // The von Mises stress of each local cell at the current displacement (PlexElasticity::vonMises).
+  PetscErrorCode vonMises(std::vector<double>* vm) const { return el_.vonMises(u_, hu_, vm); }
   Vec velocity() const { return v_; }
   Vec acceleration() const { return a_; }
   double time() const { return t_; }

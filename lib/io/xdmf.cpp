@@ -132,8 +132,9 @@ PetscErrorCode writeXdmfTetSeries(MPI_Comm comm, const std::string& xmf_path, co
       << " 3\">" << h5 << ":" << mesh.coords_dataset << "</DataItem>\n    </Geometry>\n";
     for (const auto& f : st.fields) {
       x << "    <Attribute Name=\"" << f.name << "\" AttributeType=\"" << (f.ncomp == 3 ? "Vector" : "Scalar")
-        << "\" Center=\"Node\">\n";
-      x << "     <DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"" << mesh.nnodes;
+        << "\" Center=\"" << (f.cell ? "Cell" : "Node") << "\">\n";
+      x << "     <DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\""
+        << (f.cell ? mesh.nelems : mesh.nnodes);
       if (f.ncomp > 1) x << " " << f.ncomp;
       x << "\">" << h5 << ":" << f.dataset << "</DataItem>\n    </Attribute>\n";
     }

@@ -47,6 +47,7 @@ struct XdmfTetMesh {
 struct XdmfNodeField {
   std::string name, dataset;
   int ncomp = 1;
+  bool cell = false; // one value per tetrahedron (else per node)
 };
 struct XdmfTetStep {
   double time;

@@ -17,7 +17,8 @@ x = 0 and x = max).
   code, fem/beam_loads.cpp) to 1e-10;
 - prescribed displacements (-bc_displacement, component subsets) on the box 10 x 1 x 1 with rollers on x = 0,
   y = 0, z = 0 (each the one component normal to it), at 1 and 2 ranks, against closed forms that P1 represents
-  exactly: a traction tip:1,0,0 gives uniaxial stress, u = (x, -nu y, -nu z) / E, to 1e-12 (measured 1.8e-14);
+  exactly: a traction tip:1,0,0 gives uniaxial stress, u = (x, -nu y, -nu z) / E, to 1e-12 (measured 1.8e-14),
+  and /final/von_mises 1 in every cell to 1e-12;
   tip:ux=2 with StVK gives the homogeneous stretch lambda_1 = 1.2 with the lateral stretch lambda_2 of
   S_22 = 0, to 1e-12 (measured 2e-16); in a dynamic run tip:ux=0.1 ramped over 40 s (-bc_ramp; 900 steps of
   0.05 s, about 32 axial periods) ends at the static strain energy 0.5 J to 1e-3 (measured 3e-5) with at most
@@ -162,6 +163,9 @@ def prescribed_displacements(d):
         x, u = f["mesh/coordinates"][:], f["final/u"][:]
         e = rel(u, np.stack([x[:, 0], -nu * x[:, 1], -nu * x[:, 2]], 1) / E)
         check(e <= 1e-12, f"rollers + traction, {n} ranks: uniaxial stress u = (x, -nu y, -nu z)/E to {e:.1e}")
+        vm = f["final/von_mises"][:]
+        ev = float(np.abs(vm - 1.0).max())
+        check(vm.shape == (240,) and ev <= 1e-12, f"rollers + traction, {n} ranks: von Mises stress 1 in every cell to {ev:.1e}")
         f = run(n, os.path.join(d, f"str{n}.h5"), *mesh, "-static", "-material", "stvk", "-bc_displacement",
                 rollers + ";tip:ux=2", "-ksp_rtol", 1e-14, "-snes_rtol", 1e-14)
         x, u = f["mesh/coordinates"][:], f["final/u"][:]
