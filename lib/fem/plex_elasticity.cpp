@@ -135,22 +135,18 @@ PetscErrorCode PlexElasticity::prepareCells() {
     PetscScalar x[12];
     PetscCall(cellVertices(dm_, cell, v0, v1, vert));
     for (int a = 0; a < 4; ++a) {
-      PetscInt off, goff, cdof;
-      const PetscInt* cind = nullptr;
+      PetscInt off, goff;
+      bool held[3];
       PetscCall(PetscSectionGetOffset(cs, vert[a], &off));
       for (int j = 0; j < 3; ++j) x[3 * a + j] = cx[off + j];
       PetscCall(PetscSectionGetOffset(ls, vert[a], &off));
       PetscCall(PetscSectionGetOffset(gs, vert[a], &goff));
-      PetscCall(PetscSectionGetConstraintDof(ls, vert[a], &cdof));
-      if (cdof) PetscCall(PetscSectionGetConstraintIndices(ls, vert[a], &cind));
+      PetscCall(heldComponents(ls, vert[a], held));
       if (goff < 0) goff = -(goff + 1); // owned by another rank
       // the free components are numbered in order in the global vector; the held ones are -1
       PetscInt next = goff;
-      for (PetscInt i = 0; i < 3; ++i) {
-        bool held = false;
-        for (PetscInt k = 0; k < cdof; ++k) held = held || cind[k] == i;
-        loc_[12 * e + 3 * a + i] = off + i, glob_[12 * e + 3 * a + i] = held ? -1 : next++;
-      }
+      for (int i = 0; i < 3; ++i)
+        loc_[12 * e + 3 * a + i] = off + i, glob_[12 * e + 3 * a + i] = held[i] ? -1 : next++;
     }
     Tet t;
     if (!tetGeometry(x, &t)) {
@@ -214,22 +210,19 @@ PetscErrorCode PlexElasticity::partialRigidBodyModes(MatNullSpace* sp) const {
   for (int m = 0; m < 6; ++m) PetscCall(VecGetArray(modes[m], &a[m]));
   PetscCall(VecGetArrayRead(coords, &cx));
   for (PetscInt v = v0; v < v1; ++v) {
-    PetscInt goff, cdof, coff;
-    const PetscInt* cind = nullptr;
+    PetscInt goff, coff;
+    bool held[3];
     PetscCall(PetscSectionGetOffset(gs, v, &goff));
     if (goff < 0) continue; // a ghost
-    PetscCall(PetscSectionGetConstraintDof(ls, v, &cdof));
-    if (cdof) PetscCall(PetscSectionGetConstraintIndices(ls, v, &cind));
+    PetscCall(heldComponents(ls, v, held));
     PetscCall(PetscSectionGetOffset(cs, v, &coff));
     const double x = PetscRealPart(cx[coff]), y = PetscRealPart(cx[coff + 1]),
                  z = PetscRealPart(cx[coff + 2]);
     // component c of the six modes at this vertex: three translations, then e_x, e_y, e_z cross (x, y, z)
     const double row[3][6] = {{1, 0, 0, 0, z, -y}, {0, 1, 0, -z, 0, x}, {0, 0, 1, y, -x, 0}};
     PetscInt next = goff - r0;
-    for (PetscInt c = 0; c < 3; ++c) {
-      bool held = false;
-      for (PetscInt k = 0; k < cdof; ++k) held = held || cind[k] == c;
-      if (held) continue;
+    for (int c = 0; c < 3; ++c) {
+      if (held[c]) continue;
       for (int m = 0; m < 6; ++m) a[m][next] = row[c][m];
       ++next;
     }

@@ -2,6 +2,7 @@
 #include "fem/plex_natural.hpp"
 
 #include "fem/plex_beam.hpp"
+#include "fem/plex_prescribed.hpp"
 
 #include <cmath>
 #include <vector>
@@ -91,20 +92,14 @@ PetscErrorCode PlexNaturalOrder::setup(DM dm, long long nodes, const std::vector
   PetscCall(DMGetLocalSection(dm, &ls));
   PetscCall(DMGetGlobalSection(dm, &gs));
   for (PetscInt v = v0_; v < v1; ++v) {
-    PetscInt goff, dof, cdof;
-    const PetscInt* cind = nullptr;
+    PetscInt goff;
+    bool held[3];
     PetscCall(PetscSectionGetOffset(gs, v, &goff));
     if (goff < 0) continue; // a ghost
-    PetscCall(PetscSectionGetDof(ls, v, &dof));
-    PetscCall(PetscSectionGetConstraintDof(ls, v, &cdof));
-    if (cdof) PetscCall(PetscSectionGetConstraintIndices(ls, v, &cind));
+    PetscCall(heldComponents(ls, v, held));
     PetscInt free = 0;
-    for (PetscInt c = 0; c < dof; ++c) {
-      bool constrained = false;
-      for (PetscInt k = 0; k < cdof; ++k) constrained = constrained || cind[k] == c;
-      if (constrained) continue;
-      from.push_back(goff + free++), to.push_back((PetscInt)(3 * vertexNode(v) + c));
-    }
+    for (int c = 0; c < 3; ++c)
+      if (!held[c]) from.push_back(goff + free++), to.push_back((PetscInt)(3 * vertexNode(v) + c));
   }
   IS isf, ist;
   PetscCall(ISCreateGeneral(comm, (PetscInt)from.size(), from.data(), PETSC_COPY_VALUES, &isf));

@@ -33,6 +33,19 @@ PetscErrorCode groupVertices(DM dm, const PlexGroup& g, PetscInt v0, PetscInt v1
 
 } // namespace
 
+PetscErrorCode heldComponents(PetscSection local, PetscInt point, bool held[3], PetscInt* count) {
+  PetscInt cdof;
+  const PetscInt* cind = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscSectionGetConstraintDof(local, point, &cdof));
+  if (cdof) PetscCall(PetscSectionGetConstraintIndices(local, point, &cind));
+  for (int c = 0; c < 3; ++c) held[c] = false;
+  for (PetscInt k = 0; k < cdof; ++k)
+    if (cind[k] >= 0 && cind[k] < 3) held[cind[k]] = true;
+  if (count) *count = cdof;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PlexPrescribedDofs::addBoundaries(DM dm, const std::vector<PlexPrescribed>& entries) {
   PetscFunctionBeginUser;
   for (size_t k = 0; k < entries.size(); ++k) {

@@ -20,6 +20,9 @@ struct PlexPrescribed {
   double value[3] = {0, 0, 0};       // their values at full load
 };
 
+// held[c]: component c of the point's displacement is prescribed (a constraint of the local section); the count.
+PetscErrorCode heldComponents(PetscSection local, PetscInt point, bool held[3], PetscInt* count = nullptr);
+
 class PlexPrescribedDofs {
 public:
   // Collective. Completes the groups' labels (their faces' edges and vertices) and adds one essential boundary

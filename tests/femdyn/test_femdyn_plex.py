@@ -27,31 +27,22 @@ import subprocess
 import sys
 import tempfile
 
+import femdyn_harness as harness
+from femdyn_harness import FAILS, check, rel
 import h5py
 import numpy as np
 
 EXE = sys.argv[1]
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-FAILS = []
+ENV = harness.ENV
 TOL = 1e-10
 
 
-def check(cond, msg):
-    print(("ok   " if cond else "FAIL ") + msg, flush=True)
-    if not cond:
-        FAILS.append(msg)
-
-
 def launch(np_, out, *args):
-    cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), EXE, *map(str, args), "-output", out, "-quiet"]
-    return subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
+    return harness.launch(EXE, np_, out, *args, timeout=300)
 
 
 def run(np_, out, *args):
-    p = launch(np_, out, *args)
-    if p.returncode != 0:
-        raise AssertionError(f"femdyn {' '.join(map(str, args))} at {np_} ranks failed:\n{p.stdout}")
-    return h5py.File(out, "r")
+    return harness.run(EXE, np_, out, *args, timeout=300)
 
 
 def field_by_coordinates(f):
@@ -59,10 +50,6 @@ def field_by_coordinates(f):
     x, u = f["mesh/coordinates"][:], f["final/u"][:]
     order = np.lexsort((x[:, 2], x[:, 1], x[:, 0]))
     return x[order], u[order]
-
-
-def rel(a, b):
-    return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
 
 
 def compare_field(label, f, ref):

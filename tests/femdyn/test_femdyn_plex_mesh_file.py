@@ -39,36 +39,23 @@ import subprocess
 import sys
 import tempfile
 
+import femdyn_harness as harness
+from femdyn_harness import FAILS, check, rel
 import h5py
 import numpy as np
 
 EXE, MAKE = sys.argv[1], sys.argv[2]
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-FAILS = []
+ENV = harness.ENV
 TOL = 1e-10
 
 
-def check(cond, msg):
-    print(("ok   " if cond else "FAIL ") + msg, flush=True)
-    if not cond:
-        FAILS.append(msg)
-
-
 def launch(np_, out, *args):
-    cmd = ["mpiexec", "--oversubscribe", "-n", str(np_), EXE, *map(str, args), "-output", out, "-quiet"]
-    return subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120)
+    return harness.launch(EXE, np_, out, *args, timeout=300)
 
 
 def run(np_, out, *args):
-    p = launch(np_, out, *args)
-    if p.returncode != 0:
-        raise AssertionError(f"femdyn {' '.join(map(str, args))} at {np_} ranks failed:\n{p.stdout}")
-    return h5py.File(out, "r")
-
-
-def rel(a, b):
-    return float(np.max(np.abs(np.asarray(a) - np.asarray(b))) / np.max(np.abs(b)))
+    return harness.run(EXE, np_, out, *args, timeout=300)
 
 
 def write_p2(src, dst):
